@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Configures and builds the project (Release) into ${BUILD_DIR:-build}. Installs packages first.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+bash "$here/scripts/setup.sh"
+build="${BUILD_DIR:-$here/build}"
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j "$(nproc)"

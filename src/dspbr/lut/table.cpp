@@ -1,0 +1,58 @@
+#include "dspbr/lut/table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace dspbr {
+
+double Axis::coord(int i) const {
+  if (kind == GridKind::CellCentred) return lo + (i + 0.5) / size * (hi - lo);
+  return size > 1 ? lo + double(i) / (size - 1) * (hi - lo) : 0.5 * (lo + hi);
+}
+
+double Axis::index(double x) const {
+  const double t = (x - lo) / (hi - lo);
+  if (kind == GridKind::CellCentred) return t * size - 0.5;
+  return t * (size - 1);
+}
+
+size_t Table::size() const {
+  size_t n = 1;
+  for (const Axis& a : axes) n *= size_t(a.size);
+  return n;
+}
+
+size_t Table::offset(const std::vector<int>& idx) const {
+  if (idx.size() != axes.size()) throw std::invalid_argument("Table::offset: wrong index rank for " + name);
+  size_t o = 0;
+  for (size_t d = 0; d < axes.size(); ++d) o = o * size_t(axes[d].size) + size_t(idx[d]);
+  return o;
+}
+
+double Table::lookup(const std::vector<double>& x) const {
+  const size_t rank = axes.size();
+  if (x.size() != rank) throw std::invalid_argument("Table::lookup: wrong coordinate rank for " + name);
+  int i0[3] = {0, 0, 0};
+  double f[3] = {0, 0, 0};
+  for (size_t d = 0; d < rank; ++d) {
+    const int n = axes[d].size;
+    const double c = std::clamp(axes[d].index(x[d]), 0.0, double(n - 1));
+    i0[d] = std::min(int(std::floor(c)), std::max(0, n - 2));
+    f[d] = n > 1 ? c - i0[d] : 0.0;
+  }
+  double result = 0;
+  for (int corner = 0; corner < (1 << rank); ++corner) {
+    double w = 1;
+    std::vector<int> idx(rank);
+    for (size_t d = 0; d < rank; ++d) {
+      const int bit = (corner >> d) & 1;
+      w *= bit ? f[d] : 1.0 - f[d];
+      idx[d] = std::min(i0[d] + bit, axes[d].size - 1);
+    }
+    if (w != 0) result += w * at(idx);
+  }
+  return result;
+}
+
+}  // namespace dspbr

@@ -1,0 +1,105 @@
+#include "dspbr/sheen.h"
+
+#include <cmath>
+
+#include "dspbr/quadrature.h"
+
+namespace dspbr {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+// Integral over the azimuth of max(0, A cos(phi) + B), A >= 0 (closed form).
+double azimuth_integral(double A, double B) {
+  if (B >= A) return 2.0 * kPi * B;  // plane never clips
+  if (B <= -A) return 0.0;           // fully clipped
+  const double r = B / A;
+  return 2.0 * (B * std::acos(-r) + std::sqrt(std::max(0.0, A * A - B * B)));
+}
+}  // namespace
+
+double charlie_d(double cos_theta_h, double alpha_b) {
+  if (cos_theta_h <= 0) return 0.0;
+  const double inv_a = 1.0 / alpha_b;
+  const double sin2 = std::max(0.0, 1.0 - cos_theta_h * cos_theta_h);
+  return (2.0 + inv_a) * std::pow(sin2, 0.5 * inv_a) / (2.0 * kPi);
+}
+
+const SheenLambdaFit& sheen_lambda_fit_spec() {
+  static const SheenLambdaFit fit{{11.9095, 4.68753, 0.33467, -2.22664, -1.76591},
+                                  {13.7000, 2.92754, 0.28670, -0.81757, -1.22466},
+                                  {-1.59612, 0.20375, -0.55825, 1.32805}};
+  return fit;
+}
+
+double sheen_fit_l(double x, double alpha_b, const SheenLambdaFit& f) {
+  const double w = f.c[0] / (1.0 + f.c[1] * std::pow(alpha_b, f.c[2])) + f.c[3];
+  double p[5];
+  for (int i = 0; i < 5; ++i) p[i] = (1.0 - w) * f.p0[i] + w * f.p1[i];
+  return p[0] / (1.0 + p[1] * std::pow(x, p[2])) + p[3] * x + p[4];
+}
+
+double sheen_lambda(double cos_theta, double alpha_b, const SheenLambdaFit& fit) {
+  const double c = std::min(1.0, std::abs(cos_theta));
+  if (c < 0.5) return std::exp(sheen_fit_l(c, alpha_b, fit));
+  return std::exp(2.0 * sheen_fit_l(0.5, alpha_b, fit) - sheen_fit_l(1.0 - c, alpha_b, fit));
+}
+
+double sheen_lambda_exact(double cos_theta, double alpha_b) {
+  static const QuadratureRule rule = gauss_legendre(24);
+  const double mu = std::min(1.0, std::abs(cos_theta));
+  const double s = std::sqrt(std::max(0.0, 1.0 - mu * mu));
+  const double k = 1.0 / alpha_b;
+  // Projected area of visible microfacets: Integral D(h) max(0, w.h) dh over theta_h in [0, pi/2].
+  // The integrand is (2+k)/(2pi) sin^k(th) * az(th) * sin(th); sin^k concentrates the mass near
+  // th = pi/2 (width ~ 1/sqrt(k)), so the grid is graded towards pi/2 in the variable
+  // u = cos(th) (u in [0, 1], dth sin(th) = du).
+  auto integrand = [&](double u) {
+    const double sh = std::sqrt(std::max(0.0, 1.0 - u * u));
+    return (2.0 + k) / (2.0 * kPi) * std::pow(sh, k) * azimuth_integral(s * sh, mu * u);
+  };
+  // Kink of max(0, .) at B = A, i.e. u = s (cos th_h = sin th): split there.
+  // Graded panels in u: boundaries geometric towards u = 0 (th = pi/2).
+  double total = 0;
+  auto integrate = [&](double a, double b) {
+    if (b <= a) return 0.0;
+    double sum = 0;
+    // geometric grading towards a when a == 0, since sin^k(th) = (1-u^2)^(k/2) decays over u ~ 1/sqrt(k)
+    const int panels = 48;
+    double lo = a;
+    const double scale = std::max(1e-6, std::min(b - a, 4.0 / std::sqrt(k + 1.0)));
+    for (int p = 1; p <= panels; ++p) {
+      // first 3/4 of the panels cover [a, a + scale] geometrically, the rest uniformly to b
+      double hi;
+      const int g = panels * 3 / 4;
+      if (p <= g) hi = a + scale * std::pow(1e-4, 1.0 - double(p) / g);
+      else hi = a + scale + (b - a - scale) * double(p - g) / (panels - g);
+      if (p == 1) lo = a;
+      hi = std::min(hi, b);
+      if (hi > lo) sum += integrate_gl(integrand, lo, hi, 1, rule);
+      lo = hi;
+    }
+    return sum;
+  };
+  total = integrate(0.0, std::min(s, 1.0)) + integrate(std::min(s, 1.0), 1.0);
+  return total / mu - 1.0;
+}
+
+double sheen_g2(const Vec3& v, const Vec3& l, const Vec3& h, double alpha_b, const SheenLambdaFit& fit) {
+  if (dot(v, h) <= 0 || dot(l, h) <= 0) return 0.0;
+  return 1.0 / (1.0 + sheen_lambda(v.z, alpha_b, fit) + sheen_lambda(l.z, alpha_b, fit));
+}
+
+double sheen_brdf(const Vec3& v, const Vec3& l, double alpha_b, const SheenLambdaFit& fit) {
+  if (v.z <= 0 || l.z <= 0) return 0.0;
+  const Vec3 h = normalize(v + l);
+  return charlie_d(h.z, alpha_b) * sheen_g2(v, l, h, alpha_b, fit) / (4.0 * v.z * l.z);
+}
+
+double sheen_brdf_ash(const Vec3& v, const Vec3& l, double alpha_b) {
+  if (v.z <= 0 || l.z <= 0) return 0.0;
+  const Vec3 h = normalize(v + l);
+  return charlie_d(h.z, alpha_b) / (4.0 * (v.z + l.z - v.z * l.z));
+}
+
+}  // namespace dspbr

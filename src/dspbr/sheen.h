@@ -1,0 +1,57 @@
+// Sheen microfacet model: Charlie distribution and its shadowing (spec "Sheen"; Conty Estevez &
+// Kulla 2017), plus the alternative visibility term (spec "Sheen", [NP13]).
+// cos arguments are cosines to the normal; alpha_b = r_b^2.
+#pragma once
+#include <array>
+
+#include "dspbr/vec3.h"
+
+namespace dspbr {
+
+// Charlie distribution D_b(h) = (2 + 1/alpha_b) sin^(1/alpha_b)(theta_h) / (2 pi), zero below
+// the surface. Requires alpha_b > 0.
+double charlie_d(double cos_theta_h, double alpha_b);
+
+// Coefficients of the functional form of the spec's Lambda fit:
+//   L(x) = a0 / (1 + a1 x^a2) + a3 x + a4 at two anchor rows p0, p1, blended with
+//   w(alpha_b) = c0 / (1 + c1 alpha_b^c2) + c3 as  p(alpha_b) = (1 - w) p0 + w p1.
+// (The spec's table caption says (1 - w) p1 + w p0; the exact Lambda supports the reading above,
+// see docs/sheen_lambda.md and tests/test_sheen.cpp.)
+struct SheenLambdaFit {
+  std::array<double, 5> p0, p1;
+  std::array<double, 4> c;
+};
+
+// The coefficients printed in the DSPBR 2025x spec (Table sheen-lambda-fit and -w).
+const SheenLambdaFit& sheen_lambda_fit_spec();
+
+// L(x; alpha_b) of the fit form.
+double sheen_fit_l(double x, double alpha_b, const SheenLambdaFit& fit);
+
+// Lambda(cos; alpha_b) = exp(L(|cos|)) for |cos| < 0.5, exp(2 L(0.5) - L(1 - |cos|)) otherwise.
+double sheen_lambda(double cos_theta, double alpha_b, const SheenLambdaFit& fit);
+inline double sheen_lambda(double cos_theta, double alpha_b) {
+  return sheen_lambda(cos_theta, alpha_b, sheen_lambda_fit_spec());
+}
+
+// The exact Smith Lambda of the Charlie distribution, by numerical integration:
+//   Lambda(w) = (1 / cos_theta) Integral max(0, w.h) D_b(h) dh - 1,
+// with the azimuth integral done in closed form and composite Gauss-Legendre in theta_h,
+// split at the kink theta_h = pi/2 - theta. Relative accuracy better than 1e-9 for
+// alpha_b in [1e-3, 1], cos_theta in [1e-4, 1] (checked against a doubled rule in the tests).
+double sheen_lambda_exact(double cos_theta, double alpha_b);
+
+// Sheen shadowing-masking G_b = chi+(v.h) chi+(l.h) / (1 + Lambda(v.n) + Lambda(l.n)).
+double sheen_g2(const Vec3& v, const Vec3& l, const Vec3& h, double alpha_b, const SheenLambdaFit& fit);
+
+// Main sheen BRDF M_b = D_b G_b / (4 |v.n| |l.n|) (spec "Sheen"), without the sheen colour.
+double sheen_brdf(const Vec3& v, const Vec3& l, double alpha_b, const SheenLambdaFit& fit);
+inline double sheen_brdf(const Vec3& v, const Vec3& l, double alpha_b) {
+  return sheen_brdf(v, l, alpha_b, sheen_lambda_fit_spec());
+}
+
+// Alternative sheen BRDF with the Neubelt-Pettineo visibility (spec "Sheen", [NP13]):
+// M_b = D_b / (4 (v.n + l.n - (v.n)(l.n))).
+double sheen_brdf_ash(const Vec3& v, const Vec3& l, double alpha_b);
+
+}  // namespace dspbr
