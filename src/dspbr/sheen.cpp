@@ -53,18 +53,20 @@ double sheen_lambda_exact(double cos_theta, double alpha_b) {
   // Projected area of visible microfacets: Integral D(h) max(0, w.h) dh over theta_h in [0, pi/2].
   // The integrand is (2+k)/(2pi) sin^k(th) * az(th) * sin(th); sin^k concentrates the mass near
   // th = pi/2 (width ~ 1/sqrt(k)), so the grid is graded towards pi/2 in the variable
-  // u = cos(th) (u in [0, 1], dth sin(th) = du).
-  auto integrand = [&](double u) {
-    const double sh = std::sqrt(std::max(0.0, 1.0 - u * u));
-    return (2.0 + k) / (2.0 * kPi) * std::pow(sh, k) * azimuth_integral(s * sh, mu * u);
+  // v = pi/2 - th (v in [0, pi/2]). (Integrating in u = cos th instead puts a square-root
+  // singularity of sin th = sqrt(1 - u^2) at u = 1, which cost up to 4e-2 relative error for
+  // alpha_b = 1 near normal incidence.)
+  auto integrand = [&](double v) {
+    const double u = std::sin(v), sh = std::cos(v);  // u = cos th_h, sh = sin th_h
+    return (2.0 + k) / (2.0 * kPi) * std::pow(sh, k) * azimuth_integral(s * sh, mu * u) * sh;
   };
-  // Kink of max(0, .) at B = A, i.e. u = s (cos th_h = sin th): split there.
-  // Graded panels in u: boundaries geometric towards u = 0 (th = pi/2).
+  // Kink of max(0, .) at B = A, i.e. cos th_h = sin th, v = asin(s): split there.
+  // Graded panels in v: boundaries geometric towards v = 0 (th = pi/2).
   double total = 0;
   auto integrate = [&](double a, double b) {
     if (b <= a) return 0.0;
     double sum = 0;
-    // geometric grading towards a when a == 0, since sin^k(th) = (1-u^2)^(k/2) decays over u ~ 1/sqrt(k)
+    // geometric grading towards a when a == 0, since sin^k(th) = cos^k(v) decays over v ~ 1/sqrt(k)
     const int panels = 48;
     double lo = a;
     const double scale = std::max(1e-6, std::min(b - a, 4.0 / std::sqrt(k + 1.0)));
@@ -81,7 +83,8 @@ double sheen_lambda_exact(double cos_theta, double alpha_b) {
     }
     return sum;
   };
-  total = integrate(0.0, std::min(s, 1.0)) + integrate(std::min(s, 1.0), 1.0);
+  const double v_kink = std::asin(std::min(s, 1.0));
+  total = integrate(0.0, v_kink) + integrate(v_kink, kPi / 2);
   return total / mu - 1.0;
 }
 

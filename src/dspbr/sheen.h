@@ -37,8 +37,10 @@ inline double sheen_lambda(double cos_theta, double alpha_b) {
 // The exact Smith Lambda of the Charlie distribution, by numerical integration:
 //   Lambda(w) = (1 / cos_theta) Integral max(0, w.h) D_b(h) dh - 1,
 // with the azimuth integral done in closed form and composite Gauss-Legendre in theta_h,
-// split at the kink theta_h = pi/2 - theta. Relative accuracy better than 1e-9 for
-// alpha_b in [1e-3, 1], cos_theta in [1e-4, 1] (checked against a doubled rule in the tests).
+// split at the kink theta_h = pi/2 - theta. Relative accuracy better than 1e-7 for
+// alpha_b in [1e-3, 1], cos_theta in [1e-5, 0.9999] (checked against a uniform 8000-panel rule
+// in theta_h in tests/test_fit_sheen.cpp); near cos_theta = 1, Lambda -> 0 and the final
+// "total / cos - 1" limits the absolute accuracy to ~1e-14.
 double sheen_lambda_exact(double cos_theta, double alpha_b);
 
 // Sheen shadowing-masking G_b = chi+(v.h) chi+(l.h) / (1 + Lambda(v.n) + Lambda(l.n)).
