@@ -1,0 +1,56 @@
+// Thin-film iridescence: the Airy-summed reflectance R(cos theta, eta, d_i, eta_i) of a thin
+// dielectric film between air and a base, integrated over the visible spectrum to linear sRGB.
+// Spec "Thin Film"; Belcour & Barla 2017, "A Practical Extension to Microfacet Theory for the
+// Modeling of Varying Iridescence" (BB17). Decisions and measured accuracy: docs/components.md.
+//
+// Geometry: air (eta = 1) | film (eta_film, thickness d) | base (eta_base, semi-infinite).
+// The base is a real-IOR dielectric; a metal base enters through its equivalent IOR eta_rho
+// (thin_film_metal_eta). Both polarizations are summed coherently inside the film (Airy) and
+// averaged incoherently (unpolarized light).
+#pragma once
+#include "dspbr/material.h"
+#include "dspbr/vec3.h"
+
+namespace dspbr {
+
+// Exact unpolarized Fresnel reflectance of the interface air | eta (eta may be < 1 for an
+// interface seen from the denser side: total internal reflection gives 1). This is what
+// thin_film_reflectance reduces to at thickness 0 or film IOR 1 (NOT Schlick's F: see docs).
+double fresnel_dielectric_exact(double cos_theta, double eta);
+
+// Equivalent IOR of a metal base (spec "Thin Film"): eta_rho = (1 + sqrt(max rho)) / (1 - sqrt(max rho)),
+// the real IOR whose normal-incidence reflectance is max(rho). Returns +infinity for max(rho) >= 1
+// (a perfect mirror; thin_film_reflectance then returns 1).
+double thin_film_metal_eta(const Rgb& rho);
+
+// Spectral thin-film reflectance at one wavelength (nm) for unpolarized light, in [0, 1].
+// cos_theta: cosine of the incidence angle in air (|cos| is used); eta_base > 0 (may be +inf);
+// thickness_um >= 0 in micrometres; eta_film > 0.
+double thin_film_reflectance_spectral(double cos_theta, double eta_base, double thickness_um,
+                                      double eta_film, double lambda_nm);
+
+// Tristimulus values of the reflected light under an equal-energy illuminant, each normalized by
+// the integral of its colour-matching function (a perfect white reflector gives (1, 1, 1)).
+// CMF: Wyman, Sloan & Shirley 2013 multi-lobe fit of CIE 1931 2 deg; composite Gauss-Legendre
+// quadrature over 360..830 nm. Returned as (X, Y, Z) in an Rgb for convenience.
+Rgb thin_film_reflectance_xyz(double cos_theta, double eta_base, double thickness_um, double eta_film);
+
+// Converts E-white-normalized XYZ to linear sRGB (Bradford adaptation E -> D65, IEC 61966-2-1
+// matrix, then scaled so that XYZ = (1,1,1) maps exactly to RGB = (1,1,1)). Not clamped.
+Rgb thin_film_xyz_to_linear_srgb(const Rgb& xyz);
+
+// R(cos theta, eta_base, d_i, eta_i) of the spec as linear sRGB, each channel clamped to [0, 1]
+// (interference colours can lie outside the sRGB gamut). Exactly fresnel_dielectric_exact in all
+// three channels when thickness_um == 0 or eta_film == 1 (the film vanishes optically).
+Rgb thin_film_reflectance(double cos_theta, double eta_base, double thickness_um, double eta_film);
+
+// Convenience: the material's film (thinFilmThickness in microns, thinFilmIor).
+inline Rgb thin_film_reflectance(double cos_theta, double eta_base, const Material& m) {
+  return thin_film_reflectance(cos_theta, eta_base, m.thinFilmThickness, m.thinFilmIor);
+}
+
+// Wyman, Sloan & Shirley 2013 multi-lobe fit of the CIE 1931 2 deg colour-matching functions
+// (x_bar, y_bar, z_bar at lambda in nm), exposed for tests and plots.
+Rgb cie1931_cmf_wss(double lambda_nm);
+
+}  // namespace dspbr
