@@ -1,0 +1,181 @@
+#include "dspbr/validate/chi2.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <boost/math/special_functions/gamma.hpp>
+#include <cmath>
+#include <numeric>
+
+#include "dspbr/quadrature.h"
+#include "dspbr/rng.h"
+
+namespace dspbr::validate {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr std::size_t kChunk = 1u << 14;  // samples per independent RNG stream
+
+bool finite(const Rgb& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
+
+struct ChunkStats {
+  std::vector<uint32_t> hist;
+  std::size_t invalid = 0, delta = 0, outside = 0, non_finite = 0, pdf_mis = 0, w_mis = 0;
+  double max_pdf_dev = 0, max_w_dev = 0;
+};
+}  // namespace
+
+double chi2_survival(double statistic, int dof) {
+  if (dof <= 0) return 1.0;
+  if (!(statistic > 0)) return 1.0;
+  return boost::math::gamma_q(0.5 * dof, 0.5 * statistic);
+}
+
+double sidak_alpha(double alpha, int m) { return 1.0 - std::pow(1.0 - alpha, 1.0 / std::max(1, m)); }
+
+Chi2Result chi2_test(const Bsdf& bsdf, const Vec3& v, const Chi2Settings& s) {
+  const int nt = s.theta_bins, np = 2 * s.theta_bins;
+  const std::size_t nbins = std::size_t(nt) * np;
+  const double dtheta = kPi / nt, dphi = 2 * kPi / np;
+  Chi2Result r;
+  r.samples = s.samples;
+  r.theta_bins = nt;
+  r.phi_bins = np;
+
+  // 1. Samples, in fixed chunks with one RNG stream each (thread-count independent).
+  const std::size_t nchunks = (s.samples + kChunk - 1) / kChunk;
+  std::vector<ChunkStats> chunks(nchunks);
+  tbb::parallel_for(std::size_t(0), nchunks, [&](std::size_t c) {
+    ChunkStats& st = chunks[c];
+    st.hist.assign(nbins, 0);
+    Pcg32 rng(s.seed, (s.stream << 20) + c);
+    const std::size_t begin = c * kChunk, end = std::min(s.samples, begin + kChunk);
+    for (std::size_t i = begin; i < end; ++i) {
+      const Vec3 u{rng.next_double(), rng.next_double(), rng.next_double()};
+      const BsdfSample smp = bsdf.sample(v, u);
+      if (!smp.valid) { ++st.invalid; continue; }
+      const Vec3& l = smp.l;
+      if (!std::isfinite(l.x) || !std::isfinite(l.y) || !std::isfinite(l.z) || !finite(smp.weight) ||
+          !std::isfinite(smp.pdf)) {
+        ++st.non_finite;
+        continue;
+      }
+      if (smp.flags & kLobeDelta) { ++st.delta; continue; }
+      // Bin of the direction (clamped: round-off may put z slightly outside [-1, 1]).
+      const double z = std::clamp(l.z, -1.0, 1.0);
+      const int ti = std::min(nt - 1, int(std::acos(z) / dtheta));
+      double phi = std::atan2(l.y, l.x);
+      if (phi < 0) phi += 2 * kPi;
+      const int pi = std::min(np - 1, int(phi / dphi));
+      ++st.hist[std::size_t(ti) * np + pi];
+      // Support and consistency.
+      const double p = bsdf.pdf(v, l);
+      if (!(p > 0) || !std::isfinite(p)) { ++st.outside; continue; }
+      const double pdev = std::abs(smp.pdf - p) / p;
+      st.max_pdf_dev = std::max(st.max_pdf_dev, pdev);
+      if (!(pdev <= s.consistency_tol)) ++st.pdf_mis;
+      const Rgb expect = bsdf.eval(v, l) * (std::abs(l.z) / p);
+      double wdev = 0;
+      for (int ch = 0; ch < 3; ++ch) {
+        const double m = std::max(std::abs(expect[ch]), std::abs(smp.weight[ch]));
+        if (m > 0) wdev = std::max(wdev, std::abs(expect[ch] - smp.weight[ch]) / m);
+      }
+      st.max_w_dev = std::max(st.max_w_dev, wdev);
+      if (!(wdev <= s.consistency_tol)) ++st.w_mis;
+    }
+  });
+  std::vector<double> observed(nbins, 0.0);
+  for (const ChunkStats& st : chunks) {  // fixed order
+    for (std::size_t b = 0; b < nbins; ++b) observed[b] += st.hist[b];
+    r.invalid += st.invalid;
+    r.delta += st.delta;
+    r.outside_support += st.outside;
+    r.non_finite += st.non_finite;
+    r.pdf_mismatches += st.pdf_mis;
+    r.weight_mismatches += st.w_mis;
+    r.max_pdf_rel_dev = std::max(r.max_pdf_rel_dev, st.max_pdf_dev);
+    r.max_weight_rel_dev = std::max(r.max_weight_rel_dev, st.max_w_dev);
+  }
+  chunks.clear();
+
+  // 2. Expected counts: Gauss-Legendre over each bin of pdf(v, l) sin(theta) dtheta dphi.
+  const QuadratureRule rule = gauss_legendre(s.integration_order);
+  std::vector<double> integral(nbins, 0.0);
+  tbb::parallel_for(0, nt, [&](int ti) {
+    for (std::size_t a = 0; a < rule.x.size(); ++a) {
+      const double theta = (ti + 0.5 + 0.5 * rule.x[a]) * dtheta;
+      const double wt = 0.5 * rule.w[a] * dtheta * std::sin(theta);
+      const double st = std::sin(theta), ct = std::cos(theta);
+      for (int pi = 0; pi < np; ++pi) {
+        double acc = 0;
+        for (std::size_t b = 0; b < rule.x.size(); ++b) {
+          const double phi = (pi + 0.5 + 0.5 * rule.x[b]) * dphi;
+          const double p = bsdf.pdf(v, Vec3{st * std::cos(phi), st * std::sin(phi), ct});
+          // Non-finite or negative densities are the stability check's business; count them as 0.
+          if (std::isfinite(p) && p > 0) acc += 0.5 * rule.w[b] * dphi * p;
+        }
+        integral[std::size_t(ti) * np + pi] += wt * acc;
+      }
+    }
+  });
+  r.pdf_integral = 0;
+  for (double x : integral) r.pdf_integral += x;  // fixed order
+
+  // 3. The delta/invalid cell and the normalisation check.
+  const double n = double(s.samples);
+  const double p_other = double(r.delta + r.invalid + r.non_finite) / n;
+  r.pdf_integral_expected = 1.0 - p_other;
+  // 4 binomial sigmas of the sampled fraction + 2e-3 for the quadrature of the pdf.
+  r.pdf_integral_tol = 4.0 * std::sqrt(std::max(p_other * (1 - p_other), 1.0 / n) / n) + 2e-3;
+  r.integral_passed = std::abs(r.pdf_integral - r.pdf_integral_expected) <= r.pdf_integral_tol;
+
+  std::vector<double> exp_cells(nbins + 1), obs_cells(nbins + 1);
+  for (std::size_t b = 0; b < nbins; ++b) {
+    exp_cells[b] = n * integral[b];
+    obs_cells[b] = observed[b];
+  }
+  exp_cells[nbins] = std::max(0.0, n * (1.0 - r.pdf_integral));
+  obs_cells[nbins] = double(r.delta + r.invalid + r.non_finite);
+
+  // 4. Pool the cells with a small expected count (ascending order), then Pearson's statistic.
+  std::vector<std::size_t> order(nbins + 1);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return exp_cells[a] < exp_cells[b]; });
+  double pool_e = 0, pool_o = 0, stat = 0;
+  int cells = 0;
+  for (std::size_t idx : order) {
+    const double e = exp_cells[idx], o = obs_cells[idx];
+    if (e < s.min_expected) {
+      pool_e += e;
+      pool_o += o;
+      ++r.pooled_bins;
+    } else {
+      stat += (o - e) * (o - e) / e;
+      ++cells;
+    }
+  }
+  if (pool_e > 0) {
+    stat += (pool_o - pool_e) * (pool_o - pool_e) / pool_e;
+    ++cells;
+  } else if (pool_o > 0) {
+    stat = std::numeric_limits<double>::infinity();  // samples where the pdf integrates to 0
+    ++cells;
+  }
+  r.statistic = stat;
+  r.cells = cells;
+  r.dof = cells - 1;
+  r.p_value = chi2_survival(stat, r.dof);
+  if (std::isinf(stat)) r.p_value = 0;
+  r.alpha = sidak_alpha(s.significance, s.num_tests);
+  r.chi2_passed = r.p_value >= r.alpha;
+  r.support_passed = r.outside_support == 0 && r.non_finite == 0;
+  r.consistency_passed = r.pdf_mismatches == 0 && r.weight_mismatches == 0;
+  if (s.keep_histograms) {
+    r.observed = observed;
+    r.expected.resize(nbins);
+    for (std::size_t b = 0; b < nbins; ++b) r.expected[b] = exp_cells[b];
+  }
+  return r;
+}
+
+}  // namespace dspbr::validate
