@@ -17,10 +17,14 @@ constexpr double kPi = 3.14159265358979323846;
 
 // Spectral range of the CIE 1931 tables (nm); the fitted CMFs are < 1e-3 outside it.
 constexpr double kLambdaMin = 360.0, kLambdaMax = 830.0;
-// Panels no wider than 8 nm with 6 Gauss-Legendre nodes each: at the largest legal optical path
-// (d = 1 um, eta_film = 2.5) the Airy phase turns by < 2 rad per panel, where a 6-node rule is
-// accurate to ~1e-9; panel edges sit on the kinks of the piecewise-Gaussian CMF fit.
-constexpr double kMaxPanelNm = 8.0;
+// Composite Gauss-Legendre with 6 nodes per panel. The panel width is chosen per call from a
+// ladder of precomputed rules (16, 8, 4, 2, 1 nm): the coarsest one on which the Airy phase turns
+// by at most kMaxPanelPhase rad per panel, where a 6-node rule is accurate to ~1e-9 (a legal film,
+// d <= 1 um and eta_film <= 2.5, needs at most 8 nm). Panel edges also sit on the kinks of the
+// piecewise-Gaussian CMF fit.
+constexpr double kPanelWidthsNm[] = {16.0, 8.0, 4.0, 2.0, 1.0};
+constexpr int kRuleLevels = 5;
+constexpr double kMaxPanelPhase = 2.0;
 constexpr int kNodesPerPanel = 6;
 
 // cos of the refracted angle for sin^2 = s2 (complex when s2 > 1: evanescent wave). The +0
@@ -55,12 +59,20 @@ FilmSetup film_setup(double c1, double eta_base, double thickness_um, double eta
 // Airy summation of all inter-reflections (BB17 eq. 2): r = (r12 + r23 e^{i phi}) / (1 + r12 r23 e^{i phi}),
 // R = (|r_s|^2 + |r_p|^2) / 2. |r12 r23 e^{i phi}| < 1 for c1 > 0, so the denominator is never 0.
 double airy_reflectance(const FilmSetup& f, double lambda_nm) {
-  const cplx e = std::exp(cplx(0.0, 1.0) * (f.phase_nm / lambda_nm));
+  // e^{i phi}, phi = phase_nm / lambda (complex when the field is evanescent in the film).
+  const double pr = f.phase_nm.real() / lambda_nm, pi = f.phase_nm.imag() / lambda_nm;
+  const double decay = std::exp(-pi);
+  const double er = decay * std::cos(pr), ei = decay * std::sin(pr);
   double sum = 0;
   for (int p = 0; p < 2; ++p) {
-    const cplx num = f.r12[p] + f.r23[p] * e;
-    const cplx den = 1.0 + f.r12[p] * f.r23[p] * e;
-    sum += std::norm(num) / std::norm(den);
+    // Complex products written out: std::complex's operator* carries inf/NaN recovery code
+    // (Annex G) that dominates the cost here; no operand can be inf or NaN.
+    const double ar = f.r23[p].real() * er - f.r23[p].imag() * ei;  // a = r23 e^{i phi}
+    const double ai = f.r23[p].real() * ei + f.r23[p].imag() * er;
+    const double nr = f.r12[p].real() + ar, ni = f.r12[p].imag() + ai;  // r12 + a
+    const double dr = 1.0 + f.r12[p].real() * ar - f.r12[p].imag() * ai;  // 1 + r12 a
+    const double di = f.r12[p].real() * ai + f.r12[p].imag() * ar;
+    sum += (nr * nr + ni * ni) / (dr * dr + di * di);
   }
   // Clamp rounding only (|R - clamp| < 1e-15): energy conservation bounds R to [0, 1].
   return std::clamp(0.5 * sum, 0.0, 1.0);
@@ -78,15 +90,15 @@ struct SpectralRule {
   std::vector<Rgb> w_xyz;
 };
 
-const SpectralRule& spectral_rule() {
-  static const SpectralRule rule = [] {
+SpectralRule make_spectral_rule(double max_panel_nm) {
+  {
     // Kinks of the piecewise-Gaussian CMF fit (its lobe centres) become panel edges.
     const std::array<double, 9> edges{kLambdaMin, 437.0, 442.0, 459.0, 501.1, 530.9, 568.8, 599.8, kLambdaMax};
     const QuadratureRule gl = gauss_legendre(kNodesPerPanel);
     SpectralRule r;
     Rgb norm(0.0);
     for (std::size_t e = 0; e + 1 < edges.size(); ++e) {
-      const int panels = int(std::ceil((edges[e + 1] - edges[e]) / kMaxPanelNm));
+      const int panels = int(std::ceil((edges[e + 1] - edges[e]) / max_panel_nm));
       const double h = (edges[e + 1] - edges[e]) / panels;
       for (int p = 0; p < panels; ++p) {
         const double mid = edges[e] + (p + 0.5) * h;
@@ -101,8 +113,21 @@ const SpectralRule& spectral_rule() {
     }
     for (Rgb& w : r.w_xyz) w = w / norm;  // equal-energy white -> (1, 1, 1)
     return r;
+  }
+}
+
+// The coarsest rule resolving the Airy oscillation: |d phase / d lambda| = |phase_nm| / lambda^2 is
+// largest at the shortest wavelength.
+const SpectralRule& spectral_rule(double phase_nm_abs) {
+  static const std::vector<SpectralRule> rules = [] {
+    std::vector<SpectralRule> r;
+    for (double w : kPanelWidthsNm) r.push_back(make_spectral_rule(w));
+    return r;
   }();
-  return rule;
+  const double rate = phase_nm_abs / (kLambdaMin * kLambdaMin);  // rad per nm
+  for (int level = 0; level < kRuleLevels; ++level)
+    if (rate * kPanelWidthsNm[level] <= kMaxPanelPhase) return rules[level];
+  return rules[kRuleLevels - 1];  // films thicker than ~10 um optical path: accuracy degrades
 }
 
 using Mat3 = std::array<std::array<double, 3>, 3>;
@@ -205,7 +230,7 @@ Rgb thin_film_reflectance_xyz(double cos_theta, double eta_base, double thicknes
   if (thickness_um <= 0.0 || eta_film == 1.0) return Rgb(fresnel_dielectric_exact(c1, eta_base));
   if (c1 == 0.0) return Rgb(1.0);
   const FilmSetup f = film_setup(c1, eta_base, thickness_um, eta_film);
-  const SpectralRule& rule = spectral_rule();
+  const SpectralRule& rule = spectral_rule(std::abs(f.phase_nm.real()));
   Rgb xyz(0.0);
   for (std::size_t i = 0; i < rule.lambda.size(); ++i) xyz += rule.w_xyz[i] * airy_reflectance(f, rule.lambda[i]);
   return xyz;
