@@ -1,11 +1,153 @@
-// `dspbr params`: placeholder until its issue lands.
+// `dspbr params`: parameter definition files (spec appendix "Parameter JSON file format") and
+// material instance files.
+//   dspbr params list [FILE] [--json]          materials of a definition file
+//   dspbr params show FILE MATERIAL [--json]   resolved parameters in UI order and groups
+//   dspbr params check INSTANCE... [--params FILE]
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
 #include "commands.h"
+#include "dspbr/params/material_instance.h"
+#include "dspbr/params/param_defs.h"
 
 namespace dspbr::cli {
 
+namespace {
+
+ParamDefs load_defs(const std::string& path) {
+  try {
+    return ParamDefs::load(path);
+  } catch (const std::exception& e) {
+    throw UsageError(e.what());
+  }
+}
+
+std::string range_text(const ParamDef& p) {
+  if (p.min.is_null() && p.max.is_null()) return "";
+  auto text = [](const nlohmann::json& v) {
+    std::string s = v.dump();
+    for (const char* key : {"{\"infinity\":true}", "{\"-infinity\":true}"}) {
+      const std::string k = key, r = k[2] == '-' ? "-inf" : "inf";
+      for (std::size_t pos; (pos = s.find(k)) != std::string::npos;) s.replace(pos, k.size(), r);
+    }
+    return s;
+  };
+  return "[" + text(p.min) + ", " + text(p.max) + "]";
+}
+
+void print_material(const MaterialDef& m) {
+  std::printf("%s", m.id.c_str());
+  if (!m.name.empty()) std::printf(" \"%s\"", m.name.c_str());
+  for (const auto& base : m.inherits) std::printf(" <- %s", base.c_str());
+  std::printf("\n");
+  bool first = true;
+  std::string group;
+  for (const auto& p : m.parameters) {
+    if (first || p.group != group) {
+      std::printf("  [%s]\n", p.group.empty() ? "(no group)" : p.group.c_str());
+      group = p.group;
+      first = false;
+    }
+    std::printf("    %-3s %-28s %-8s default %-24s %-28s%s%s\n",
+                p.ui_order < 0 ? "-" : std::to_string(p.ui_order).c_str(), p.id.c_str(), param_type_name(p.type),
+                p.default_value.dump().c_str(), range_text(p).c_str(), p.uniform ? " uniform" : "",
+                p.hidden ? " (hidden)" : "");
+  }
+}
+
+}  // namespace
+
 void add_params_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("params", "(not implemented yet)");
-  cmd->callback([] { throw std::runtime_error("'params' is not implemented yet"); });
+  auto* cmd = app.add_subcommand("params", "Parameter definition files (params-2025x.json format) and material instances");
+  cmd->require_subcommand(1);
+
+  struct Options {
+    std::string file, material, params;
+    std::vector<std::string> instances;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+
+  auto* list = cmd->add_subcommand("list", "List the materials of a parameter definition file");
+  list->add_option("FILE", opt->file, "Parameter definition file (default: $DSPBR_PARAMS or the shared params-2025x.json)");
+  list->add_flag("--json", opt->json, "Print {\"materials\": [{\"id\", \"name\", \"inherits\"}]}");
+  list->callback([opt] {
+    const ParamDefs defs = load_defs(opt->file.empty() ? default_params_path() : opt->file);
+    if (opt->json) {
+      nlohmann::ordered_json out = {{"materials", nlohmann::ordered_json::array()}};
+      for (const auto& id : defs.material_ids()) {
+        const auto& m = defs.material(id);
+        out["materials"].push_back({{"id", id}, {"name", m.name}, {"inherits", m.inherits}});
+      }
+      std::cout << out.dump(2) << "\n";
+      return;
+    }
+    for (const auto& id : defs.material_ids()) {
+      const auto& m = defs.material(id);
+      std::printf("%-12s %-32s %s\n", id.c_str(), m.name.c_str(),
+                  m.inherits.empty() ? "" : ("inherits " + m.inherits.front()).c_str());
+    }
+  });
+
+  auto* show = cmd->add_subcommand("show", "Show a material's resolved parameters in UI order and groups");
+  show->add_option("FILE", opt->file, "Parameter definition file")->required();
+  show->add_option("MATERIAL", opt->material, "Material id, e.g. glass")->required();
+  show->add_flag("--json", opt->json,
+                 "Print {\"parameters\": {\"<id>\": {\"name\", \"type\", \"default\", \"min\", \"max\", \"uniform\", "
+                 "\"hidden\", \"group\", \"uiOrder\", ...}}}");
+  show->callback([opt] {
+    const ParamDefs defs = load_defs(opt->file);
+    const MaterialDef* m = nullptr;
+    try {
+      m = &defs.material(opt->material);
+    } catch (const std::exception& e) {
+      throw UsageError(e.what());
+    }
+    if (opt->json) std::cout << material_def_to_json(*m).dump(2) << "\n";
+    else print_material(*m);
+  });
+
+  auto* check = cmd->add_subcommand("check", "Validate material instance files {\"material\": ..., \"values\": {...}}");
+  check->add_option("INSTANCE", opt->instances, "Material instance file(s)")->required();
+  check->add_option("--params", opt->params,
+                    "Parameter definition file (default: $DSPBR_PARAMS or the shared params-2025x.json)");
+  check->callback([opt] {
+    const ParamDefs defs = load_defs(opt->params.empty() ? default_params_path() : opt->params);
+    int bad = 0;
+    for (const auto& path : opt->instances) {
+      std::vector<std::string> problems;
+      std::string type;
+      std::ifstream in(path);
+      if (!in) {
+        problems.push_back("cannot open the file");
+      } else {
+        try {
+          const auto doc = nlohmann::json::parse(in);
+          problems = check_material_instance(defs, doc);
+          if (problems.empty()) {
+            material_from_instance(defs, doc);  // also proves it converts
+            type = doc["material"].get<std::string>();
+          }
+        } catch (const nlohmann::json::parse_error& e) {
+          problems.push_back(std::string("malformed JSON: ") + e.what());
+        } catch (const std::exception& e) {
+          problems.push_back(e.what());
+        }
+      }
+      if (problems.empty()) {
+        std::printf("%s: ok (material '%s')\n", path.c_str(), type.c_str());
+      } else {
+        ++bad;
+        for (const auto& p : problems) std::fprintf(stderr, "%s: %s\n", path.c_str(), p.c_str());
+      }
+    }
+    if (bad) throw UsageError(std::to_string(bad) + " of " + std::to_string(opt->instances.size()) +
+                              " instance file(s) invalid against " + defs.source());
+  });
 }
 
 }  // namespace dspbr::cli

@@ -269,16 +269,21 @@ const char* param_type_name(ParamKind kind) {
 ParamDefs ParamDefs::load(const std::string& path) {
   std::ifstream in(path);
   if (!in) fail(path, "cannot open the parameter definition file (give one with --params or DSPBR_PARAMS)");
-  Json doc;
+  nlohmann::ordered_json doc;
   try {
-    doc = Json::parse(in);
-  } catch (const Json::parse_error& e) {
+    doc = nlohmann::ordered_json::parse(in);
+  } catch (const nlohmann::ordered_json::parse_error& e) {
     fail(path, std::string("malformed JSON: ") + e.what());
   }
   return from_json(doc, path);
 }
 
 ParamDefs ParamDefs::from_json(const Json& doc, const std::string& source) {
+  return from_json(nlohmann::ordered_json::parse(doc.dump()), source);
+}
+
+ParamDefs ParamDefs::from_json(const nlohmann::ordered_json& ordered, const std::string& source) {
+  const Json doc = Json::parse(ordered.dump());
   if (!doc.is_object() || !doc.contains("materials") || !doc["materials"].is_object())
     fail(source, "expected a JSON object with a \"materials\" object");
   const Json& materials = doc["materials"];
@@ -292,8 +297,7 @@ ParamDefs ParamDefs::from_json(const Json& doc, const std::string& source) {
   }
   const Json lookup = resolved_doc;
   resolve_refs(resolved_doc, lookup, source);
-  // nlohmann::json orders object keys alphabetically; keep the file's order for listing.
-  const auto ordered = nlohmann::ordered_json::parse(doc.dump());
+  // nlohmann::json orders object keys alphabetically; `ordered` keeps the file's order.
   for (const auto& [id, _] : ordered["materials"].items()) {
     const Json& m = resolved_doc["materials"][id];
     MaterialDef def;

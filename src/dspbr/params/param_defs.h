@@ -48,6 +48,8 @@ class ParamDefs {
   static ParamDefs load(const std::string& path);
   // Same from an already parsed document; `source` names it in messages.
   static ParamDefs from_json(const nlohmann::json& doc, const std::string& source);
+  // Same, keeping the file's material order (nlohmann::json sorts keys).
+  static ParamDefs from_json(const nlohmann::ordered_json& doc, const std::string& source);
 
   std::vector<std::string> material_ids() const;  // in file order
   bool has_material(const std::string& id) const;

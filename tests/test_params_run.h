@@ -1,0 +1,38 @@
+// Runs the built `dspbr` tool (DSPBR_EXE) for end-to-end CLI tests of the params / scene
+// commands: exit status and combined stdout+stderr.
+#pragma once
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+
+struct ToolRun {
+  int status = -1;  // exit status of the tool
+  std::string output;
+};
+
+inline ToolRun run_dspbr(const std::string& args) {
+  ToolRun r;
+  const std::string cmd = std::string("\"") + DSPBR_EXE + "\" " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf{};
+  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) r.output.append(buf.data(), n);
+  const int raw = pclose(pipe);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return r;
+}
+
+// Number of lines of `text` containing `needle`.
+inline int count_lines_with(const std::string& text, const std::string& needle) {
+  int n = 0;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    if (text.substr(start, end - start).find(needle) != std::string::npos) ++n;
+    start = end + 1;
+  }
+  return n;
+}
