@@ -1,0 +1,35 @@
+// Independent high-precision values of the quantities stored in the energy-compensation tables,
+// for checking the generated LUTs. The table generator (lut/albedo.h) integrates over the light
+// direction by (quasi-)Monte Carlo; these functions use a different route: deterministic
+// composite Gauss-Legendre quadrature over the microfacet normal h, with the reflected
+// l = 2 (v.h) h - v, so that
+//   E_m(mu; r)       = Integral D(h) G2(v, l, h) (v.h) / mu dh         (l.n > 0)
+//   E(mu; r, f0)     = Integral D G2 F(v.h; f0, 1) (v.h) / mu dh + F_ms(f0, 1) (1 - E_m(mu; r))
+//   E_b(mu; alpha_b) = Integral D_b(h) G_b (v.h) / mu dh                (main sheen)
+//                    = Integral D_b(h) (l.n) (v.h) / (mu + l.n - mu l.n) dh   (alternative sheen)
+// (dl = 4 (v.h) dh for reflection). GGX is integrated in the variable u of its own
+// cumulative distribution (tan^2 theta_h = alpha^2 u / (1 - u), where D cos(theta_h) dh = du dphi / 2pi),
+// which resolves the peak at any roughness; the Charlie distribution in cos(theta_h) with panels
+// refined near the horizon where it peaks. Each value comes with an error estimate: the
+// difference to the same rule with half the panels.
+#pragma once
+
+namespace dspbr::validate {
+
+struct RefValue {
+  double value = 0;
+  double error = 0;  // |value - value with half the panels|
+};
+
+// Quadrature effort: panels per dimension (each with 8 Gauss-Legendre nodes).
+struct RefQuadrature {
+  int panels = 48;
+};
+
+RefValue ggx_albedo_ref(double mu, double roughness, const RefQuadrature& q = {});
+RefValue ggx_albedo_avg_ref(double roughness, const RefQuadrature& q = {});
+RefValue base_albedo_ref(double mu, double roughness, double f0, const RefQuadrature& q = {});
+RefValue base_albedo_avg_ref(double roughness, double f0, const RefQuadrature& q = {});
+RefValue sheen_albedo_ref(double mu, double alpha_b, bool alternative, const RefQuadrature& q = {});
+
+}  // namespace dspbr::validate
