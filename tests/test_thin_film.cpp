@@ -3,8 +3,10 @@
 // (quarter-/half-wave layers, Brewster angle), limits and energy bounds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <vector>
 
 #include "dspbr/bsdf/thin_film.h"
@@ -203,4 +205,29 @@ TEST(ThinFilm, EnergyBoundsAndFiniteness) {
   // Grazing incidence reflects everything.
   EXPECT_EQ(thin_film_reflectance_spectral(0.0, 1.5, 0.4, 1.3, 500.0), 1.0);
   EXPECT_NEAR(thin_film_reflectance_spectral(1e-9, 1.5, 0.4, 1.3, 500.0), 1.0, 1e-7);
+}
+
+// Out-of-gamut interference colours are the exception over the legal range: the fraction of grid
+// points needing the [0, 1] clamp and the unclamped extremes (figures quoted in docs/components.md).
+TEST(ThinFilm, GamutClampingIsRare) {
+  int n = 0, clamped = 0;
+  double lo = 0, hi = 0;
+  for (double eb : {1.0, 1.5, 2.5, thin_film_metal_eta(Rgb(0.9))})
+    for (int di = 1; di <= 50; ++di)
+      for (int ei = 0; ei <= 6; ++ei)
+        for (int ci = 0; ci <= 10; ++ci) {
+          const Rgb r = thin_film_xyz_to_linear_srgb(thin_film_reflectance_xyz(ci / 10.0, eb, di / 50.0, 1.0 + 0.25 * ei));
+          ++n;
+          bool out = false;
+          for (int k = 0; k < 3; ++k) {
+            lo = std::min(lo, r[k]);
+            hi = std::max(hi, r[k]);
+            out = out || r[k] < 0 || r[k] > 1;
+          }
+          clamped += out;
+        }
+  std::printf("thin film gamut: %d of %d grid points clamped, unclamped range [%.4f, %.4f]\n", clamped, n, lo, hi);
+  EXPECT_LT(double(clamped) / n, 0.05);
+  EXPECT_GT(lo, -0.2);
+  EXPECT_LT(hi, 1.2);
 }
