@@ -1,0 +1,292 @@
+#include "dspbr/lut/albedo.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "dspbr/fresnel.h"
+#include "dspbr/ggx.h"
+#include "dspbr/lut/qmc.h"
+#include "dspbr/rng.h"
+#include "dspbr/sheen.h"
+
+namespace dspbr {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Runs settings.randomizations replicates in lockstep, calling f(u, acc) per point with
+// u[0..dims) uniform on [0,1)^dims (scrambled Sobol' for Qmc, Pcg32 for Mc); f adds the K
+// integrand weights of the point to acc. Points per replicate: samples / randomizations, or
+// fewer when settings.target_error > 0: the count doubles from kFirstStage until the standard
+// error of every one of the K means is at most target_error. The stopping rule depends only on
+// the cell's own numbers, so results stay independent of threads. Returns the K means of every
+// replicate.
+constexpr uint32_t kFirstStage = 1024;
+
+template <int K, class F>
+std::vector<std::array<double, K>> replicate_means(const IntegratorSettings& s, uint64_t stream, int dims, F&& f) {
+  const int R = s.randomizations;
+  const uint32_t n_max = uint32_t(std::max(1, s.samples / R));
+  std::vector<std::array<double, K>> sums(static_cast<size_t>(R), std::array<double, K>{});
+  // Per-replicate generators, all derived from (seed, stream).
+  Pcg32 root(s.seed, stream);
+  std::vector<ScrambledSobol> sobol;
+  std::vector<Pcg32> rng;
+  for (int r = 0; r < R; ++r) {
+    const uint64_t sub = (uint64_t(root.next_u32()) << 32) | root.next_u32();
+    if (s.integrator == Integrator::Qmc) sobol.emplace_back(sub);
+    else rng.emplace_back(sub, stream);
+  }
+  double u[ScrambledSobol::kMaxDims];
+  uint32_t done = 0;
+  uint32_t target = s.target_error > 0 ? std::min(n_max, kFirstStage) : n_max;
+  while (true) {
+    for (int r = 0; r < R; ++r) {
+      std::array<double, K>& acc = sums[size_t(r)];
+      for (uint32_t i = done; i < target; ++i) {
+        if (s.integrator == Integrator::Qmc)
+          for (int d = 0; d < dims; ++d) u[d] = sobol[size_t(r)].sample(i, d);
+        else
+          for (int d = 0; d < dims; ++d) u[d] = rng[size_t(r)].next_double();
+        f(u, acc);
+      }
+    }
+    done = target;
+    if (done >= n_max) break;
+    // Standard error of each mean over the replicates.
+    double worst = 0;
+    for (int k = 0; k < K; ++k) {
+      double m = 0, ss = 0;
+      for (int r = 0; r < R; ++r) m += sums[size_t(r)][size_t(k)] / done;
+      m /= R;
+      for (int r = 0; r < R; ++r) {
+        const double d = sums[size_t(r)][size_t(k)] / done - m;
+        ss += d * d;
+      }
+      worst = std::max(worst, std::sqrt(ss / (double(R) * (R - 1))));
+    }
+    if (worst <= s.target_error) break;
+    target = uint32_t(std::min<uint64_t>(n_max, uint64_t(target) * 2));
+  }
+  std::vector<std::array<double, K>> means(static_cast<size_t>(R));
+  for (int r = 0; r < R; ++r)
+    for (int k = 0; k < K; ++k) means[size_t(r)][size_t(k)] = sums[size_t(r)][size_t(k)] / done;
+  return means;
+}
+
+// Mean and standard error of g(replicate) over the replicates; value = g(mean of replicates).
+template <int K, class G>
+Estimate combine(const std::vector<std::array<double, K>>& reps, G&& g) {
+  std::array<double, K> mean{};
+  for (const auto& r : reps)
+    for (int k = 0; k < K; ++k) mean[size_t(k)] += r[size_t(k)];
+  for (int k = 0; k < K; ++k) mean[size_t(k)] /= double(reps.size());
+  const double value = g(mean);
+  double ss = 0;
+  double m = 0;
+  for (const auto& r : reps) m += g(r);
+  m /= double(reps.size());
+  for (const auto& r : reps) ss += (g(r) - m) * (g(r) - m);
+  const double R = double(reps.size());
+  return {value, std::sqrt(ss / (R * (R - 1)))};
+}
+
+void check_settings(const IntegratorSettings& s) {
+  if (s.randomizations < 2) throw std::invalid_argument("integrator: randomizations must be >= 2");
+  if (s.samples < s.randomizations) throw std::invalid_argument("integrator: samples must be >= randomizations");
+  if (uint64_t(s.samples / s.randomizations) > ScrambledSobol::kMaxPoints)
+    throw std::invalid_argument("integrator: too many samples per randomization (max 2^24)");
+}
+
+double clamp_cos(double mu) { return std::clamp(mu, kMinCos, 1.0); }
+Vec3 view_dir(double mu) { return {std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, mu}; }
+Vec3 hemisphere_dir(double cos_t, double phi) {
+  const double s = std::sqrt(std::max(0.0, 1.0 - cos_t * cos_t));
+  return {s * std::cos(phi), s * std::sin(phi), cos_t};
+}
+
+// Schlick factor (1 - v.h)^5 = F(v.h; 0, 1): F(v.h; f0, 1) = f0 + (1 - f0) schlick.
+double schlick_factor(double cos_vh) { return fresnel_schlick(cos_vh, 0.0, 1.0); }
+
+// The two GGX moments at view cosine mu: acc[0] += weight of Integral M_r mu_l dl,
+// acc[1] += weight of Integral M_r (1 - v.h)^5 mu_l dl.
+// Qmc: l = reflect(v, h), h ~ visible normals; weight M_r mu_l / pdf(l) = G2 / G1(v) (Heitz 2018).
+void ggx_moments_qmc(const Vec3& v, double alpha, double u0, double u1, std::array<double, 2>& acc) {
+  const Vec3 h = ggx_sample_vndf(v, alpha, alpha, u0, u1);
+  const double vh = dot(v, h);
+  if (vh <= 0) return;
+  const Vec3 l = reflect(v, h);
+  if (l.z <= 0) return;  // reflected below the horizon: M_r = 0 there
+  const double g1 = ggx_g1(v, h, alpha, alpha);
+  if (g1 <= 0) return;
+  const double w = ggx_g2(v, l, h, alpha, alpha) / g1;
+  acc[0] += w;
+  acc[1] += w * schlick_factor(vh);
+}
+
+// Mc: l uniform on the hemisphere (pdf 1 / 2pi); weight 2 pi M_r mu_l.
+void ggx_moments_mc(const Vec3& v, double alpha, double u0, double u1, std::array<double, 2>& acc) {
+  const Vec3 l = hemisphere_dir(u0, 2.0 * kPi * u1);
+  if (l.z <= 0) return;
+  const double w = 2.0 * kPi * ggx_microfacet_brdf(v, l, alpha, alpha) * l.z;
+  if (w == 0) return;
+  acc[0] += w;
+  acc[1] += w * schlick_factor(dot(v, normalize(v + l)));
+}
+
+// Replicate means of the two GGX moments at (mu, r). alpha = 0 is the mirror: E_m = 1 and the
+// Schlick moment is (1 - mu)^5 exactly (the Mc baseline cannot sample a delta lobe).
+std::vector<std::array<double, 2>> ggx_moments(double mu, double r, const IntegratorSettings& s, uint64_t stream) {
+  check_settings(s);
+  mu = clamp_cos(mu);
+  const double alpha = roughness_to_alpha(std::clamp(r, 0.0, 1.0));
+  const Vec3 v = view_dir(mu);
+  if (alpha == 0 && s.integrator == Integrator::Mc)
+    return std::vector<std::array<double, 2>>(size_t(s.randomizations), {1.0, schlick_factor(mu)});
+  if (s.integrator == Integrator::Qmc)
+    return replicate_means<2>(s, stream, 2, [&](const double* u, std::array<double, 2>& acc) {
+      ggx_moments_qmc(v, alpha, u[0], u[1], acc);
+    });
+  return replicate_means<2>(s, stream, 2, [&](const double* u, std::array<double, 2>& acc) {
+    ggx_moments_mc(v, alpha, u[0], u[1], acc);
+  });
+}
+
+// Replicate means of the cosine-weighted hemispherical averages 2 Integral moment(mu) mu dmu.
+// Qmc: mu = sqrt(u) has density 2 mu, so the weights are the directional ones.
+// Mc: mu uniform, weight 2 mu.
+std::vector<std::array<double, 2>> ggx_avg_moments(double r, const IntegratorSettings& s, uint64_t stream) {
+  check_settings(s);
+  const double alpha = roughness_to_alpha(std::clamp(r, 0.0, 1.0));
+  if (alpha == 0 && s.integrator == Integrator::Mc)  // mirror: E_m,avg = 1, 2 Integral (1-mu)^5 mu = 1/21
+    return std::vector<std::array<double, 2>>(size_t(s.randomizations), {1.0, 1.0 / 21.0});
+  if (s.integrator == Integrator::Qmc)
+    return replicate_means<2>(s, stream, 3, [&](const double* u, std::array<double, 2>& acc) {
+      const double mu = clamp_cos(std::sqrt(u[0]));
+      ggx_moments_qmc(view_dir(mu), alpha, u[1], u[2], acc);
+    });
+  return replicate_means<2>(s, stream, 3, [&](const double* u, std::array<double, 2>& acc) {
+    const double mu = clamp_cos(u[0]);
+    std::array<double, 2> a{};
+    ggx_moments_mc(view_dir(mu), alpha, u[1], u[2], a);
+    acc[0] += 2.0 * mu * a[0];
+    acc[1] += 2.0 * mu * a[1];
+  });
+}
+
+// E(mu; r, f0) from the moments A = E_m, B = Schlick moment and E_m,avg:
+// f0 A + (1 - f0) B + F_ms(f0, 1; E_m,avg) (1 - A).
+double base_from_moments(double f0, double A, double B, double e_m_avg) {
+  return f0 * A + (1.0 - f0) * B + fresnel_ms(f0, 1.0, e_m_avg) * (1.0 - A);
+}
+
+// d F_ms / d E_avg = Fa^2 (1 - Fa) / (1 - Fa (1 - E_avg))^2, for error propagation.
+double fresnel_ms_derivative(double f0, double e_avg) {
+  const double fa = fresnel_avg(f0, 1.0);
+  const double d = 1.0 - fa * (1.0 - e_avg);
+  return fa * fa * (1.0 - fa) / (d * d);
+}
+
+}  // namespace
+
+const char* integrator_name(Integrator i) { return i == Integrator::Qmc ? "qmc" : "mc"; }
+
+Estimate ggx_E(double mu, double r, const IntegratorSettings& s, uint64_t stream) {
+  return combine<2>(ggx_moments(mu, r, s, stream), [](const std::array<double, 2>& m) { return m[0]; });
+}
+
+Estimate ggx_E_avg(double r, const IntegratorSettings& s, uint64_t stream) {
+  return combine<2>(ggx_avg_moments(r, s, stream), [](const std::array<double, 2>& m) { return m[0]; });
+}
+
+std::vector<Estimate> base_E_f0s(double mu, double r, const std::vector<double>& f0s, const Estimate& e_m_avg,
+                                 const IntegratorSettings& s, uint64_t stream) {
+  const auto reps = ggx_moments(mu, r, s, stream);
+  std::vector<Estimate> out;
+  out.reserve(f0s.size());
+  for (double f0 : f0s) {
+    Estimate e = combine<2>(reps, [&](const std::array<double, 2>& m) {
+      return base_from_moments(f0, m[0], m[1], e_m_avg.value);
+    });
+    // The error of E_m,avg enters through F_ms (1 - E_m); add it in quadrature.
+    double a_mean = 0;
+    for (const auto& m : reps) a_mean += m[0];
+    a_mean /= double(reps.size());
+    const double d = fresnel_ms_derivative(f0, e_m_avg.value) * (1.0 - a_mean) * e_m_avg.error;
+    e.error = std::sqrt(e.error * e.error + d * d);
+    out.push_back(e);
+  }
+  return out;
+}
+
+std::vector<Estimate> base_E_avg_f0s(double r, const std::vector<double>& f0s, const IntegratorSettings& s,
+                                     uint64_t stream, Estimate* e_m_avg) {
+  const auto reps = ggx_avg_moments(r, s, stream);
+  if (e_m_avg) *e_m_avg = combine<2>(reps, [](const std::array<double, 2>& m) { return m[0]; });
+  std::vector<Estimate> out;
+  out.reserve(f0s.size());
+  // 2 Integral E(mu) mu dmu = f0 A_avg + (1 - f0) B_avg + F_ms(E_m,avg) (1 - E_m,avg), A_avg = E_m,avg.
+  for (double f0 : f0s)
+    out.push_back(combine<2>(reps, [&](const std::array<double, 2>& m) {
+      return base_from_moments(f0, m[0], m[1], m[0]);
+    }));
+  return out;
+}
+
+Estimate base_E(double mu, double r, double f0, const IntegratorSettings& s, uint64_t stream) {
+  const Estimate e_avg = ggx_E_avg(r, s, stream + 1);
+  return base_E_f0s(mu, r, {f0}, e_avg, s, stream)[0];
+}
+
+Estimate base_E_avg(double r, double f0, const IntegratorSettings& s, uint64_t stream) {
+  return base_E_avg_f0s(r, {f0}, s, stream)[0];
+}
+
+Estimate sheen_E(double mu, double alpha_b, SheenModel model, const IntegratorSettings& s, uint64_t stream) {
+  check_settings(s);
+  mu = clamp_cos(mu);
+  const double ab = std::clamp(alpha_b, kMinAlphaB, 1.0);
+  const Vec3 v = view_dir(mu);
+  auto brdf = [&](const Vec3& l) {
+    return model == SheenModel::Main ? sheen_brdf(v, l, ab) : sheen_brdf_ash(v, l, ab);
+  };
+  std::vector<std::array<double, 1>> reps;
+  if (s.integrator == Integrator::Qmc) {
+    // One-sample mixture (balance heuristic) of uniform hemisphere sampling (robust at grazing l)
+    // and Charlie half-vector sampling h ~ D_b(h) (h.n), which follows the lobe at small alpha_b:
+    // with s = sin(theta_h), p(s) ~ s^(k+1) (k = 1/alpha_b), so s = u^(1/(k+2)).
+    const double k = 1.0 / ab;
+    reps = replicate_means<1>(s, stream, 2, [&](const double* u, std::array<double, 1>& acc) {
+      Vec3 l;
+      if (u[0] < 0.5) {
+        l = hemisphere_dir(2.0 * u[0], 2.0 * kPi * u[1]);
+      } else {
+        const double x = std::max(2.0 * u[0] - 1.0, 1e-300);  // avoid log(0); x = 0 gives h = n
+        const double lx = std::log(x) / (k + 2.0);
+        const double sin_h = std::exp(lx);
+        // cos^2 = 1 - sin^2 = (1 - sin)(1 + sin), with 1 - sin = -expm1(lx) for accuracy near 1.
+        const double cos_h = std::sqrt(std::max(0.0, -std::expm1(lx) * (1.0 + sin_h)));
+        const double phi = 2.0 * kPi * u[1];
+        const Vec3 h{sin_h * std::cos(phi), sin_h * std::sin(phi), cos_h};
+        l = reflect(v, h);
+      }
+      if (l.z <= 0) return;
+      const Vec3 h = normalize(v + l);
+      const double vh = dot(v, h);
+      const double pdf_uniform = 1.0 / (2.0 * kPi);
+      const double pdf_charlie = vh > 0 ? charlie_d(h.z, ab) * h.z / (4.0 * vh) : 0.0;
+      acc[0] += brdf(l) * l.z / (0.5 * pdf_uniform + 0.5 * pdf_charlie);
+    });
+  } else {
+    reps = replicate_means<1>(s, stream, 2, [&](const double* u, std::array<double, 1>& acc) {
+      const Vec3 l = hemisphere_dir(u[0], 2.0 * kPi * u[1]);
+      if (l.z > 0) acc[0] += 2.0 * kPi * brdf(l) * l.z;
+    });
+  }
+  return combine<1>(reps, [](const std::array<double, 1>& m) { return m[0]; });
+}
+
+}  // namespace dspbr

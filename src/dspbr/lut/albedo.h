@@ -1,0 +1,85 @@
+// Directional and average albedos of the DSPBR BRDF terms, by numerical integration: the exact
+// integrals behind the energy-compensation tables (spec "Energy Preservation", "Multiple-
+// Scattering GGX BRDFs", "Diffuse BRDF", "Sheen BRDF"). The table generator (lut/generate.h)
+// calls these functions; fits and validation call them to get exact values at any point.
+//
+//   E_m(mu; r)         = Integral M_r(v, l) mu_l dl          M_r = D G2 / (4 mu_v mu_l), alpha = r^2
+//   E_m,avg(r)         = 2 Integral_0^1 E_m(mu; r) mu dmu
+//   E(mu; r, f0)       = Integral [M_r F(v.h; f0, 1) + M_r,ms F_ms(f0, 1)] mu_l dl
+//                      = Integral M_r F(v.h; f0, 1) mu_l dl + F_ms(f0, 1; E_m,avg(r)) (1 - E_m(mu; r))
+//   E_avg(r, f0)       = 2 Integral_0^1 E(mu; r, f0) mu dmu
+//   E_b(mu; alpha_b)   = Integral M_b(v, l) mu_l dl           (main or alternative sheen)
+//
+// The second form of E uses the closed-form hemispherical integral of the multiple-scattering
+// lobe: Integral (1 - E_m(mu_v))(1 - E_m(mu_l)) / (pi (1 - E_m,avg)) mu_l dl = 1 - E_m(mu_v),
+// because 2 pi Integral_0^1 (1 - E_m(mu_l)) mu_l dmu_l = pi (1 - E_m,avg). E_m and E_m,avg in it
+// are integrated at the same (mu, r), never interpolated from a table.
+//
+// Integrators (IntegratorSettings):
+//  - Qmc: importance sampling that fits the lobe (GGX: visible normals, Heitz 2018; sheen: a
+//    half/half mixture of uniform hemisphere sampling and Charlie half-vector sampling, one-sample
+//    balance heuristic) driven by Owen-scrambled Sobol' points; `randomizations` independent
+//    scramblings of samples/randomizations points each.
+//  - Mc: the plain Monte Carlo baseline: uniform hemisphere sampling of l (and uniform mu for
+//    averages) with Pcg32, in `randomizations` batches.
+// Both return the mean of the replicates and its standard error (spread of the replicates /
+// sqrt(R)). Streams: the random numbers of a call depend only on (settings.seed, stream), so a
+// table cell with stream = cell id gives the same bits whatever the thread count.
+//
+// Domain and clamps: mu is clamped to [kMinCos, 1] (mu = 0 exactly has no directional albedo;
+// the clamp gives the grazing limit to O(kMinCos)); r in [0, 1] with r = 0 the mirror limit
+// (E_m = 1, handled exactly by the VNDF sampler and in closed form by the MC baseline);
+// alpha_b is clamped to [kMinAlphaB, 1] (the Charlie distribution is undefined at 0).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dspbr {
+
+enum class Integrator { Qmc, Mc };
+const char* integrator_name(Integrator i);  // "qmc" / "mc"
+
+struct IntegratorSettings {
+  Integrator integrator = Integrator::Qmc;
+  int samples = 65536;      // samples per cell in total (all replicates together), the maximum
+                            // when target_error > 0
+  int randomizations = 8;   // independent replicates (QMC scramblings / MC batches), >= 2
+  uint64_t seed = 1;
+  // Adaptive budget: > 0 stops doubling the points per replicate (from 1024) once the standard
+  // error is at most this; 0 always uses `samples`.
+  double target_error = 0;
+};
+
+struct Estimate {
+  double value = 0;
+  double error = 0;  // standard error (1 sigma) of value
+};
+
+// Grazing clamp of the view cosine (see above).
+constexpr double kMinCos = 1e-6;
+// Smallest sheen alpha_b integrated; smaller values are clamped up to it.
+constexpr double kMinAlphaB = 1e-3;
+
+enum class SheenModel { Main, Ash };  // Charlie D_b with the spec's Lambda fit, or [NP13] visibility
+
+// E_m(mu; r).
+Estimate ggx_E(double mu, double r, const IntegratorSettings& s, uint64_t stream = 0);
+// E_m,avg(r).
+Estimate ggx_E_avg(double r, const IntegratorSettings& s, uint64_t stream = 0);
+// E(mu; r, f0), computing E_m,avg(r) itself (stream + 1 is used for it).
+Estimate base_E(double mu, double r, double f0, const IntegratorSettings& s, uint64_t stream = 0);
+// E_avg(r, f0).
+Estimate base_E_avg(double r, double f0, const IntegratorSettings& s, uint64_t stream = 0);
+// E_b(mu; alpha_b) for the main or alternative sheen.
+Estimate sheen_E(double mu, double alpha_b, SheenModel model, const IntegratorSettings& s, uint64_t stream = 0);
+
+// Batched forms used by the table generator (one integration serves every f0).
+// E(mu; r, f0_i) for all f0s, with E_m,avg(r) given (its error is propagated).
+std::vector<Estimate> base_E_f0s(double mu, double r, const std::vector<double>& f0s, const Estimate& e_m_avg,
+                                 const IntegratorSettings& s, uint64_t stream);
+// E_avg(r, f0_i) for all f0s; also returns E_m,avg(r) from the same samples in *e_m_avg.
+std::vector<Estimate> base_E_avg_f0s(double r, const std::vector<double>& f0s, const IntegratorSettings& s,
+                                     uint64_t stream, Estimate* e_m_avg = nullptr);
+
+}  // namespace dspbr

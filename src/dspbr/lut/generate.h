@@ -1,0 +1,57 @@
+// The table generator behind `dspbr lut`: the six DSPBR energy-compensation tables (see
+// docs/luts.md for definitions, layout and conventions), integrated cell by cell with the
+// functions of lut/albedo.h, in parallel with TBB. Each cell draws its random numbers from
+// (settings.seed, stream = table id * 2^32 + cell index), so the result is bit-identical
+// whatever the thread count.
+#pragma once
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "dspbr/lut/albedo.h"
+#include "dspbr/lut/table.h"
+
+namespace dspbr {
+
+// Canonical table names, in canonical order: GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E,
+// Sheen_ash_E.
+const std::vector<std::string>& lut_table_names();
+bool is_lut_table_name(const std::string& name);
+
+// Axis names (slowest -> fastest) and default sizes of a table.
+std::vector<std::string> lut_axis_names(const std::string& table);
+std::vector<int> lut_default_size(const std::string& table);
+// Default maximum samples per cell (all replicates); the averages integrate over one more
+// dimension and get more. With the default target error most cells stop far earlier.
+int lut_default_samples(const std::string& table);
+// Default adaptive target: standard error 1e-5 per cell, a tenth of the 1e-4 accuracy goal.
+constexpr double kLutDefaultTargetError = 1e-5;
+
+struct LutOptions {
+  std::vector<std::string> tables = lut_table_names();  // which tables (canonical names)
+  std::map<std::string, std::vector<int>> sizes;        // per-table sizes (missing: default)
+  GridKind grid = GridKind::CellCentred;
+  Integrator integrator = Integrator::Qmc;
+  int samples = 0;         // per cell (maximum when target_error > 0); 0: lut_default_samples(table)
+  double target_error = kLutDefaultTargetError;  // adaptive stop (IntegratorSettings); 0: fixed budget
+  int randomizations = 8;  // replicates per cell (>= 2)
+  uint64_t seed = 1;
+  int threads = 0;         // 0: all hardware threads
+  bool progress = true;    // report progress on stderr (only when it is a terminal)
+};
+
+// The integrator settings used for `table` under `opt`.
+IntegratorSettings lut_settings(const std::string& table, const LutOptions& opt);
+
+// The axes of `table` under `opt` (sizes, grid kind; all axes span [0, 1]).
+std::vector<Axis> lut_axes(const std::string& table, const LutOptions& opt);
+
+// Checks the options (names, sizes, budgets); throws std::invalid_argument with a one-line
+// message saying what to fix.
+void validate_lut_options(const LutOptions& opt);
+
+// Generates the requested tables (canonical order). Values and per-cell standard errors.
+std::vector<Table> generate_luts(const LutOptions& opt);
+
+}  // namespace dspbr

@@ -1,0 +1,93 @@
+// Independent reference values for the LUT tests: deterministic composite Gauss-Legendre
+// quadrature of the defining integrals (no sampling, no code shared with src/dspbr/lut/).
+#pragma once
+#include <cmath>
+
+#include "dspbr/fresnel.h"
+#include "dspbr/ggx.h"
+#include "dspbr/quadrature.h"
+#include "dspbr/sheen.h"
+
+namespace dspbr::lutref {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// 2D composite Gauss-Legendre of f(x, y) over [0,1] x [0,1].
+template <class F>
+double integrate_unit_square(F&& f, int panels_x, int panels_y, int order = 8) {
+  const QuadratureRule rule = gauss_legendre(order);
+  return integrate_gl([&](double x) { return integrate_gl([&](double y) { return f(x, y); }, 0.0, 1.0, panels_y, rule); },
+                      0.0, 1.0, panels_x, rule);
+}
+
+// Integral over the GGX half-vector domain of g(h) D(h) (h.n) dh, in the slope
+// parametrisation: slope = alpha rho (cos phi, sin phi), u = rho^2 / (1 + rho^2) in [0,1], for
+// which D(h) (h.n) dh = du dphi / (2 pi); then u = 1 - w^2 (du = 2 w dw) removes the
+// 1/sqrt(1 - u) growth of integrands carrying 1/(h.n). This follows the lobe at any alpha (also
+// r -> 0), unlike (mu_l, phi). Only phi in [0, pi] is integrated (the integrands are even in phi).
+template <class G>
+double ggx_half_vector_integral(double alpha, G&& g, int panels_u, int panels_phi) {
+  return integrate_unit_square(
+      [&](double w, double t) {
+        const double phi = kPi * t;
+        const double rho = std::sqrt(std::max(0.0, 1.0 - w * w)) / w;  // u / (1 - u) = (1 - w^2) / w^2
+        if (w == 0) return 0.0;
+        const Vec3 h = normalize(Vec3{-alpha * rho * std::cos(phi), -alpha * rho * std::sin(phi), 1.0});
+        return 2.0 * w * g(h) * kPi / (2.0 * kPi) * 2.0;  // du = 2w dw; dphi = pi dt; both halves of phi
+      },
+      panels_u, panels_phi);
+}
+
+// Integral over the light hemisphere of g(l) dl in (mu_l, phi), phi in [0, pi] (even in phi).
+template <class G>
+double hemisphere_integral(G&& g, int panels_mu, int panels_phi) {
+  return integrate_unit_square(
+      [&](double ml, double t) {
+        const double phi = kPi * t, s = std::sqrt(std::max(0.0, 1 - ml * ml));
+        return 2.0 * kPi * g(Vec3{s * std::cos(phi), s * std::sin(phi), ml});
+      },
+      panels_mu, panels_phi);
+}
+
+// Same integral as ggx_albedo_quad in the light domain (mu_l, phi): the integrand M_r F mu_l has
+// no kink inside the hemisphere (v.h > 0 for any l above it), but the lobe is a spike of width
+// ~alpha around the mirror direction, so this form is for rough cells only.
+inline double ggx_albedo_quad_l(double mu, double r, double f0, int panels_mu = 64, int panels_phi = 64) {
+  const double alpha = r * r;
+  const Vec3 v{std::sqrt(1 - mu * mu), 0, mu};
+  return hemisphere_integral(
+      [&](const Vec3& l) {
+        const Vec3 h = normalize(v + l);
+        const double F = f0 + (1 - f0) * std::pow(1 - dot(v, h), 5);
+        return ggx_d(h, alpha, alpha) * ggx_g2(v, l, h, alpha, alpha) / (4 * mu * l.z) * F * l.z;
+      },
+      panels_mu, panels_phi);
+}
+
+// Integral M_r F(v.h) mu_l dl with F = f0 + (1 - f0) (1 - v.h)^5, using
+// dl = 4 (v.h) dh:  Integral D G2 F (v.h) / mu_v dh.
+inline double ggx_albedo_quad(double mu, double r, double f0, int panels_u = 64, int panels_phi = 32) {
+  const double alpha = r * r;
+  const Vec3 v{std::sqrt(1 - mu * mu), 0, mu};
+  return ggx_half_vector_integral(
+      alpha,
+      [&](const Vec3& h) {
+        const double vh = dot(v, h);
+        if (vh <= 0) return 0.0;
+        const Vec3 l = 2 * vh * h - v;
+        if (l.z <= 0) return 0.0;
+        const double G2 = 1.0 / (1.0 + smith_lambda(v, alpha, alpha) + smith_lambda(l, alpha, alpha));
+        const double F = f0 + (1 - f0) * std::pow(1 - vh, 5);
+        return G2 * F * vh / (mu * h.z);
+      },
+      panels_u, panels_phi);
+}
+
+// Integral M_b mu_l dl for the sheen models in (mu_l, phi), phi in [0, pi] (even in phi).
+template <class Brdf>
+double sheen_albedo_quad(double mu, Brdf&& brdf, int panels_mu = 64, int panels_phi = 32) {
+  const Vec3 v{std::sqrt(1 - mu * mu), 0, mu};
+  return hemisphere_integral([&](const Vec3& l) { return brdf(v, l) * l.z; }, panels_mu, panels_phi);
+}
+
+}  // namespace dspbr::lutref
