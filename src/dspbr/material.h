@@ -59,4 +59,15 @@ struct Material {
   double subsurfaceAnisotropy = 0;
 };
 
+// Checks every field against the ranges of params-2025x.json's generic material and throws
+// std::invalid_argument with a one-line message naming the first bad field, its value and the
+// range ("parameter 'roughness' = 1.5 is outside [0, 1]"). Per field (material.cpp):
+// - float in [min, max] (max absent: [min, +inf)); NaN and infinities rejected, except
+//   attenuationDistance, which may be +inf (no attenuation);
+// - colour channels in [0, max] (emissionColor: [0, +inf));
+// - normal / clearcoatNormal: finite and non-zero; the BSDF normalizes them (spec: |n| = 1);
+// - displacement: finite.
+// Nothing is clamped silently: the spec gives ranges, not clamping rules.
+void validate_material(const Material& m);
+
 }  // namespace dspbr
