@@ -1,0 +1,42 @@
+// Diffuse base of the opaque dielectric (spec "Diffuse BRDF", eq. "diffuse" and "b_c"), weighted as in
+// ThinCore / VolumetricCore:
+//   rho_d [ B_u (1 - s) + s B_c(F_0 rho_s) ]
+//   B_u = T(v, l; l) / pi
+//   B_c = (1 - E(v.n; r_uv, f0_max)) (1 - E(l.n; r_uv, f0_max)) / (pi (1 - E_avg(r_uv, f0_max))) T(v, l; l)
+//   T   = 1 - l when v and l are on the same side, l (translucency) otherwise.
+// With a thin film of weight i (ThinFilmOver* equations) the base becomes
+//   rho_d { (1 - i) [B_u (1 - s) + s B_c] + i B_u (1 - max(R(v.n), R(l.n))) }.
+// Sampling: cosine-weighted, upper hemisphere with probability 1 - l, lower with probability l.
+#pragma once
+#include "dspbr/bsdf/lobe.h"
+#include "dspbr/lut/lut_set.h"
+
+namespace dspbr {
+
+struct DiffuseParams {
+  Rgb rho_d{1, 1, 1};          // rho_d of ThinCore (colour and layer weight)
+  double specular = 1;         // s
+  double translucency = 0;     // l
+  double f0_max = 0.04;        // max of F_0 rho_s (table coordinate of E, E_avg)
+  double r_uv = 0;             // sqrt(r_u r_v)
+  double film_weight = 0;      // i
+  CosineFn film_reflectance;   // R(cos) of the film (only called when film_weight > 0)
+};
+
+class DiffuseBase : public Lobe {
+ public:
+  DiffuseBase(const DiffuseParams& p, const LutSet& luts);
+  Rgb eval(const Vec3& v, const Vec3& l) const override;
+  double pdf(const Vec3& v, const Vec3& l) const override;
+  BsdfSample sample(const Vec3& v, const Vec3& u) const override;
+  uint32_t flags() const override;
+  double sampling_weight(const Vec3& v) const override;
+
+ private:
+  double missing(double cos_theta) const;  // 1 - E(|cos|; r_uv, f0_max), clamped to [0, 1]
+  DiffuseParams p_;
+  const LutSet& luts_;
+  double inv_norm_;  // 1 / (pi (1 - E_avg)); 0 when no energy is left for the base
+};
+
+}  // namespace dspbr

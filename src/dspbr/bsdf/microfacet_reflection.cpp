@@ -1,0 +1,68 @@
+#include "dspbr/bsdf/microfacet_reflection.h"
+
+#include <algorithm>
+
+#include "dspbr/bsdf/sampling.h"
+#include "dspbr/ggx.h"
+
+namespace dspbr {
+
+MicrofacetReflection::MicrofacetReflection(double alpha_u, double alpha_v, CosineFn fresnel)
+    : au_(std::max(alpha_u, kMinAlpha)),
+      av_(std::max(alpha_v, kMinAlpha)),
+      delta_(std::max(alpha_u, alpha_v) < kDeltaAlpha),
+      fresnel_(std::move(fresnel)) {}
+
+Rgb MicrofacetReflection::eval(const Vec3& v, const Vec3& l) const {
+  if (delta_ || v.z <= 0 || l.z <= 0) return Rgb(0);
+  const Vec3 h = normalize(v + l);
+  // M_r = D G / (4 |v.n| |l.n|) times the Fresnel factor at cos theta_r = v.h_r.
+  return fresnel_(dot(v, h)) * ggx_microfacet_brdf(v, l, au_, av_);
+}
+
+double MicrofacetReflection::pdf(const Vec3& v, const Vec3& l) const {
+  // Density of l = reflect(v, h), h ~ D_v(h): D_v(h) / (4 v.h) (Heitz 2018), defined for every l
+  // (also below the horizon, where eval is 0), so that the pdf integrates to 1 over the sphere.
+  if (delta_ || v.z <= 0) return 0.0;
+  const Vec3 s = v + l;
+  const double len = length(s);
+  if (!(len > 0)) return 0.0;
+  const Vec3 h = s / len;
+  const double vh = dot(v, h);
+  if (h.z <= 0 || vh <= 0) return 0.0;
+  return ggx_vndf_pdf(v, h, au_, av_) / (4.0 * vh);
+}
+
+BsdfSample MicrofacetReflection::sample(const Vec3& v, const Vec3& u) const {
+  BsdfSample s;
+  if (v.z <= 0) return s;
+  if (delta_) {
+    s.l = {-v.x, -v.y, v.z};
+    s.weight = fresnel_(v.z);
+    s.pdf = 1.0;
+    s.flags = kLobeReflection | kLobeDelta;
+    s.valid = true;
+    return s;
+  }
+  const Vec3 h = ggx_sample_vndf(v, au_, av_, u.y, u.z);
+  if (dot(v, h) <= 0) return s;
+  s.l = normalize(reflect(v, h));
+  s.pdf = pdf(v, s.l);
+  if (!(s.pdf > 0)) return s;
+  s.weight = eval(v, s.l) * (std::abs(s.l.z) / s.pdf);
+  s.flags = kLobeReflection | kLobeGlossy;
+  s.valid = true;
+  return s;
+}
+
+uint32_t MicrofacetReflection::flags() const {
+  return kLobeReflection | (delta_ ? kLobeDelta : kLobeGlossy);
+}
+
+double MicrofacetReflection::sampling_weight(const Vec3& v) const {
+  if (v.z <= 0) return 0.0;
+  // Fresnel at the macro normal and at grazing: Schlick-like mixtures grow towards grazing.
+  return std::max(0.0, 0.5 * (mean(fresnel_(v.z)) + mean(fresnel_(0.5 * v.z))));
+}
+
+}  // namespace dspbr

@@ -1,0 +1,45 @@
+#include "dspbr/bsdf/multiscatter.h"
+
+#include <algorithm>
+
+#include "dspbr/bsdf/sampling.h"
+
+namespace dspbr {
+
+MultiScatterReflection::MultiScatterReflection(double r_uv, const Rgb& f_ms, const LutSet& luts)
+    : r_uv_(r_uv), f_ms_(f_ms), luts_(luts) {
+  const double missing_avg = 1.0 - luts_.E_m_avg(r_uv_);
+  inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kBsdfPi * missing_avg) : 0.0;
+}
+
+double MultiScatterReflection::missing(double cos_theta) const {
+  return std::clamp(1.0 - luts_.E_m(std::abs(cos_theta), r_uv_), 0.0, 1.0);
+}
+
+Rgb MultiScatterReflection::eval(const Vec3& v, const Vec3& l) const {
+  if (v.z <= 0 || l.z <= 0 || inv_norm_ == 0) return Rgb(0);
+  return f_ms_ * (missing(v.z) * missing(l.z) * inv_norm_);
+}
+
+double MultiScatterReflection::pdf(const Vec3& v, const Vec3& l) const {
+  return v.z > 0 ? cosine_hemisphere_pdf(l) : 0.0;
+}
+
+BsdfSample MultiScatterReflection::sample(const Vec3& v, const Vec3& u) const {
+  BsdfSample s;
+  if (v.z <= 0) return s;
+  s.l = sample_cosine_hemisphere(u.y, u.z);
+  s.pdf = pdf(v, s.l);
+  if (!(s.pdf > 0)) return s;
+  s.weight = eval(v, s.l) * (s.l.z / s.pdf);
+  s.flags = kLobeReflection | kLobeDiffuse;
+  s.valid = true;
+  return s;
+}
+
+double MultiScatterReflection::sampling_weight(const Vec3& v) const {
+  if (v.z <= 0 || inv_norm_ == 0) return 0.0;
+  return std::max(0.0, mean(f_ms_)) * missing(v.z);
+}
+
+}  // namespace dspbr

@@ -1,0 +1,52 @@
+#include "dspbr/bsdf/sheen_lobe.h"
+
+#include <algorithm>
+
+#include "dspbr/bsdf/sampling.h"
+#include "dspbr/sheen.h"
+
+namespace dspbr {
+
+SheenLobe::SheenLobe(const Rgb& color, double sheen_roughness, SheenModel model, const LutSet& luts)
+    : color_(color),
+      alpha_b_(std::max(sheen_roughness * sheen_roughness, kMinAlphaB)),
+      model_(model),
+      luts_(luts) {}
+
+Rgb SheenLobe::eval(const Vec3& v, const Vec3& l) const {
+  if (v.z <= 0 || l.z <= 0) return Rgb(0);
+  const double mb = model_ == SheenModel::Main ? sheen_brdf(v, l, alpha_b_) : sheen_brdf_ash(v, l, alpha_b_);
+  return color_ * mb;
+}
+
+double SheenLobe::pdf(const Vec3& v, const Vec3& l) const { return v.z > 0 ? uniform_hemisphere_pdf(l) : 0.0; }
+
+BsdfSample SheenLobe::sample(const Vec3& v, const Vec3& u) const {
+  BsdfSample s;
+  if (v.z <= 0) return s;
+  s.l = sample_uniform_hemisphere(u.y, u.z);
+  s.pdf = pdf(v, s.l);
+  if (!(s.pdf > 0)) return s;
+  s.weight = eval(v, s.l) * (s.l.z / s.pdf);
+  s.flags = kLobeReflection | kLobeGlossy;
+  s.valid = true;
+  return s;
+}
+
+double SheenLobe::albedo(double cos_theta) const {
+  const double c = std::abs(cos_theta);
+  const double e = model_ == SheenModel::Main ? luts_.E_sheen(c, alpha_b_) : luts_.E_sheen_ash(c, alpha_b_);
+  return std::clamp(e, 0.0, 1.0);
+}
+
+double SheenLobe::layer_scale(double cos_v, double cos_l) const {
+  const double rho_hat = color_.max_component();
+  return std::clamp(std::min(1.0 - rho_hat * albedo(cos_v), 1.0 - rho_hat * albedo(cos_l)), 0.0, 1.0);
+}
+
+double SheenLobe::sampling_weight(const Vec3& v) const {
+  if (v.z <= 0) return 0.0;
+  return std::max(0.0, mean(color_)) * std::max(albedo(v.z), 1e-3);
+}
+
+}  // namespace dspbr

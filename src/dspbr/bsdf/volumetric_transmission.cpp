@@ -1,0 +1,99 @@
+#include "dspbr/bsdf/volumetric_transmission.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dspbr/bsdf/sampling.h"
+#include "dspbr/ggx.h"
+
+namespace dspbr {
+
+bool refract_dir(const Vec3& v, const Vec3& h, double eta, Vec3& l) {
+  const double cos_i = dot(v, h);
+  const double sin2_t = eta * eta * std::max(0.0, 1.0 - cos_i * cos_i);
+  if (sin2_t >= 1.0) return false;  // total internal reflection
+  const double cos_t = std::sqrt(1.0 - sin2_t);
+  l = normalize(-v * eta + h * (eta * cos_i - cos_t));
+  return true;
+}
+
+VolumetricTransmission::VolumetricTransmission(double alpha_u, double alpha_v, double eta_i, double eta_o,
+                                               CosineFn factor)
+    : au_(std::max(alpha_u, kMinAlpha)),
+      av_(std::max(alpha_v, kMinAlpha)),
+      eta_i_(eta_i),
+      eta_o_(eta_o),
+      delta_(std::max(alpha_u, alpha_v) < kDeltaAlpha || std::abs(eta_i / eta_o - 1.0) < kIndexMatched),
+      factor_(std::move(factor)) {}
+
+bool VolumetricTransmission::half_vector(const Vec3& v, const Vec3& l, Vec3& h) const {
+  Vec3 s = -(v * eta_i_ + l * eta_o_);
+  const double len = length(s);
+  if (!(len > 0)) return false;
+  h = s / len;
+  if (h.z < 0) h = -h;
+  // Refraction: v and l on opposite sides of the microfacet.
+  return h.z > 0 && dot(v, h) > 0 && dot(l, h) < 0;
+}
+
+Rgb VolumetricTransmission::eval(const Vec3& v, const Vec3& l) const {
+  if (delta_ || v.z <= 0 || l.z >= 0) return Rgb(0);
+  Vec3 h;
+  if (!half_vector(v, l, h)) return Rgb(0);
+  const double vh = dot(v, h), lh = dot(l, h);
+  const double denom = eta_i_ * vh + eta_o_ * lh;
+  if (denom == 0) return Rgb(0);
+  // Height-correlated G for transmission: the chi+ factors are the facet-side checks above.
+  const double g = 1.0 / (1.0 + smith_lambda(v, au_, av_) + smith_lambda(l, au_, av_));
+  const double mt = std::abs(lh) * std::abs(vh) / (std::abs(l.z) * std::abs(v.z)) * eta_o_ * eta_o_ *
+                    ggx_d(h, au_, av_) * g / (denom * denom);
+  return factor_(vh) * mt;
+}
+
+double VolumetricTransmission::pdf(const Vec3& v, const Vec3& l) const {
+  // D_v(h_t) times the Jacobian |dh/dl| = eta_o^2 |l.h| / (eta_i v.h + eta_o l.h)^2 (Walter 2007
+  // eq. 17), for every l for which h_t is a refraction configuration.
+  if (delta_ || v.z <= 0) return 0.0;
+  Vec3 h;
+  if (!half_vector(v, l, h)) return 0.0;
+  const double vh = dot(v, h), lh = dot(l, h);
+  const double denom = eta_i_ * vh + eta_o_ * lh;
+  if (denom == 0) return 0.0;
+  return ggx_vndf_pdf(v, h, au_, av_) * eta_o_ * eta_o_ * std::abs(lh) / (denom * denom);
+}
+
+BsdfSample VolumetricTransmission::sample(const Vec3& v, const Vec3& u) const {
+  BsdfSample s;
+  if (v.z <= 0) return s;
+  const double eta = eta_i_ / eta_o_;
+  if (delta_) {
+    if (!refract_dir(v, {0, 0, 1}, std::abs(eta - 1.0) < kIndexMatched ? 1.0 : eta, s.l)) return s;
+    s.weight = factor_(v.z);
+    s.pdf = 1.0;
+    s.flags = kLobeTransmission | kLobeDelta;
+    s.valid = true;
+    return s;
+  }
+  const Vec3 h = ggx_sample_vndf(v, au_, av_, u.y, u.z);
+  if (dot(v, h) <= 0 || !refract_dir(v, h, eta, s.l)) return s;  // TIR: the sample fails
+  s.pdf = pdf(v, s.l);
+  if (!(s.pdf > 0)) return s;
+  s.weight = eval(v, s.l) * (std::abs(s.l.z) / s.pdf);
+  s.flags = kLobeTransmission | kLobeGlossy;
+  s.valid = true;
+  return s;
+}
+
+uint32_t VolumetricTransmission::flags() const {
+  return kLobeTransmission | (delta_ ? kLobeDelta : kLobeGlossy);
+}
+
+double VolumetricTransmission::sampling_weight(const Vec3& v) const {
+  if (v.z <= 0) return 0.0;
+  // Smooth lobe under total internal reflection: nothing is transmitted.
+  const double eta = eta_i_ / eta_o_;
+  if (delta_ && eta * eta * (1.0 - v.z * v.z) >= 1.0 && std::abs(eta - 1.0) >= kIndexMatched) return 0.0;
+  return std::max(0.0, mean(factor_(v.z)));
+}
+
+}  // namespace dspbr
