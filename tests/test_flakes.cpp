@@ -84,6 +84,7 @@ TEST(Flakes, CountAndGridResolution) {
   const Flake none = flake_at({0.1, 0.2, 0.3}, {0, 0, 1}, 1.0, 0.0, 0.5);
   EXPECT_EQ(none.opacity, 0.0);
   EXPECT_EQ(none.index, -1);
+  EXPECT_EQ(flake_at({std::nan(""), 0.2, 0.3}, {0, 0, 1}, 1.0, 0.05, 0.5).index, -1);
 }
 
 TEST(Flakes, TriplanarMapping) {

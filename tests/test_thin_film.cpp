@@ -7,6 +7,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <stdexcept>
 #include <vector>
 
 #include "dspbr/bsdf/thin_film.h"
@@ -202,6 +203,11 @@ TEST(ThinFilm, EnergyBoundsAndFiniteness) {
           const Rgb c = thin_film_reflectance(mu, eta_b, d, eta_f);
           for (int k = 0; k < 3; ++k) EXPECT_TRUE(std::isfinite(c[k]) && c[k] >= 0 && c[k] <= 1);
         }
+  // Outside the domain: a clear error rather than NaN.
+  EXPECT_THROW(thin_film_reflectance(0.5, 0.0, 0.4, 1.3), std::invalid_argument);
+  EXPECT_THROW(thin_film_reflectance(0.5, 1.5, -0.1, 1.3), std::invalid_argument);
+  EXPECT_THROW(thin_film_reflectance(0.5, 1.5, std::nan(""), 1.3), std::invalid_argument);
+  EXPECT_THROW(thin_film_reflectance_spectral(0.5, 1.5, 0.4, 0.0, 500.0), std::invalid_argument);
   // Grazing incidence reflects everything.
   EXPECT_EQ(thin_film_reflectance_spectral(0.0, 1.5, 0.4, 1.3, 500.0), 1.0);
   EXPECT_NEAR(thin_film_reflectance_spectral(1e-9, 1.5, 0.4, 1.3, 500.0), 1.0, 1e-7);

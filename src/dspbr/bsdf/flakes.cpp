@@ -82,6 +82,7 @@ double flake_normal_pdf(const Vec3& h, double alpha_ggx) {
 Flake flake_at(const Vec3& p, const Vec3& n, double f, double s_f, double r_f) {
   Flake out;
   if (!(s_f > 0)) return out;  // flake size 0: no flakes
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return out;  // non-finite p: no flake
   const int64_t res = flake_grid_res(s_f);
   const FlakeUv uv = flake_triplanar_uv(p, n);
   // Continuous grid coordinates and the cell of the shading point (spec eq. grid-cell-coord).

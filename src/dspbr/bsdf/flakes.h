@@ -61,7 +61,8 @@ struct Flake {
   int index = -1;                    // index of the flake within its cell, -1 when there are no flakes
 };
 // p: shading point in object space, metres; n: bumped normal in object space (triplanar choice);
-// f: coverage, s_f: flake size (mm), r_f: flake roughness. s_f <= 0 (or NaN): no flakes (opacity 0).
+// f: coverage, s_f: flake size (mm), r_f: flake roughness. s_f <= 0 (or NaN): no flakes (opacity 0);
+// a non-finite p also returns "no flake".
 Flake flake_at(const Vec3& p, const Vec3& n, double f, double s_f, double r_f);
 inline Flake flake_at(const Vec3& p, const Vec3& n, const Material& m) {
   return flake_at(p, n, m.flakeCoverage, m.flakeSize, m.flakeRoughness);

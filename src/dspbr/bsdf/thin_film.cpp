@@ -4,6 +4,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "dspbr/quadrature.h"
@@ -182,6 +183,12 @@ const ColourTransform& colour_transform() {
   return t;
 }
 
+// Rejects inputs outside the model's domain (NaN included) instead of returning NaN.
+void check_film_arguments(double eta_base, double thickness_um, double eta_film) {
+  if (!(eta_base > 0) || !(eta_film > 0) || !(thickness_um >= 0) || std::isinf(thickness_um) || std::isinf(eta_film))
+    throw std::invalid_argument("thin film: need eta_base > 0, finite eta_film > 0 and finite thickness >= 0");
+}
+
 }  // namespace
 
 Rgb cie1931_cmf_wss(double l) {
@@ -217,6 +224,7 @@ double thin_film_metal_eta(const Rgb& rho) {
 
 double thin_film_reflectance_spectral(double cos_theta, double eta_base, double thickness_um,
                                       double eta_film, double lambda_nm) {
+  check_film_arguments(eta_base, thickness_um, eta_film);
   const double c1 = std::min(1.0, std::abs(cos_theta));
   if (std::isinf(eta_base)) return 1.0;  // perfect mirror base: a lossless film cannot absorb
   if (thickness_um <= 0.0 || eta_film == 1.0) return fresnel_dielectric_exact(c1, eta_base);
@@ -225,6 +233,7 @@ double thin_film_reflectance_spectral(double cos_theta, double eta_base, double 
 }
 
 Rgb thin_film_reflectance_xyz(double cos_theta, double eta_base, double thickness_um, double eta_film) {
+  check_film_arguments(eta_base, thickness_um, eta_film);
   const double c1 = std::min(1.0, std::abs(cos_theta));
   if (std::isinf(eta_base)) return Rgb(1.0);
   if (thickness_um <= 0.0 || eta_film == 1.0) return Rgb(fresnel_dielectric_exact(c1, eta_base));
@@ -242,6 +251,7 @@ Rgb thin_film_xyz_to_linear_srgb(const Rgb& xyz) {
 }
 
 Rgb thin_film_reflectance(double cos_theta, double eta_base, double thickness_um, double eta_film) {
+  check_film_arguments(eta_base, thickness_um, eta_film);
   const double c1 = std::min(1.0, std::abs(cos_theta));
   // The film vanishes optically: the result is exactly the base Fresnel, grey.
   if (std::isinf(eta_base)) return Rgb(1.0);

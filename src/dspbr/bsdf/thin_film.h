@@ -25,7 +25,8 @@ double thin_film_metal_eta(const Rgb& rho);
 
 // Spectral thin-film reflectance at one wavelength (nm) for unpolarized light, in [0, 1].
 // cos_theta: cosine of the incidence angle in air (|cos| is used); eta_base > 0 (may be +inf);
-// thickness_um >= 0 in micrometres; eta_film > 0.
+// thickness_um >= 0 in micrometres; eta_film > 0. Outside this domain (or NaN) the thin-film
+// functions throw std::invalid_argument (material validation keeps legal materials inside it).
 double thin_film_reflectance_spectral(double cos_theta, double eta_base, double thickness_um,
                                       double eta_film, double lambda_nm);
 
