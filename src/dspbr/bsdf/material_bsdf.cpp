@@ -139,7 +139,9 @@ std::vector<MaterialBsdf::Entry> MaterialBsdf::build_side(const Material& m, con
       }
       return f;
     };
-    out.push_back({std::make_unique<MicrofacetReflection>(alpha_u, alpha_v, fresnel), kCoreLayer, &core_});
+    // Present unless every Fresnel weight vanishes (e.g. a dielectric with s = 0 and no film).
+    if (w_metal > 0 || s * (w_opaque + w_transp) > 0 || i > 0)
+      out.push_back({std::make_unique<MicrofacetReflection>(alpha_u, alpha_v, fresnel), kCoreLayer, &core_});
     // M_r,ms F_ms(rho_s,r,0, rho_s,r,90) (same for every film weight). A mirror (delta M_r) has
     // E_m = 1 exactly: no compensation (the tables' first roughness sample is not at r = 0).
     const Rgb f_ms = fresnel_ms(rho_sr0, rho_sr90, std::clamp(luts.E_m_avg(r_uv), 0.0, 1.0));
