@@ -1,6 +1,10 @@
 #include "dspbr/scene/components.h"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
+
+#include "dspbr/material_params.h"
 
 namespace dspbr {
 
@@ -54,6 +58,32 @@ uint32_t active_components(const Material& m) {
   if (volume && std::isfinite(m.attenuationDistance) && m.attenuationColor.min_component() < 1) mask |= kVolumeAbsorption;
   if (volume && m.subsurfaceColor.max_component() > 0) mask |= kVolumeScattering;
   if ((mask & kVolumetricTransparent) && m.abbeNumber > 0) mask |= kDispersion;
+  return mask;
+}
+
+uint32_t active_components(const Material& m, const std::vector<std::string>& scaled_by_texture) {
+  std::vector<std::string> ids;  // float / colour parameters only, each once
+  for (const auto& id : scaled_by_texture) {
+    ParamKind kind;
+    try {
+      kind = material_parameter_kind(id);
+    } catch (const std::invalid_argument&) {
+      continue;
+    }
+    if ((kind == ParamKind::Float || kind == ParamKind::Color) && std::find(ids.begin(), ids.end(), id) == ids.end())
+      ids.push_back(id);
+  }
+  if (ids.size() > 20) throw std::invalid_argument("active_components: too many textured parameters");
+  uint32_t mask = 0;
+  for (uint32_t corner = 0; corner < (1u << ids.size()); ++corner) {
+    Material c = m;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      if (!(corner >> i & 1u)) continue;  // bit set: this parameter at its lower end, 0
+      const bool color = material_parameter_kind(ids[i]) == ParamKind::Color;
+      set_material_parameter(c, ids[i], color ? nlohmann::json::array({0.0, 0.0, 0.0}) : nlohmann::json(0.0));
+    }
+    mask |= active_components(c);
+  }
   return mask;
 }
 

@@ -36,6 +36,13 @@ std::vector<std::string> component_names(uint32_t mask);
 // Components whose weight is non-zero for this (untextured) material.
 uint32_t active_components(const Material& m);
 
+// Components whose weight can be non-zero somewhere on a textured material: `m` holds the values
+// where the textures are 1, and each parameter in `scaled_by_texture` (float or colour ids, e.g.
+// "metallic", "sheenColor") may take any value between 0 and its value in `m` (glTF textures
+// multiply their factors). Other ids (normals, booleans, enums) are ignored. Every component's
+// activity is monotone in each parameter, so the union over the 2^k corners of that box is exact.
+uint32_t active_components(const Material& m, const std::vector<std::string>& scaled_by_texture);
+
 // LUT tables (names as in the LUT issue, canonical order) the active components need.
 std::vector<std::string> tables_for_components(uint32_t mask);
 

@@ -1,11 +1,100 @@
 #include "dspbr/scene/scene_analysis.h"
 
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
+
+#include "dspbr/gltf/gltf_file.h"
+#include "dspbr/gltf/gltf_material.h"
+#include "dspbr/params/material_instance.h"
+#include "dspbr/params/param_defs.h"
+#include "dspbr/scene/components.h"
 
 namespace dspbr {
 
-std::vector<std::string> tables_for_scene(const std::string& path) {
-  throw std::runtime_error("scene analysis is not implemented yet (" + path + ")");
+namespace {
+
+using Json = nlohmann::json;
+
+bool has_primitive_without_material(const Json& doc) {
+  if (!doc.contains("meshes") || !doc["meshes"].is_array()) return false;
+  for (const auto& mesh : doc["meshes"]) {
+    if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+    for (const auto& prim : mesh["primitives"])
+      if (prim.is_object() && !prim.contains("material")) return true;
+  }
+  return false;
 }
+
+void finish(MaterialAnalysis& a, SceneAnalysis& s) {
+  a.components = active_components(a.material, a.textured);
+  a.tables = tables_for_components(a.components);
+  s.components |= a.components;
+}
+
+}  // namespace
+
+SceneAnalysis analyze_scene(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open the scene file");
+  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  SceneAnalysis s;
+  s.path = path;
+  const bool glb = bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
+  Json doc;
+  if (!glb) {
+    try {
+      doc = Json::parse(bytes.begin(), bytes.end());
+    } catch (const Json::parse_error& e) {
+      throw std::runtime_error(path + ": malformed JSON: " + e.what());
+    }
+  }
+  if (!glb && doc.is_object() && doc.contains("material") && !doc.contains("asset")) {
+    // A material instance file.
+    const ParamDefs defs = ParamDefs::load(default_params_path());
+    MaterialAnalysis a;
+    a.name = doc["material"].is_string() ? doc["material"].get<std::string>() : "material";
+    try {
+      a.material = material_from_instance(defs, doc);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(path + ": " + e.what());
+    }
+    finish(a, s);
+    s.materials.push_back(std::move(a));
+  } else {
+    const gltf::GltfFile file = gltf::parse_gltf(bytes, path);
+    s.warnings = file.warnings;
+    for (auto& g : gltf::map_materials(file)) {
+      MaterialAnalysis a;
+      a.name = g.name;
+      a.material = g.material;
+      // Only textures that scale their factor widen the range to [0, factor].
+      for (const auto& t : g.textures) {
+        if (t.multiplies && !t.parameter.empty()) a.textured.push_back(t.parameter);
+        a.texture_sources.push_back((t.parameter.empty() ? std::string("(no DSPBR parameter)") : t.parameter) + " <- " +
+                                    t.source + " (texture " + std::to_string(t.texture) + ")");
+      }
+      a.notes = g.notes;
+      finish(a, s);
+      a.textured = g.textured_parameters();
+      s.materials.push_back(std::move(a));
+    }
+    if (has_primitive_without_material(file.json)) {
+      // glTF 2.0 default material: base colour 1, metallic 1, roughness 1, no emission.
+      MaterialAnalysis a;
+      a.name = "(default material)";
+      a.material.metallic = 1;
+      a.material.roughness = 1;
+      a.material.emissionValue = 0;
+      finish(a, s);
+      s.materials.push_back(std::move(a));
+    }
+  }
+  s.tables = tables_for_components(s.components);
+  return s;
+}
+
+std::vector<std::string> tables_for_scene(const std::string& path) { return analyze_scene(path).tables; }
 
 }  // namespace dspbr

@@ -1,0 +1,33 @@
+// Reading a glTF 2.0 asset: .gltf (JSON) or .glb (binary container: 12-byte header, JSON chunk,
+// optional BIN chunk; glTF 2.0 spec section "GLB File Format Specification"). Only what material
+// analysis needs is kept: the JSON document and the size of every buffer. Geometry and images are
+// not decoded; buffers that bufferViews use must exist and be large enough.
+#pragma once
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace dspbr::gltf {
+
+struct GltfFile {
+  std::string path;
+  nlohmann::json json;                    // the glTF JSON document
+  std::vector<std::uint64_t> buffer_sizes;  // bytes available for each entry of "buffers"
+  bool binary = false;                    // read from .glb
+  // Non-fatal findings, e.g. a buffer file that is a Git LFS pointer (content not fetched):
+  // materials are unaffected, geometry is unavailable.
+  std::vector<std::string> warnings;
+};
+
+// Reads and checks a .gltf or .glb file (chosen by the file's magic, not its name). Throws
+// std::runtime_error "<path>: <problem>" for an unreadable file, malformed JSON, a bad GLB header
+// or chunk (magic, version, lengths), a missing or short buffer referenced by a bufferView, or a
+// bufferView / accessor outside its buffer. A buffer file that is a Git LFS pointer announcing at
+// least byteLength bytes is accepted with a warning (materials do not need the geometry).
+GltfFile read_gltf(const std::string& path);
+
+// Same from bytes in memory; `path` names the asset in messages and locates external buffers.
+GltfFile parse_gltf(const std::vector<std::uint8_t>& bytes, const std::string& path);
+
+}  // namespace dspbr::gltf
