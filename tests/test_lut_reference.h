@@ -27,13 +27,17 @@ double integrate_unit_square(F&& f, int panels_x, int panels_y, int order = 8) {
 // r -> 0), unlike (mu_l, phi). Only phi in [0, pi] is integrated (the integrands are even in phi).
 template <class G>
 double ggx_half_vector_integral(double alpha, G&& g, int panels_u, int panels_phi) {
+  // w = s^3 grades the nodes towards w = 0 (strongly tilted normals), where the reflected
+  // direction crosses the horizon and the integrand has a kink.
   return integrate_unit_square(
-      [&](double w, double t) {
+      [&](double s, double t) {
+        const double w = s * s * s;
         const double phi = kPi * t;
-        const double rho = std::sqrt(std::max(0.0, 1.0 - w * w)) / w;  // u / (1 - u) = (1 - w^2) / w^2
         if (w == 0) return 0.0;
+        const double rho = std::sqrt(std::max(0.0, 1.0 - w * w)) / w;  // u / (1 - u) = (1 - w^2) / w^2
         const Vec3 h = normalize(Vec3{-alpha * rho * std::cos(phi), -alpha * rho * std::sin(phi), 1.0});
-        return 2.0 * w * g(h) * kPi / (2.0 * kPi) * 2.0;  // du = 2w dw; dphi = pi dt; both halves of phi
+        // du = 2w dw, dw = 3 s^2 ds; dphi = pi dt; both halves of phi; measure du dphi / (2 pi)
+        return 3.0 * s * s * 2.0 * w * g(h) * kPi / (2.0 * kPi) * 2.0;
       },
       panels_u, panels_phi);
 }
@@ -88,6 +92,17 @@ template <class Brdf>
 double sheen_albedo_quad(double mu, Brdf&& brdf, int panels_mu = 64, int panels_phi = 32) {
   const Vec3 v{std::sqrt(1 - mu * mu), 0, mu};
   return hemisphere_integral([&](const Vec3& l) { return brdf(v, l) * l.z; }, panels_mu, panels_phi);
+}
+
+}  // namespace dspbr::lutref
+
+namespace dspbr::lutref {
+
+// 2 Integral_0^1 E(mu) mu dmu by composite Gauss-Legendre in mu.
+template <class E>
+double cosine_average(E&& e, int panels = 24) {
+  static const QuadratureRule rule = gauss_legendre(8);
+  return integrate_gl([&](double mu) { return 2.0 * e(mu) * mu; }, 0.0, 1.0, panels, rule);
 }
 
 }  // namespace dspbr::lutref

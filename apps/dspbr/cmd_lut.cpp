@@ -27,6 +27,7 @@ namespace fs = std::filesystem;
 struct LutArgs {
   std::string out;
   std::string tables;  // comma-separated; empty: all
+  bool tables_given = false;
   std::vector<std::string> sizes;
   std::string grid = "cell";
   std::string formats = "exr,hpp,json";
@@ -69,14 +70,14 @@ std::vector<int> parse_dims(const std::string& s, const std::string& what) {
 
 LutOptions to_options(const LutArgs& a) {
   LutOptions opt;
-  if (!a.scene.empty() && !a.tables.empty()) throw UsageError("use either --tables or --scene, not both");
+  if (!a.scene.empty() && a.tables_given) throw UsageError("use either --tables or --scene, not both");
   if (!a.scene.empty()) {
     try {
       opt.tables = tables_for_scene(a.scene);
     } catch (const std::exception& e) {
       throw UsageError(std::string("--scene: ") + e.what());
     }
-  } else if (!a.tables.empty()) {
+  } else if (a.tables_given) {
     opt.tables.clear();
     for (const std::string& t : split(a.tables, ',')) {
       if (!is_lut_table_name(t))
@@ -237,8 +238,8 @@ void add_lut_command(CLI::App& app) {
       "lut",
       "Generate the DSPBR energy-compensation tables (EXR, pbrlut.hpp, dspbr_luts.json); see docs/luts.md");
   cmd->add_option("--out", args->out, "Output folder (created when missing)");
-  cmd->add_option("--tables", args->tables,
-                  "Comma-separated tables: GGX_E,GGX_E_avg,Base_E,Base_E_avg,Sheen_E,Sheen_ash_E (default: all)");
+  auto* tables_opt = cmd->add_option(
+      "--tables", args->tables, "Comma-separated tables: GGX_E,GGX_E_avg,Base_E,Base_E_avg,Sheen_E,Sheen_ash_E (default: all)");
   cmd->add_option("--scene", args->scene, "Generate only the tables the materials of this scene (.gltf/.glb/.json) need");
   cmd->add_option("--size", args->sizes,
                   "Per-table resolution NAME=SIZE, slowest axis first, e.g. GGX_E=64x64, Base_E=16x32x32 (repeatable)");
@@ -260,7 +261,8 @@ void add_lut_command(CLI::App& app) {
   cmd->add_flag("--bench", args->bench,
                 "Measure wall time vs max error for a range of sample budgets per table and integrator "
                 "(prints a Markdown table; writes no files)");
-  cmd->callback([args] {
+  cmd->callback([args, tables_opt] {
+    args->tables_given = tables_opt->count() > 0;
     if (args->bench) run_bench(*args);
     else run_generate(*args);
   });

@@ -20,11 +20,10 @@ constexpr double kPi = 3.14159265358979323846;
 // Runs settings.randomizations replicates in lockstep, calling f(u, acc) per point with
 // u[0..dims) uniform on [0,1)^dims (scrambled Sobol' for Qmc, Pcg32 for Mc); f adds the K
 // integrand weights of the point to acc. Points per replicate: samples / randomizations, or
-// fewer when settings.target_error > 0: the count doubles from kFirstStage until the standard
-// error of every one of the K means is at most target_error. The stopping rule depends only on
-// the cell's own numbers, so results stay independent of threads. Returns the K means of every
-// replicate.
-constexpr uint32_t kFirstStage = 1024;
+// fewer when settings.target_error > 0: the count doubles from min_samples / randomizations
+// until the standard error of every one of the K means is at most target_error. The stopping
+// rule depends only on the cell's own numbers, so results stay independent of threads. Returns
+// the K means of every replicate.
 
 template <int K, class F>
 std::vector<std::array<double, K>> replicate_means(const IntegratorSettings& s, uint64_t stream, int dims, F&& f) {
@@ -42,7 +41,8 @@ std::vector<std::array<double, K>> replicate_means(const IntegratorSettings& s, 
   }
   double u[ScrambledSobol::kMaxDims];
   uint32_t done = 0;
-  uint32_t target = s.target_error > 0 ? std::min(n_max, kFirstStage) : n_max;
+  const uint32_t n_min = uint32_t(std::max(1, s.min_samples / R));
+  uint32_t target = s.target_error > 0 ? std::min(n_max, n_min) : n_max;
   while (true) {
     for (int r = 0; r < R; ++r) {
       std::array<double, K>& acc = sums[size_t(r)];
@@ -179,14 +179,18 @@ std::vector<std::array<double, 2>> ggx_avg_moments(double r, const IntegratorSet
 
 // E(mu; r, f0) from the moments A = E_m, B = Schlick moment and E_m,avg:
 // f0 A + (1 - f0) B + F_ms(f0, 1; E_m,avg) (1 - A).
+// E_m,avg is clamped to >= kMinEAvg: F_ms's denominator (1 - F_avg) + F_avg E_avg vanishes for
+// F_avg = 1 and E_avg -> 0, which only an estimate can reach (the plain MC baseline at r -> 0,
+// where it cannot sample the spike); the exact E_m,avg is above 0.4 for every r in [0, 1].
+constexpr double kMinEAvg = 1e-12;
 double base_from_moments(double f0, double A, double B, double e_m_avg) {
-  return f0 * A + (1.0 - f0) * B + fresnel_ms(f0, 1.0, e_m_avg) * (1.0 - A);
+  return f0 * A + (1.0 - f0) * B + fresnel_ms(f0, 1.0, std::max(e_m_avg, kMinEAvg)) * (1.0 - A);
 }
 
 // d F_ms / d E_avg = Fa^2 (1 - Fa) / (1 - Fa (1 - E_avg))^2, for error propagation.
 double fresnel_ms_derivative(double f0, double e_avg) {
   const double fa = fresnel_avg(f0, 1.0);
-  const double d = 1.0 - fa * (1.0 - e_avg);
+  const double d = 1.0 - fa * (1.0 - std::max(e_avg, kMinEAvg));
   return fa * fa * (1.0 - fa) / (d * d);
 }
 
