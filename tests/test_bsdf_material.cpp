@@ -453,3 +453,63 @@ TEST(BsdfMaterial, RandomMaterialsStayFinite) {
     }
   }
 }
+
+TEST(BsdfMaterial, SmoothGlassSplitsEnergyExactly) {
+  // Roughness 0, s = 1, white: the delta reflectance F_d and transmittance 1 - F_d add up to 1 from
+  // both sides, including total internal reflection inside (F_d = 1); thin-walled: F + (1 - F) = 1.
+  for (bool thin : {false, true})
+    for (double theta : {0.0, 30.0, 50.0, 80.0})
+      for (double side : {1.0, -1.0}) {
+        Material m;
+        m.transparency = 1;
+        m.thinWalled = thin;
+        m.ior = 1.5;
+        const MaterialBsdf b = make(m);
+        Vec3 v = dir_from_angles(theta, 20);
+        v.z *= side;
+        const int n = 2000;
+        double total = 0;
+        for (int k = 0; k < n; ++k) {
+          const BsdfSample s = b.sample(v, {(k + 0.5) / n, 0.5, 0.5});
+          if (s.valid) total += s.weight.g / n;
+        }
+        EXPECT_NEAR(total, 1.0, 1e-3) << thin << " " << theta << " " << side;
+        EXPECT_NEAR(b.delta_probability(v), 1.0, 1e-15);
+      }
+}
+
+TEST(BsdfMaterial, OpaqueFlakeReplacesTheLayersBelow) {
+  Material m;
+  m.albedo = Rgb(0.2, 0.3, 0.8);
+  m.roughness = 0.5;
+  m.sheenColor = Rgb(0.5);
+  m.flakeCoverage = 1;  // every flake opaque
+  m.flakeSize = 0.2;
+  m.flakeRoughness = 0.4;
+  m.flakeColor = Rgb(0.9, 0.7, 0.1);
+  BsdfOptions o;
+  o.position = {0.123, 0.456, 0.0};
+  const MaterialBsdf all = make(m, o);
+  const auto flakes_only = make_component_bsdf("flakes", m, bsdf_luts(), o);
+  Pcg32 rng(4, 0);
+  int nonzero = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const Vec3 v = dir_from_angles(30, 0), l = random_dir(rng);
+    const Rgb a = all.eval(v, l), b = flakes_only->eval(v, l);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(a[c], b[c]);
+    if (a.g > 0) {
+      ++nonzero;
+      EXPECT_NEAR(a.r / a.g, 0.9 / 0.7, 1e-12);  // the flake colour, not the albedo (flipFlop = 0)
+    }
+  }
+  EXPECT_GT(nonzero, 0);
+  // The flake's cone reflects its colour: Monte Carlo albedo ~ rho_f (times ~|l.z|) <= rho_f.
+  const Vec3 v = dir_from_angles(30, 0);
+  Rgb albedo(0);
+  for (int k = 0; k < 4000; ++k) {
+    const BsdfSample s = all.sample(v, {rng.next_double(), rng.next_double(), rng.next_double()});
+    if (s.valid) albedo += s.weight * (1.0 / 4000);
+  }
+  EXPECT_GT(albedo.g, 0.0);
+  EXPECT_LE(albedo.g, 0.7 + 1e-9);
+}
