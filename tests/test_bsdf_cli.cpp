@@ -114,3 +114,11 @@ TEST(BsdfCli, BadInputIsAOneLineUsageError) {
   // A missing required option is CLI11's usage error: non-zero exit.
   EXPECT_NE(run_dspbr("eval --view 0,0,1").status, 0);
 }
+
+TEST(BsdfCli, OtherMaterialTypesLoadThroughTheirDefinitions) {
+  // A "glass" instance (params-2025x.json subtype): its defaults make a volumetric transparent material.
+  const Json j = run_json("eval --material " DSPBR_SOURCE_DIR "/tests/data/params/glass_ok.json --view 0,0.5,1 --light 0,-0.5,-1");
+  ASSERT_TRUE(j.contains("components"));
+  EXPECT_EQ(j["components"], Json::array({"volumetric_transparent"}));
+  EXPECT_GT(j["f"][1].get<double>(), 0.0);
+}
