@@ -1,11 +1,131 @@
-// `dspbr validate`: placeholder until its issue lands.
+// `dspbr validate`: the validation suite (white furnace, reciprocity, chi-square sampling tests,
+// stability sweeps, table accuracy, furnace spheres) and its HTML report.
+//   dspbr validate --out DIR           full run (minutes)
+//   dspbr validate --quick --out DIR   reduced sample counts and cases (seconds; run by CTest)
+// Writes DIR/data/report.json and DIR/images/ (C++), then DIR/index.html and DIR/plots/ through
+// scripts/report/make_report.py (matplotlib + jinja2).
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fmt/format.h>
+#include <string>
+
 #include "commands.h"
+#include "dspbr/lut/lut_set.h"
+#include "dspbr/validate/catalog.h"
+#include "dspbr/validate/suite.h"
 
 namespace dspbr::cli {
 
+namespace {
+
+struct ValidateArgs {
+  std::string out = "report";
+  bool quick = false;
+  uint64_t seed = 1;
+  std::string luts;  // empty: the built-in tables
+  std::string python = "/usr/bin/python3";
+  bool html = true;
+  bool allow_failures = false;
+};
+
+// Single-quote a string for /bin/sh.
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+void run_validate(const ValidateArgs& a) {
+  namespace fs = std::filesystem;
+  if (a.out.empty()) throw UsageError("--out must name a folder");
+  std::error_code ec;
+  fs::create_directories(a.out, ec);
+  if (ec || !fs::is_directory(a.out))
+    throw UsageError("cannot create the output folder '" + a.out + "': " + (ec ? ec.message() : "not a folder"));
+  const std::string script = std::string(DSPBR_SOURCE_DIR) + "/scripts/report/make_report.py";
+  if (a.html && !fs::exists(script)) throw std::runtime_error("report script not found: " + script);
+
+  validate::SuiteSettings s = validate::SuiteSettings::defaults(a.quick);
+  s.seed = a.seed;
+  validate::CatalogOptions co;
+  co.quick = a.quick;
+  co.seed = a.seed;
+  co.random_materials = a.quick ? 20 : 2000;
+  validate::Catalog cat = validate::dspbr_catalog(co);
+
+  const LutSet* luts = nullptr;
+  LutSet loaded;
+  if (!a.luts.empty()) {
+    try {
+      loaded = LutSet::load(a.luts);
+    } catch (const std::exception& e) {
+      throw UsageError(std::string("--luts: ") + e.what());
+    }
+    luts = &loaded;
+  } else {
+    try {
+      luts = &LutSet::builtin();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "dspbr validate: tables skipped: %s\n", e.what());
+    }
+  }
+
+  std::fprintf(stderr, "dspbr validate (%s): %zu cases, %zu stability corners, %zu furnace rows -> %s\n",
+               a.quick ? "quick" : "full", cat.cases.size(), cat.stability.size(), cat.furnace_rows.size(),
+               a.out.c_str());
+  const validate::SuiteResult r = validate::run_suite(cat, luts, s, a.out);
+
+  if (a.html) {
+    const std::string cmd = shell_quote(a.python) + " " + shell_quote(script) + " " + shell_quote(a.out);
+    const int st = std::system(cmd.c_str());
+    const int rc = (st != -1 && WIFEXITED(st)) ? WEXITSTATUS(st) : -1;
+    if (rc != 0)
+      throw std::runtime_error(fmt::format("the report script failed (exit status {}): {}\n  (the data is in {}/data/report.json)",
+                                           rc, cmd, a.out));
+  }
+
+  // Summary on stdout.
+  std::printf("validation (%s run, seed %llu): report in %s/%s\n", a.quick ? "quick" : "full",
+              static_cast<unsigned long long>(a.seed), a.out.c_str(), a.html ? "index.html" : "data/report.json");
+  for (const auto& c : r.report["summary"])
+    std::printf("  %-58s %4d / %-4d passed\n", c["check"].get<std::string>().c_str(), c["passed"].get<int>(),
+                c["total"].get<int>());
+  const auto& skipped = r.report["skipped"];
+  std::size_t shown = 0;
+  for (const auto& sk : skipped) {
+    const std::string line = sk.get<std::string>();
+    if (line.rfind("stability random", 0) == 0) continue;  // counted below
+    std::printf("  skipped: %s\n", line.c_str());
+    ++shown;
+  }
+  if (skipped.size() > shown) std::printf("  skipped: %zu rejected random materials\n", skipped.size() - shown);
+  if (a.quick)
+    std::printf("  quick run: fewer cases, directions and samples than the full run (see the report's settings)\n");
+  for (const std::string& f : r.failures) std::printf("  FAILED %s\n", f.c_str());
+  if (r.failed_checks > 0 && !a.allow_failures)
+    throw std::runtime_error(fmt::format("{} validation check(s) failed (listed above; details in {}/index.html)",
+                                         r.failed_checks, a.out));
+}
+
+}  // namespace
+
 void add_validate_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("validate", "(not implemented yet)");
-  cmd->callback([] { throw std::runtime_error("'validate' is not implemented yet"); });
+  auto args = std::make_shared<ValidateArgs>();
+  auto* cmd = app.add_subcommand(
+      "validate",
+      "Validation suite: white furnace, reciprocity, chi-square sampling tests, stability sweeps, table accuracy, "
+      "furnace spheres; writes an HTML report");
+  cmd->add_option("--out", args->out, "Output folder (index.html, images/, plots/, data/)")->capture_default_str();
+  cmd->add_flag("--quick", args->quick, "Reduced run (seconds): fewer cases, directions and samples");
+  cmd->add_option("--seed", args->seed, "Seed of every random stream (same seed -> same report)")->capture_default_str();
+  cmd->add_option("--luts", args->luts, "Table file to check instead of the built-in luts/dspbr_luts.json");
+  cmd->add_option("--python", args->python, "Python interpreter with numpy, matplotlib and jinja2")->capture_default_str();
+  cmd->add_flag("--no-html", [args](int64_t) { args->html = false; }, "Write only the data (data/report.json, images/)");
+  cmd->add_flag("--allow-failures", args->allow_failures, "Exit with status 0 even when checks fail");
+  cmd->callback([args] { run_validate(*args); });
 }
 
 }  // namespace dspbr::cli

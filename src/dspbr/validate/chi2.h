@@ -19,7 +19,8 @@ namespace dspbr::validate {
 struct Chi2Settings {
   std::size_t samples = 1000000;
   int theta_bins = 90;          // over [0, pi]; phi gets 2 * theta_bins bins over [0, 2 pi)
-  int integration_order = 5;    // Gauss-Legendre nodes per bin and dimension for the expected counts
+  int integration_order = 4;    // Gauss-Legendre nodes per cell and dimension for the expected counts
+  int max_depth = 4;            // adaptive refinement levels (each splits a cell into 4)
   double min_expected = 5.0;    // pooling threshold
   double significance = 0.01;   // family-wise level before the Sidak correction
   int num_tests = 1;            // m in the Sidak correction (tests in the whole run)

@@ -57,6 +57,7 @@ ReciprocityResult reciprocity_check(const Bsdf& bsdf, const ReciprocitySettings&
       const double ev2 = s.eta_above * s.eta_above, el2 = s.eta_below * s.eta_below;
       accumulate(r.transmission_eta2, v, l, fvl / ev2, flv / el2, s.floor);
       accumulate(r.transmission_plain, v, l, fvl, flv, s.floor);
+      accumulate(r.transmission_adjoint, v, l, fvl / el2, flv / ev2, s.floor);
     }
   }
   return r;

@@ -26,6 +26,8 @@ struct ReciprocityResult {
   ReciprocityStats reflection_lower;     // v.z < 0, l.z < 0 (volumetric: viewer inside)
   ReciprocityStats transmission_eta2;    // opposite sides, eta^2 rule
   ReciprocityStats transmission_plain;   // opposite sides, plain symmetry (for information)
+  ReciprocityStats transmission_adjoint; // opposite sides, f(v,l) / eta_l^2 = f(l,v) / eta_v^2 (the
+                                         // adjoint rule: eta^2 of the light's medium in f(v, l))
 };
 
 struct ReciprocitySettings {

@@ -35,7 +35,11 @@ void check_sample(const Bsdf& bsdf, const Vec3& v, const Vec3& u, double bound, 
     const double w = s.weight[c];
     classify(st, w);
     if (std::isfinite(w)) {
-      st.max_weight = std::max(st.max_weight, w);
+      if (w > st.max_weight) {
+        st.max_weight = w;
+        st.max_weight_v = v;
+        st.max_weight_u = u;
+      }
       if (w > bound) ++st.above_bound;
     }
   }
@@ -53,7 +57,11 @@ StabilityCounts& StabilityCounts::operator+=(const StabilityCounts& o) {
   negative += o.negative;
   above_bound += o.above_bound;
   bad_direction += o.bad_direction;
-  max_weight = std::max(max_weight, o.max_weight);
+  if (o.max_weight > max_weight) {
+    max_weight = o.max_weight;
+    max_weight_v = o.max_weight_v;
+    max_weight_u = o.max_weight_u;
+  }
   return *this;
 }
 

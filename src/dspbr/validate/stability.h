@@ -15,7 +15,10 @@ struct StabilityCounts {
   std::size_t nan = 0, inf = 0, negative = 0, above_bound = 0;
   std::size_t bad_direction = 0;  // valid sample with |l| not 1 (tolerance 1e-6)
   double max_weight = 0;          // largest sample-weight component seen
-  std::size_t total_failures() const { return nan + inf + negative + above_bound + bad_direction; }
+  Vec3 max_weight_v, max_weight_u;  // where (viewer direction, random numbers)
+  // NaN, Inf, negative values and bad directions are errors; weights above the bound are fireflies
+  // (unbiased, but a sampling density badly matched to f |cos|): reported separately.
+  std::size_t total_failures() const { return nan + inf + negative + bad_direction; }
   StabilityCounts& operator+=(const StabilityCounts& o);
 };
 

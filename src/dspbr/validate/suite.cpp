@@ -1,0 +1,515 @@
+#include "dspbr/validate/suite.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+
+#include "dspbr/io/atomic_file.h"
+#include "dspbr/progress.h"
+#include "dspbr/validate/furnace_image.h"
+
+namespace dspbr::validate {
+
+using nlohmann::json;
+
+namespace {
+
+json rgb_json(const Rgb& c) { return json::array({c.r, c.g, c.b}); }
+json vec_json(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+Vec3 view_dir(double c) { return {std::sqrt(std::max(0.0, 1.0 - c * c)), 0.0, c}; }
+
+const char* claim_name(EnergyClaim c) {
+  switch (c) {
+    case EnergyClaim::Preserving: return "preserving";
+    case EnergyClaim::GainsBySpec: return "gains_by_spec";
+    default: return "conserving";
+  }
+}
+
+// Verdict bookkeeping: per check name, counts and failure lines.
+struct Verdicts {
+  std::map<std::string, std::pair<int, int>> counts;  // name -> (passed, total)
+  std::vector<std::string> failures;
+  void add(const std::string& check, bool ok, const std::string& what) {
+    auto& c = counts[check];
+    ++c.second;
+    if (ok) ++c.first;
+    else failures.push_back(check + ": " + what);
+  }
+};
+
+// ---------------------------------------------------------------- white furnace
+
+json run_energy(const Catalog& cat, const SuiteSettings& s, Verdicts& verdicts) {
+  struct Item { std::size_t c; double cos; };
+  std::vector<Item> items;
+  for (std::size_t c = 0; c < cat.cases.size(); ++c) {
+    for (double x : s.furnace_cos) items.push_back({c, x});
+    if (cat.cases[c].viewer_below)
+      for (double x : s.furnace_cos) items.push_back({c, -x});
+  }
+  struct Out { AlbedoEstimate eval; SampledAlbedo sampled; EnergyVerdict verdict; };
+  std::vector<Out> out(items.size());
+  Progress progress("white furnace", items.size(), s.progress && Progress::stderr_is_terminal());
+  tbb::parallel_for(std::size_t(0), items.size(), [&](std::size_t i) {
+    const BsdfCase& bc = cat.cases[items[i].c];
+    const Vec3 v = view_dir(items[i].cos);
+    EnergyTolerances tol = s.energy;
+    if (bc.preservation_tol >= 0) tol.preservation = bc.preservation_tol;
+    out[i].eval = albedo_eval(*bc.bsdf, v, s.furnace_strata, s.seed, 2 * i);
+    out[i].sampled = albedo_sampled(*bc.bsdf, v, s.furnace_samples, s.seed, 2 * i + 1);
+    out[i].verdict = judge_energy(out[i].eval, out[i].sampled, tol);
+    progress.add();
+  });
+  progress.finish();
+  json rows = json::array();
+  std::vector<json> per_case(cat.cases.size());
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const BsdfCase& bc = cat.cases[items[i].c];
+    const Out& o = out[i];
+    const double n = double(o.sampled.total.samples);
+    rows.push_back({{"case", bc.name}, {"cos", items[i].cos},
+                    {"eval", rgb_json(o.eval.value)}, {"eval_se", rgb_json(o.eval.std_error)},
+                    {"sampled", rgb_json(o.sampled.total.value)}, {"sampled_se", rgb_json(o.sampled.total.std_error)},
+                    {"non_delta", rgb_json(o.sampled.non_delta.value)},
+                    {"invalid_fraction", n > 0 ? double(o.sampled.invalid) / n : 0.0},
+                    {"conserving", o.verdict.conserving}, {"preserving", o.verdict.preserving},
+                    {"estimators_agree", o.verdict.estimators_agree}});
+    json& pc = per_case[items[i].c];
+    const double lo = o.verdict.albedo_min, hi = o.verdict.albedo_max;
+    if (pc.is_null()) pc = {{"min", lo}, {"max", hi}, {"conserving", true}, {"preserving", true}, {"agree", true}};
+    pc["min"] = std::min(pc["min"].get<double>(), lo);
+    pc["max"] = std::max(pc["max"].get<double>(), hi);
+    const std::string where = fmt::format("{} at cos={}", bc.name, items[i].cos);
+    if (!o.verdict.conserving) pc["conserving"] = false;
+    if (!o.verdict.preserving) pc["preserving"] = false;
+    if (!o.verdict.estimators_agree) pc["agree"] = false;
+    verdicts.add("furnace: estimators agree", o.verdict.estimators_agree,
+                 fmt::format("{}: eval {:.5f} vs sampled (non-delta) {:.5f}", where, o.eval.value.max_component(),
+                             o.sampled.non_delta.value.max_component()));
+    if (bc.claim != EnergyClaim::GainsBySpec)
+      verdicts.add("furnace: conservation (E <= 1 + tol)", o.verdict.conserving,
+                   fmt::format("{}: albedo {:.5f}", where, hi));
+    if (bc.claim == EnergyClaim::Preserving)
+      verdicts.add("furnace: preservation where claimed (E >= 1 - tol)", o.verdict.preserving,
+                   fmt::format("{}: albedo {:.5f}", where, lo));
+  }
+  json cases = json::array();
+  for (std::size_t c = 0; c < cat.cases.size(); ++c) {
+    const BsdfCase& bc = cat.cases[c];
+    json j = per_case[c];
+    j["case"] = bc.name;
+    j["component"] = bc.component;
+    j["params"] = bc.params;
+    j["claim"] = claim_name(bc.claim);
+    j["preservation_tol"] = bc.preservation_tol >= 0 ? bc.preservation_tol : s.energy.preservation;
+    j["note"] = bc.note;
+    j["flags"] = bc.bsdf->flags();
+    cases.push_back(j);
+  }
+  return {{"tolerances", {{"conservation", s.energy.conservation}, {"preservation", s.energy.preservation},
+                          {"sigmas", s.energy.sigmas}, {"agreement_abs", s.energy.agreement_abs}}},
+          {"eval_directions", 2 * s.furnace_strata * s.furnace_strata},
+          {"samples", s.furnace_samples}, {"cos", s.furnace_cos}, {"rows", rows}, {"cases", cases}};
+}
+
+// ---------------------------------------------------------------- reciprocity
+
+json stats_json(const ReciprocityStats& st) {
+  return {{"pairs", st.pairs}, {"max_rel_dev", st.max_rel_dev}, {"worst_v", vec_json(st.worst_v)},
+          {"worst_l", vec_json(st.worst_l)}, {"worst_f_vl", st.worst_a}, {"worst_f_lv", st.worst_b}};
+}
+
+json run_reciprocity(const Catalog& cat, const SuiteSettings& s, Verdicts& verdicts) {
+  std::vector<ReciprocityResult> res(cat.cases.size());
+  Progress progress("reciprocity", cat.cases.size(), s.progress && Progress::stderr_is_terminal());
+  tbb::parallel_for(std::size_t(0), cat.cases.size(), [&](std::size_t c) {
+    ReciprocitySettings rs;
+    rs.pairs = s.reciprocity_pairs;
+    rs.eta_above = cat.cases[c].eta_above;
+    rs.eta_below = cat.cases[c].eta_below;
+    rs.seed = s.seed + 1000003 * c;
+    res[c] = reciprocity_check(*cat.cases[c].bsdf, rs);
+    progress.add();
+  });
+  progress.finish();
+  json arr = json::array();
+  for (std::size_t c = 0; c < cat.cases.size(); ++c) {
+    const BsdfCase& bc = cat.cases[c];
+    const ReciprocityResult& r = res[c];
+    const double refl = std::max(r.reflection_upper.max_rel_dev, bc.viewer_below ? r.reflection_lower.max_rel_dev : 0.0);
+    const double trans = bc.adjoint_eta_rule ? r.transmission_adjoint.max_rel_dev : r.transmission_eta2.max_rel_dev;
+    const bool ok = (refl <= s.reciprocity_tol && trans <= s.reciprocity_tol);
+    if (!bc.non_reciprocal_by_design)
+      verdicts.add("reciprocity (reflection; eta^2 rule for refraction)", ok,
+                   fmt::format("{}: reflection {:.3g}, transmission ({} eta^2 rule) {:.3g}, (plain) {:.3g}", bc.name, refl,
+                               bc.adjoint_eta_rule ? "adjoint" : "radiance", trans, r.transmission_plain.max_rel_dev));
+    arr.push_back({{"case", bc.name}, {"component", bc.component}, {"eta_above", bc.eta_above},
+                   {"eta_below", bc.eta_below}, {"reflection_upper", stats_json(r.reflection_upper)},
+                   {"reflection_lower", stats_json(r.reflection_lower)},
+                   {"transmission_eta2", stats_json(r.transmission_eta2)},
+                   {"transmission_plain", stats_json(r.transmission_plain)},
+                   {"transmission_adjoint", stats_json(r.transmission_adjoint)},
+                   {"eta_rule", bc.adjoint_eta_rule ? "adjoint" : "radiance"}, {"passed", ok},
+                   {"non_reciprocal_by_design", bc.non_reciprocal_by_design},
+                   {"reason", bc.non_reciprocal_reason}});
+  }
+  return {{"pairs", s.reciprocity_pairs}, {"tolerance", s.reciprocity_tol}, {"cases", arr}};
+}
+
+// ---------------------------------------------------------------- chi-square
+
+json run_chi2(const Catalog& cat, const SuiteSettings& s, Verdicts& verdicts) {
+  struct Item { std::size_t c; double cos; };
+  std::vector<Item> items;
+  for (std::size_t c = 0; c < cat.cases.size(); ++c) {
+    if (!cat.cases[c].chi2) continue;
+    for (double x : s.chi2_cos) items.push_back({c, x});
+    if (cat.cases[c].viewer_below)
+      for (double x : s.chi2_cos_below) items.push_back({c, x});
+  }
+  // Histograms kept for a few tests spread over the list.
+  std::vector<bool> keep(items.size(), false);
+  for (std::size_t k = 0; k < std::min(s.chi2_histograms, items.size()); ++k)
+    keep[k * items.size() / std::min(s.chi2_histograms, items.size())] = true;
+  json tests = json::array(), hists = json::array();
+  Progress progress("chi-square", items.size(), s.progress && Progress::stderr_is_terminal());
+  for (std::size_t i = 0; i < items.size(); ++i) {  // each test is parallel inside
+    const BsdfCase& bc = cat.cases[items[i].c];
+    Chi2Settings cs = s.chi2;
+    cs.seed = s.seed;
+    cs.stream = i;
+    cs.num_tests = int(items.size());
+    cs.keep_histograms = keep[i];
+    const Chi2Result r = chi2_test(*bc.bsdf, view_dir(items[i].cos), cs);
+    progress.add();
+    const std::string where = fmt::format("{} at cos={}", bc.name, items[i].cos);
+    verdicts.add("sampling: chi-square goodness of fit", r.chi2_passed,
+                 fmt::format("{}: p = {:.3g} < {:.3g} (chi2 {:.1f}, dof {})", where, r.p_value, r.alpha, r.statistic, r.dof));
+    verdicts.add("sampling: no samples outside the pdf's support", r.support_passed,
+                 fmt::format("{}: {} outside, {} non-finite", where, r.outside_support, r.non_finite));
+    verdicts.add("sampling: pdf integrates to 1 - P(delta) - P(fail)", r.integral_passed,
+                 fmt::format("{}: integral {:.5f}, expected {:.5f} +- {:.5f}", where, r.pdf_integral,
+                             r.pdf_integral_expected, r.pdf_integral_tol));
+    verdicts.add("sampling: pdf and weight consistent with eval", r.consistency_passed,
+                 fmt::format("{}: {} pdf / {} weight mismatches (max rel dev {:.3g} / {:.3g})", where, r.pdf_mismatches,
+                             r.weight_mismatches, r.max_pdf_rel_dev, r.max_weight_rel_dev));
+    tests.push_back({{"case", bc.name}, {"component", bc.component}, {"cos", items[i].cos},
+                     {"statistic", r.statistic}, {"dof", r.dof}, {"p_value", r.p_value}, {"alpha", r.alpha},
+                     {"pooled_bins", r.pooled_bins}, {"samples", r.samples}, {"invalid", r.invalid},
+                     {"delta", r.delta}, {"outside_support", r.outside_support}, {"non_finite", r.non_finite},
+                     {"pdf_integral", r.pdf_integral}, {"pdf_integral_expected", r.pdf_integral_expected},
+                     {"pdf_integral_tol", r.pdf_integral_tol}, {"max_pdf_rel_dev", r.max_pdf_rel_dev},
+                     {"max_weight_rel_dev", r.max_weight_rel_dev}, {"chi2_passed", r.chi2_passed},
+                     {"support_passed", r.support_passed}, {"integral_passed", r.integral_passed},
+                     {"consistency_passed", r.consistency_passed}, {"passed", r.passed()}});
+    if (keep[i]) {
+      std::vector<float> o(r.observed.begin(), r.observed.end()), e(r.expected.begin(), r.expected.end());
+      hists.push_back({{"case", bc.name}, {"cos", items[i].cos}, {"theta_bins", r.theta_bins}, {"phi_bins", r.phi_bins},
+                       {"observed", o}, {"expected", e}, {"p_value", r.p_value}});
+    }
+  }
+  progress.finish();
+  return {{"samples", s.chi2.samples}, {"theta_bins", s.chi2.theta_bins}, {"phi_bins", 2 * s.chi2.theta_bins},
+          {"integration_order", s.chi2.integration_order}, {"min_expected", s.chi2.min_expected},
+          {"significance", s.chi2.significance}, {"num_tests", items.size()},
+          {"alpha_per_test", sidak_alpha(s.chi2.significance, int(items.size()))},
+          {"tests", tests}, {"histograms", hists}};
+}
+
+// ---------------------------------------------------------------- stability
+
+json run_stability(const Catalog& cat, const SuiteSettings& s, Verdicts& verdicts) {
+  std::vector<StabilityCounts> res(cat.stability.size());
+  Progress progress("stability", cat.stability.size(), s.progress && Progress::stderr_is_terminal());
+  tbb::parallel_for(std::size_t(0), cat.stability.size(), [&](std::size_t i) {
+    StabilitySettings ss = s.stability;
+    ss.seed = s.seed;
+    ss.stream = i;
+    res[i] = stability_scan(*cat.stability[i].bsdf, ss);
+    progress.add();
+  });
+  progress.finish();
+  // Per component, in order of first appearance; corners with failures listed.
+  std::vector<std::string> order;
+  std::map<std::string, StabilityCounts> per;
+  std::map<std::string, int> corners;
+  std::map<std::string, json> bad;
+  for (std::size_t i = 0; i < res.size(); ++i) {
+    const StabilityCase& sc = cat.stability[i];
+    if (!per.count(sc.component)) {
+      order.push_back(sc.component);
+      bad[sc.component] = json::array();
+    }
+    per[sc.component] += res[i];
+    ++corners[sc.component];
+    if (res[i].total_failures() > 0 || res[i].above_bound > 0)
+      bad[sc.component].push_back({{"corner", sc.corner}, {"nan", res[i].nan}, {"inf", res[i].inf},
+                                   {"negative", res[i].negative}, {"above_bound", res[i].above_bound},
+                                   {"bad_direction", res[i].bad_direction}, {"max_weight", res[i].max_weight},
+                                   {"max_weight_v", vec_json(res[i].max_weight_v)},
+                                   {"max_weight_u", vec_json(res[i].max_weight_u)}});
+  }
+  json arr = json::array();
+  for (const std::string& c : order) {
+    const StabilityCounts& t = per[c];
+    verdicts.add("stability: no NaN / Inf / negative values, unit directions", t.total_failures() == 0,
+                 fmt::format("{}: {} NaN, {} Inf, {} negative, {} bad directions", c, t.nan, t.inf, t.negative,
+                             t.bad_direction));
+    arr.push_back({{"component", c}, {"corners", corners[c]}, {"evaluations", t.evaluations}, {"nan", t.nan},
+                   {"inf", t.inf}, {"negative", t.negative}, {"above_bound", t.above_bound},
+                   {"bad_direction", t.bad_direction}, {"max_weight", t.max_weight}, {"failing_corners", bad[c]}});
+  }
+  return {{"weight_bound", s.stability.weight_bound}, {"random_directions", s.stability.random_directions},
+          {"components", arr}};
+}
+
+// ---------------------------------------------------------------- tables
+
+// Indices spread over [0, n): all when n <= k.
+std::vector<int> spread(int n, int k) {
+  std::vector<int> out;
+  if (n <= k) {
+    for (int i = 0; i < n; ++i) out.push_back(i);
+    return out;
+  }
+  for (int i = 0; i < k; ++i) out.push_back(int(std::lround(double(i) * (n - 1) / (k - 1))));
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// The table's own clamps (docs/luts.md): mu >= 1e-6, alpha_b >= 1e-3.
+RefValue table_reference(const std::string& name, const std::vector<double>& x, const RefQuadrature& q) {
+  auto mu = [](double m) { return std::max(m, 1e-6); };
+  auto ab = [](double a) { return std::max(a, 1e-3); };
+  if (name == "GGX_E") return ggx_albedo_ref(mu(x[1]), x[0], q);
+  if (name == "GGX_E_avg") return ggx_albedo_avg_ref(x[0], q);
+  if (name == "Base_E") return base_albedo_ref(mu(x[2]), x[1], x[0], q);
+  if (name == "Base_E_avg") return base_albedo_avg_ref(x[1], x[0], q);
+  if (name == "Sheen_E") return sheen_albedo_ref(mu(x[1]), ab(x[0]), false, q);
+  if (name == "Sheen_ash_E") return sheen_albedo_ref(mu(x[1]), ab(x[0]), true, q);
+  throw std::invalid_argument("no reference for table '" + name + "'");
+}
+
+json run_luts(const LutSet* luts, const SuiteSettings& s, Verdicts& verdicts) {
+  if (!luts) return {{"available", false}};
+  const Table* tables[] = {&luts->ggx_e, &luts->ggx_e_avg, &luts->base_e, &luts->base_e_avg, &luts->sheen_e,
+                           &luts->sheen_ash_e};
+  json arr = json::array();
+  for (const Table* t : tables) {
+    if (t->values.empty()) continue;
+    // Cells: a spread of indices per axis, all combinations.
+    std::vector<std::vector<int>> cells{{}};
+    for (const Axis& a : t->axes) {
+      std::vector<std::vector<int>> next;
+      for (const auto& c : cells)
+        for (int i : spread(a.size, s.lut_cells_per_axis)) {
+          auto d = c;
+          d.push_back(i);
+          next.push_back(d);
+        }
+      cells = next;
+    }
+    std::vector<RefValue> refs(cells.size());
+    Progress progress("tables: " + t->name, cells.size(), s.progress && Progress::stderr_is_terminal());
+    tbb::parallel_for(std::size_t(0), cells.size(), [&](std::size_t k) {
+      std::vector<double> x;
+      for (std::size_t a = 0; a < t->axes.size(); ++a) x.push_back(t->axes[a].coord(cells[k][a]));
+      refs[k] = table_reference(t->name, x, s.lut_quadrature);
+      progress.add();
+    });
+    progress.finish();
+    json jc = json::array();
+    double max_err = 0;
+    bool ok = true;
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      std::vector<double> x;
+      for (std::size_t a = 0; a < t->axes.size(); ++a) x.push_back(t->axes[a].coord(cells[k][a]));
+      const std::size_t off = t->offset(cells[k]);
+      const double tv = t->values[off], se = t->errors.empty() ? 0.0 : t->errors[off];
+      const double err = std::abs(tv - refs[k].value);
+      const double allowed = s.lut_tol + 4 * se + refs[k].error;
+      max_err = std::max(max_err, err);
+      if (!(err <= allowed)) ok = false;
+      jc.push_back({{"index", cells[k]}, {"x", x}, {"table", tv}, {"table_se", se}, {"reference", refs[k].value},
+                    {"reference_err", refs[k].error}, {"abs_error", err}, {"allowed", allowed}});
+    }
+    verdicts.add("tables: LUT vs independent reference", ok, fmt::format("{}: max |error| {:.3g}", t->name, max_err));
+    json axes = json::array();
+    for (const Axis& a : t->axes)
+      axes.push_back({{"name", a.name}, {"size", a.size}, {"lo", a.lo}, {"hi", a.hi},
+                      {"kind", a.kind == GridKind::CellCentred ? "cell_centred" : "endpoint"}});
+    arr.push_back({{"name", t->name}, {"axes", axes}, {"values", t->values}, {"cells", jc}, {"max_abs_error", max_err},
+                   {"passed", ok}});
+  }
+  return {{"available", true}, {"tolerance", s.lut_tol}, {"panels", s.lut_quadrature.panels}, {"tables", arr}};
+}
+
+// ---------------------------------------------------------------- pictures
+
+json run_images(const Catalog& cat, const SuiteSettings& s, const std::string& dir) {
+  json arr = json::array();
+  std::size_t total = 0;
+  for (const FurnaceRow& r : cat.furnace_rows) total += r.bsdfs.size();
+  Progress progress("furnace spheres", total, s.progress && Progress::stderr_is_terminal());
+  uint64_t stream = 0;
+  for (const FurnaceRow& row : cat.furnace_rows) {
+    std::vector<RgbImage> imgs;
+    json lum = json::array();
+    for (const auto& b : row.bsdfs) {
+      imgs.push_back(furnace_sphere(*b, s.image_res, s.image_spp, s.seed, ++stream));
+      std::vector<float> y(std::size_t(s.image_res) * s.image_res);
+      for (int py = 0; py < s.image_res; ++py)
+        for (int px = 0; px < s.image_res; ++px) y[std::size_t(py) * s.image_res + px] = imgs.back().at(px, py)[1];
+      lum.push_back(y);
+      progress.add();
+    }
+    const RgbImage strip = hconcat(imgs, 2);
+    std::string base;
+    for (char ch : row.name) base += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+    write_rgb_image(dir + "/images/furnace_" + base + ".exr", strip);
+    write_rgb_image(dir + "/images/furnace_" + base + ".png", strip);
+    arr.push_back({{"name", row.name}, {"parameter", row.parameter}, {"values", row.values}, {"note", row.note},
+                   {"exr", "images/furnace_" + base + ".exr"}, {"png", "images/furnace_" + base + ".png"},
+                   {"res", s.image_res}, {"spp", s.image_spp}, {"albedo_green", lum}});
+  }
+  progress.finish();
+  return arr;
+}
+
+// ---------------------------------------------------------------- convergence
+
+json run_convergence(const Catalog& cat, const SuiteSettings& s) {
+  json arr = json::array();
+  if (s.convergence_samples.empty()) return arr;
+  // Cases: the first one of each of several components.
+  std::vector<std::size_t> chosen;
+  std::vector<std::string> seen;
+  for (std::size_t c = 0; c < cat.cases.size() && chosen.size() < s.convergence_cases; ++c) {
+    if (std::find(seen.begin(), seen.end(), cat.cases[c].component) != seen.end()) continue;
+    seen.push_back(cat.cases[c].component);
+    chosen.push_back(c);
+  }
+  const int repeats = 8;
+  const Vec3 v = view_dir(0.5);
+  for (std::size_t c : chosen) {
+    const Bsdf& b = *cat.cases[c].bsdf;
+    const std::size_t nmax = s.convergence_samples.back();
+    // Reference: sampled estimator (non-delta part, the integral both estimators share) with 16x the largest budget.
+    const double ref = albedo_sampled(b, v, 16 * nmax, s.seed, 900000 + c).non_delta.value.g;
+    json ns = json::array(), e_eval = json::array(), e_samp = json::array();
+    for (std::size_t n : s.convergence_samples) {
+      std::vector<double> de(repeats), ds(repeats);
+      tbb::parallel_for(0, repeats, [&](int r) {
+        const int strata = std::max(1, int(std::lround(std::sqrt(n / 2.0))));
+        de[r] = albedo_eval(b, v, strata, s.seed + 17 + r, 800000 + c).value.g - ref;
+        ds[r] = albedo_sampled(b, v, n, s.seed + 17 + r, 700000 + c).non_delta.value.g - ref;
+      });
+      double se = 0, ss = 0;
+      for (int r = 0; r < repeats; ++r) {
+        se += de[r] * de[r];
+        ss += ds[r] * ds[r];
+      }
+      ns.push_back(n);
+      e_eval.push_back(std::sqrt(se / repeats));
+      e_samp.push_back(std::sqrt(ss / repeats));
+    }
+    arr.push_back({{"case", cat.cases[c].name}, {"cos", 0.5}, {"reference", ref}, {"repeats", repeats},
+                   {"samples", ns}, {"rms_error_eval", e_eval}, {"rms_error_sampled", e_samp}});
+  }
+  return arr;
+}
+
+}  // namespace
+
+SuiteSettings SuiteSettings::defaults(bool quick) {
+  SuiteSettings s;
+  s.quick = quick;
+  if (quick) {
+    s.furnace_cos = {1.0, 0.5, 0.1};
+    s.furnace_strata = 40;
+    s.furnace_samples = 4096;
+    s.reciprocity_pairs = 2000;
+    s.chi2.samples = 50000;
+    s.chi2.theta_bins = 20;
+    s.chi2.max_depth = 3;
+    s.chi2_cos = {0.6};
+    s.chi2_cos_below = {-0.6};
+    s.stability.random_directions = 200;
+    s.lut_cells_per_axis = 2;
+    s.lut_quadrature.panels = 12;
+    s.image_res = 24;
+    s.image_spp = 16;
+    s.convergence_samples = {16, 64, 256, 1024};
+    s.convergence_cases = 2;
+  } else {
+    s.furnace_cos = {1.0, 0.9, 0.75, 0.5, 0.3, 0.15, 0.05, 0.01};
+    s.furnace_strata = 128;
+    s.furnace_samples = 65536;
+    s.reciprocity_pairs = 20000;
+    s.chi2.samples = 1000000;
+    s.chi2.theta_bins = 90;
+    s.chi2_cos = {1.0, 0.5, 0.05};
+    s.chi2_cos_below = {-0.8, -0.3};  // from inside; cos 0.3 is beyond the critical angle of eta 1.5 (TIR)
+    s.stability.random_directions = 2000;
+    s.lut_cells_per_axis = 5;
+    s.lut_quadrature.panels = 24;
+    s.image_res = 64;
+    s.image_spp = 256;
+    s.convergence_samples = {16, 64, 256, 1024, 4096, 16384, 65536};
+    s.convergence_cases = 4;
+  }
+  return s;
+}
+
+SuiteResult run_suite(const Catalog& cat, const LutSet* luts, const SuiteSettings& s, const std::string& dir) {
+  Verdicts verdicts;
+  json report;
+  report["tool"] = "dspbr validate";
+  report["mode"] = s.quick ? "quick" : "full";
+  report["seed"] = s.seed;
+  report["skipped"] = cat.skipped;
+  json cases = json::array();
+  for (const BsdfCase& c : cat.cases)
+    cases.push_back({{"case", c.name}, {"component", c.component}, {"params", c.params}, {"claim", claim_name(c.claim)},
+                     {"note", c.note}});
+  report["cases"] = cases;
+  // Wall-clock time per phase: reported on stderr only (the report stays bit-identical).
+  auto timed = [&](const char* name, auto&& f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    report[name] = f();
+    if (s.progress)
+      std::fprintf(stderr, "  %-16s %6.1fs\n", name,
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  };
+  timed("energy", [&] { return run_energy(cat, s, verdicts); });
+  timed("reciprocity", [&] { return run_reciprocity(cat, s, verdicts); });
+  timed("chi2", [&] { return run_chi2(cat, s, verdicts); });
+  timed("stability", [&] { return run_stability(cat, s, verdicts); });
+  timed("tables", [&] { return run_luts(luts, s, verdicts); });
+  if (!luts) report["skipped"].push_back("tables: no LUT file (luts/dspbr_luts.json) could be loaded");
+  timed("furnace_images", [&] { return run_images(cat, s, dir); });
+  timed("convergence", [&] { return run_convergence(cat, s); });
+  json summary = json::array();
+  int failed = 0;
+  for (const auto& [name, c] : verdicts.counts) {
+    summary.push_back({{"check", name}, {"passed", c.first}, {"total", c.second}});
+    failed += c.second - c.first;
+  }
+  report["summary"] = summary;
+  report["failures"] = verdicts.failures;
+  write_text_atomically(dir + "/data/report.json", report.dump(1));
+  SuiteResult r;
+  r.failed_checks = failed;
+  r.failures = verdicts.failures;
+  r.report = std::move(report);
+  return r;
+}
+
+}  // namespace dspbr::validate
