@@ -513,3 +513,68 @@ TEST(BsdfMaterial, OpaqueFlakeReplacesTheLayersBelow) {
   EXPECT_GT(albedo.g, 0.0);
   EXPECT_LE(albedo.g, 0.7 + 1e-9);
 }
+
+TEST(BsdfMaterial, SampledDirectionsFollowThePdf) {
+  // Chi-square of sample() against the pdf integrated over bins of (mu = l.z, phi) by quadrature,
+  // for a material mixing reflection, thin transmission, translucency, sheen and clearcoat lobes.
+  Material m;
+  m.roughness = 0.6;
+  m.anisotropy = 0.4;
+  m.metallic = 0.2;
+  m.transparency = 0.4;
+  m.translucency = 0.5;
+  m.sheenColor = Rgb(0.6);
+  m.clearcoat = 0.6;
+  m.clearcoatRoughness = 0.5;
+  const MaterialBsdf b = make(m);
+  const Vec3 v = dir_from_angles(55, 25);
+  constexpr int kMu = 16, kPhi = 24, kN = 100000;
+  std::vector<double> observed(kMu * kPhi, 0.0), expected(kMu * kPhi, 0.0);
+  Pcg32 rng(77, 0);
+  int non_delta = 0;
+  for (int k = 0; k < kN; ++k) {
+    const BsdfSample s = b.sample(v, {rng.next_double(), rng.next_double(), rng.next_double()});
+    if (!s.valid || (s.flags & kLobeDelta)) continue;
+    ++non_delta;
+    const int i = std::min(kMu - 1, int((s.l.z + 1) / 2 * kMu));
+    double phi = std::atan2(s.l.y, s.l.x);
+    if (phi < 0) phi += 2 * M_PI;
+    const int j = std::min(kPhi - 1, int(phi / (2 * M_PI) * kPhi));
+    observed[i * kPhi + j] += 1;
+  }
+  EXPECT_EQ(non_delta, kN);  // no delta lobe, no failure from outside
+  const QuadratureRule rule = gauss_legendre(6);
+  for (int i = 0; i < kMu; ++i)
+    for (int j = 0; j < kPhi; ++j) {
+      const double mu0 = -1 + 2.0 * i / kMu, mu1 = -1 + 2.0 * (i + 1) / kMu;
+      const double p0 = 2 * M_PI * j / kPhi, p1 = 2 * M_PI * (j + 1) / kPhi;
+      expected[i * kPhi + j] = kN * integrate_gl(
+                                        [&](double mu) {
+                                          const double s = std::sqrt(std::max(0.0, 1 - mu * mu));
+                                          return integrate_gl(
+                                              [&](double phi) { return b.pdf(v, {s * std::cos(phi), s * std::sin(phi), mu}); },
+                                              p0, p1, 2, rule);
+                                        },
+                                        mu0, mu1, 2, rule);
+    }
+  // Pool bins with small expectation (standard chi-square practice), then compare.
+  double chi2 = 0, pooled_o = 0, pooled_e = 0, total_e = 0;
+  int dof = -1;
+  for (size_t k = 0; k < expected.size(); ++k) {
+    total_e += expected[k];
+    if (expected[k] < 20) {
+      pooled_o += observed[k];
+      pooled_e += expected[k];
+      continue;
+    }
+    chi2 += (observed[k] - expected[k]) * (observed[k] - expected[k]) / expected[k];
+    ++dof;
+  }
+  if (pooled_e > 0) {
+    chi2 += (pooled_o - pooled_e) * (pooled_o - pooled_e) / pooled_e;
+    ++dof;
+  }
+  EXPECT_NEAR(total_e, kN, 1e-3 * kN);  // the pdf integrates to 1 (no delta lobe here)
+  // Mean dof, standard deviation sqrt(2 dof): 5 sigma.
+  EXPECT_LT(chi2, dof + 5 * std::sqrt(2.0 * dof)) << "dof " << dof;
+}
