@@ -4,8 +4,10 @@
 
 #include <cmath>
 #include <set>
+#include <tuple>
 
 #include "dspbr/lut/albedo.h"
+#include "dspbr/lut/lut_set.h"
 #include "dspbr/lut/qmc.h"
 #include "test_lut_reference.h"
 
@@ -222,5 +224,43 @@ TEST(LutAlbedo, FiniteAndNonNegativeAtDomainEnds) {
           EXPECT_TRUE(std::isfinite(b.value) && b.value >= 0 && std::isfinite(b.error)) << mu << " " << ab;
         }
       }
+  }
+}
+
+// The committed default tables (luts/dspbr_luts.json, read through LutSet::builtin) against
+// quadrature at sample cells of every table, including the smallest roughness at grazing angle
+// where the published tables are badly wrong. Goal: max abs error <= 1e-4 per cell.
+TEST(LutTables, CommittedCellsMatchQuadrature) {
+  const LutSet& s = LutSet::builtin();
+  auto c32 = [](int i) { return (i + 0.5) / 32; };
+  auto c16 = [](int i) { return (i + 0.5) / 16; };
+  for (auto [i, j] : {std::pair{0, 0}, {0, 20}, {3, 5}, {3, 31}, {12, 10}, {20, 0}, {31, 31}})
+    EXPECT_NEAR(s.ggx_e.at({i, j}), ggx_reference(c32(j), c32(i), 1.0), 1e-4) << "GGX_E " << i << " " << j;
+  for (auto [i, j] : {std::pair{0, 0}, {5, 8}, {15, 15}, {10, 1}}) {
+    const double ab = c16(i), mu = c16(j);
+    const auto main = [&](const Vec3& v, const Vec3& l) { return sheen_brdf(v, l, ab); };
+    const auto ash = [&](const Vec3& v, const Vec3& l) { return sheen_brdf_ash(v, l, ab); };
+    EXPECT_NEAR(s.sheen_e.at({i, j}), lutref::sheen_albedo_quad(mu, main), 1e-4) << "Sheen_E " << i << " " << j;
+    EXPECT_NEAR(s.sheen_ash_e.at({i, j}), lutref::sheen_albedo_quad(mu, ash), 1e-4) << "Sheen_ash_E " << i << " " << j;
+  }
+  auto e_avg_ref = [](double r, double f0, double fms) {
+    return lutref::cosine_average(
+        [&](double m) {
+          return lutref::ggx_albedo_quad_l(m, r, f0, 16, 16) + fms * (1.0 - lutref::ggx_albedo_quad_l(m, r, 1.0, 16, 16));
+        },
+        16);
+  };
+  for (int i : {15, 25, 31})
+    EXPECT_NEAR(s.ggx_e_avg.at({i}), e_avg_ref(c32(i), 1.0, 0.0), 1e-4) << "GGX_E_avg " << i;
+  for (auto [k, i, j] : {std::tuple{0, 8, 3}, {15, 15, 15}, {5, 12, 8}}) {
+    const double f0 = c16(k), r = c16(i), mu = c16(j);
+    const double fms = fresnel_ms(f0, 1.0, e_avg_ref(r, 1.0, 0.0));
+    EXPECT_NEAR(s.base_e.at({k, i, j}), ggx_reference(mu, r, f0) + fms * (1 - ggx_reference(mu, r, 1.0)), 1e-4)
+        << "Base_E " << k << " " << i << " " << j;
+  }
+  for (auto [k, i] : {std::pair{3, 10}, {15, 15}}) {
+    const double f0 = c16(k), r = c16(i);
+    const double fms = fresnel_ms(f0, 1.0, e_avg_ref(r, 1.0, 0.0));
+    EXPECT_NEAR(s.base_e_avg.at({k, i}), e_avg_ref(r, f0, fms), 1e-4) << "Base_E_avg " << k << " " << i;
   }
 }
