@@ -7,7 +7,7 @@
 
 #include "dspbr/bsdf/bsdf.h"
 #include "dspbr/ggx.h"
-#include "dspbr/validate/furnace.h"
+#include "dspbr/bsdf/sampling.h"
 
 namespace dspbr::testing {
 
@@ -26,7 +26,7 @@ class LambertLobe : public Bsdf {
   BsdfSample sample(const Vec3& v, const Vec3& u) const override {
     BsdfSample s;
     if (v.z == 0) return s;
-    s.l = validate::cosine_hemisphere(u.y, u.z);
+    s.l = sample_cosine_hemisphere(u.y, u.z);
     if (v.z < 0) s.l.z = -s.l.z;
     s.pdf = pdf(v, s.l);
     if (!(s.pdf > 0)) return s;
@@ -116,7 +116,7 @@ class DiffuseTransmission : public Bsdf {
   BsdfSample sample(const Vec3& v, const Vec3& u) const override {
     BsdfSample s;
     if (v.z == 0) return s;
-    s.l = validate::cosine_hemisphere(u.y, u.z);
+    s.l = sample_cosine_hemisphere(u.y, u.z);
     if (v.z > 0) s.l.z = -s.l.z;
     s.pdf = pdf(v, s.l);
     if (!(s.pdf > 0)) return s;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "dspbr/bsdf/sampling.h"
 #include "dspbr/rng.h"
 
 namespace dspbr::validate {
@@ -33,23 +34,6 @@ struct Moments {
 };
 }  // namespace
 
-Vec3 cosine_hemisphere(double u1, double u2) {
-  // Concentric mapping of [0,1)^2 to the unit disk, then lift to the hemisphere.
-  const double a = 2.0 * u1 - 1.0, b = 2.0 * u2 - 1.0;
-  double r = 0, phi = 0;
-  if (a != 0 || b != 0) {
-    if (std::abs(a) > std::abs(b)) {
-      r = a;
-      phi = (kPi / 4.0) * (b / a);
-    } else {
-      r = b;
-      phi = kPi / 2.0 - (kPi / 4.0) * (a / b);
-    }
-  }
-  const double x = r * std::cos(phi), y = r * std::sin(phi);
-  return {x, y, std::sqrt(std::max(0.0, 1.0 - x * x - y * y))};
-}
-
 AlbedoEstimate albedo_eval(const Bsdf& bsdf, const Vec3& v, int strata, uint64_t seed, uint64_t stream) {
   Pcg32 rng(seed, stream);
   // Each hemisphere is integrated with density |cos|/pi, so each term is pi f(v, l); the two
@@ -59,7 +43,7 @@ AlbedoEstimate albedo_eval(const Bsdf& bsdf, const Vec3& v, int strata, uint64_t
   for (int i = 0; i < strata; ++i) {
     for (int j = 0; j < strata; ++j) {
       const double u1 = (i + rng.next_double()) / strata, u2 = (j + rng.next_double()) / strata;
-      const Vec3 up = cosine_hemisphere(u1, u2);
+      const Vec3 up = sample_cosine_hemisphere(u1, u2);
       const Vec3 down{up.x, up.y, -up.z};
       m.add(bsdf.eval(v, up) + bsdf.eval(v, down));
     }

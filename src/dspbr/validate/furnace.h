@@ -51,8 +51,4 @@ struct EnergyVerdict {
 
 EnergyVerdict judge_energy(const AlbedoEstimate& eval, const SampledAlbedo& sampled, const EnergyTolerances& tol);
 
-// Cosine-weighted direction on the upper hemisphere from (u1, u2) in [0,1)^2 (Malley's method
-// through the concentric disk mapping, Shirley & Chiu 1997). Density |cos| / pi.
-Vec3 cosine_hemisphere(double u1, double u2);
-
 }  // namespace dspbr::validate
