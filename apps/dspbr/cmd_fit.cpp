@@ -128,10 +128,10 @@ json albedo_doc(const FitArgs& a, const fit::FitContext& ctx) {
   d["functions"] = {"dspbr_fit_ggx_E(float cos_theta, float roughness)", "dspbr_fit_ggx_E_avg(float roughness)",
                     "dspbr_fit_base_E(float cos_theta, float roughness, float f0)",
                     "dspbr_fit_base_E_avg(float roughness, float f0)", "dspbr_fit_sheen_E(float cos_theta, float alpha_b)"};
-  d["form"] = {{"ggx_E", "S(r; u, mu), u = mu/(mu + r^2); S(x; y1, y2) = sum_{i,j<=5} q[6i+j] x^i y1^j + sum_{i<=5, 1<=j<=5} q[36+5i+j-1] x^i y2^j"},
-               {"ggx_E_avg", "1 - r^3 sum_k q[k] r^k, k = 0..7 (fitted in relative error of 1 - E_m,avg)"},
+  d["form"] = {{"ggx_E", "S(r; u, mu), u = mu/(mu + r^2); S(x; y1, y2) = sum_{i,j<=5} q[6i+j] X^i Y1^j + sum_{i<=5, 1<=j<=5} q[36+5i+j-1] X^i Y2^j with X = 2x - 1, Y = 2y - 1"},
+               {"ggx_E_avg", "1 - r^3 sum_k q[k] R^k, k = 0..7, R = 2r - 1"},
                {"ggx_E5", "S(r; mu, u): E_5 = Integral M_r (1 - v.h)^5 mu_l dl"},
-               {"ggx_E5_avg", "sum_k q[k] r^k, k = 0..7"},
+               {"ggx_E5_avg", "sum_k q[k] R^k, k = 0..7, R = 2r - 1"},
                {"base_E", "f0 E_m + (1 - f0) E_5 + F_ms(f0, 1; E_m,avg) (1 - E_m) (exact decomposition)"},
                {"base_E_avg", "f0 E_m,avg + (1 - f0) E_5,avg + F_ms (1 - E_m,avg)"},
                {"sheen_E", "S(l; sqrt(mu), mu/(mu + sqrt(alpha_b)/2)), l = -log2(alpha_b)/8, alpha_b clamped to [1/256, 1]; main sheen model (spec's Lambda fit)"}};

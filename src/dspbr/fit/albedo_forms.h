@@ -30,14 +30,17 @@ constexpr int kPoly2Params = (kPoly2Degree + 1) * (kPoly2Degree + 1);
 constexpr int kDualParams = kPoly2Params + (kPoly2Degree + 1) * kPoly2Degree;
 constexpr int kPoly1Params = 8;
 
-// P(x, y), coefficient a_ij at q[i * 6 + j], Horner in y inside Horner in x.
+// The polynomials are written in the shifted variables X = 2x - 1 in [-1, 1] (monomials on [0, 1]
+// are ill-conditioned: the fitted coefficients reached 5e3 and float evaluation lost ~1e-3).
+// P(x, y), coefficient a_ij at q[i * 6 + j] of X^i Y^j, Horner in Y inside Horner in X.
 template <class T>
 T poly2(const T* q, double x, double y) {
+  const double X = 2.0 * x - 1.0, Y = 2.0 * y - 1.0;
   T acc = T(0.0);
   for (int i = kPoly2Degree; i >= 0; --i) {
     T row = q[i * (kPoly2Degree + 1) + kPoly2Degree];
-    for (int j = kPoly2Degree - 1; j >= 0; --j) row = row * T(y) + q[i * (kPoly2Degree + 1) + j];
-    acc = acc * T(x) + row;
+    for (int j = kPoly2Degree - 1; j >= 0; --j) row = row * T(Y) + q[i * (kPoly2Degree + 1) + j];
+    acc = acc * T(X) + row;
   }
   return acc;
 }
@@ -45,23 +48,26 @@ T poly2(const T* q, double x, double y) {
 // S(x; y1, y2) = P(x, y1) + P'(x, y2): q[0..36) is P, q[36 + 5 i + (j - 1)] the a'_ij, j >= 1.
 template <class T>
 T dual_poly2(const T* q, double x, double y1, double y2) {
+  const double X = 2.0 * x - 1.0, Y1 = 2.0 * y1 - 1.0, Y2 = 2.0 * y2 - 1.0;
   T acc = T(0.0);
   for (int i = kPoly2Degree; i >= 0; --i) {
     const T* b = q + kPoly2Params + i * kPoly2Degree;  // a'_i1 .. a'_i5
     T row2 = b[kPoly2Degree - 1];
-    for (int j = kPoly2Degree - 2; j >= 0; --j) row2 = row2 * T(y2) + b[j];
-    row2 = row2 * T(y2);  // no j = 0 term
+    for (int j = kPoly2Degree - 2; j >= 0; --j) row2 = row2 * T(Y2) + b[j];
+    row2 = row2 * T(Y2);  // no j = 0 term
     T row1 = q[i * (kPoly2Degree + 1) + kPoly2Degree];
-    for (int j = kPoly2Degree - 1; j >= 0; --j) row1 = row1 * T(y1) + q[i * (kPoly2Degree + 1) + j];
-    acc = acc * T(x) + (row1 + row2);
+    for (int j = kPoly2Degree - 1; j >= 0; --j) row1 = row1 * T(Y1) + q[i * (kPoly2Degree + 1) + j];
+    acc = acc * T(X) + (row1 + row2);
   }
   return acc;
 }
 
+// Q(x) = sum_k a_k X^k, X = 2x - 1.
 template <class T>
 T poly1(const T* q, double x) {
+  const double X = 2.0 * x - 1.0;
   T acc = q[kPoly1Params - 1];
-  for (int k = kPoly1Params - 2; k >= 0; --k) acc = acc * T(x) + q[k];
+  for (int k = kPoly1Params - 2; k >= 0; --k) acc = acc * T(X) + q[k];
   return acc;
 }
 // E_m,avg form: 1 - r^3 Q(r).

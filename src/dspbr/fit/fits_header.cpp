@@ -11,7 +11,7 @@ namespace {
 std::string coef_list(const nlohmann::json& a) {
   std::string s;
   for (size_t i = 0; i < a.size(); ++i) {
-    s += fmt::format("{:.9g}f", a[i].get<double>());
+    s += fmt::format("{:.8e}f", a[i].get<double>());  // 9 significant digits: round-trips a float
     if (i + 1 < a.size()) s += (i % 6 == 5) ? ",\n      " : ", ";
   }
   return s;
@@ -21,18 +21,10 @@ std::string err_line(const nlohmann::json& e) {
   return fmt::format("max abs error {:.2e}, mean {:.2e}", e["max"].get<double>(), e["mean"].get<double>());
 }
 
-const char* kPoly2 = R"(// P(x, y) = sum_{i,j=0..5} q[6 i + j] x^i y^j (Horner)
-inline float dspbr_fit_detail_poly2(const float* q, float x, float y) {
-  float acc = 0.0f;
-  for (int i = 5; i >= 0; --i) {
-    float row = q[i * 6 + 5];
-    for (int j = 4; j >= 0; --j) row = row * y + q[i * 6 + j];
-    acc = acc * x + row;
-  }
-  return acc;
-}
-// S(x; y1, y2) = P(x, y1) + sum_{i=0..5, j=1..5} q[36 + 5 i + j - 1] x^i y2^j
-inline float dspbr_fit_detail_dual(const float* q, float x, float y1, float y2) {
+const char* kPoly2 = R"(// Polynomials in shifted variables X = 2x - 1 in [-1, 1] (well conditioned in float).
+// S(x; y1, y2) = sum_{i,j=0..5} q[6 i + j] X^i Y1^j + sum_{i=0..5, j=1..5} q[36 + 5 i + j - 1] X^i Y2^j
+inline float dspbr_fit_detail_dual(const float* q, float x_, float y1_, float y2_) {
+  const float x = 2.0f * x_ - 1.0f, y1 = 2.0f * y1_ - 1.0f, y2 = 2.0f * y2_ - 1.0f;
   float acc = 0.0f;
   for (int i = 5; i >= 0; --i) {
     const float* b = q + 36 + i * 5;
@@ -45,8 +37,9 @@ inline float dspbr_fit_detail_dual(const float* q, float x, float y1, float y2) 
   }
   return acc;
 }
-// Q(x) = sum_{k=0..7} q[k] x^k (Horner)
-inline float dspbr_fit_detail_poly1(const float* q, float x) {
+// Q(x) = sum_{k=0..7} q[k] X^k, X = 2x - 1 (Horner)
+inline float dspbr_fit_detail_poly1(const float* q, float x_) {
+  const float x = 2.0f * x_ - 1.0f;
   float acc = q[7];
   for (int k = 6; k >= 0; --k) acc = acc * x + q[k];
   return acc;
@@ -169,7 +162,7 @@ inline float dspbr_fit_sheen_E(float cos_theta, float alpha_b) {{
 // shape relative L2 error of the equivalent lobe up to {:.3f}; unscaled albedo error up to {:.3f} (see
 // fits/flake_roughness.json for the per-r_f scale and errors).
 inline float dspbr_fit_flake_roughness(float flake_roughness) {{
-  const float a0 = {:.9g}f, a1 = {:.9g}f, b1 = {:.9g}f;
+  const float a0 = {:.8e}f, a1 = {:.8e}f, b1 = {:.8e}f;
   return std::sqrt(flake_roughness) * (a0 + a1 * flake_roughness) / (1.0f + b1 * flake_roughness);
 }}
 )",
