@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "bsdf_test_util.h"
@@ -103,30 +104,39 @@ TEST(BsdfMaterial, WhiteMirrorMetalReflectsEverything) {
 
 TEST(BsdfMaterial, WhiteFurnaceMetalWithCompensation) {
   // Multiple-scattering compensation restores energy: albedo ~ 1 for a white rough metal, where
-  // the single-scattering lobe alone loses up to ~40 % at roughness 1.
-  // (Roughness 1 lies beyond the last cell centre of the tables: the lookup clamps there.)
-  for (double r : {0.4, 0.7, 0.95}) {
+  // the single-scattering lobe alone loses up to ~40 % at roughness 1. Prints the figures of
+  // docs/bsdf.md. Roughness 1 lies beyond the last cell centre of the tables (the lookup clamps
+  // at r = 0.984): ~2 % loss there, from the table, hence the wider tolerance.
+  for (double r : {0.2, 0.4, 0.7, 0.95, 1.0}) {
     Material m;
     m.metallic = 1;
     m.roughness = r;
     const MaterialBsdf b = make(m);
+    std::printf("[furnace] white metal r %.2f:", r);
     for (double theta : {0.0, 45.0, 75.0}) {
       const Vec3 v = dir_from_angles(theta, 0);
-      EXPECT_NEAR(albedo_quadrature(b, v, 1, 48, 96), 1.0, 1e-2) << "r " << r << " theta " << theta;
+      const double a = albedo_quadrature(b, v, 1, 64, 128);
+      std::printf(" theta %2.0f %.4f", theta, a);
+      EXPECT_NEAR(a, 1.0, r < 1 ? 1e-2 : 3e-2) << "r " << r << " theta " << theta;
     }
+    std::printf("\n");
   }
 }
 
 TEST(BsdfMaterial, WhiteFurnaceOpaqueDielectric) {
   // M_r F + M_r,ms F_ms + B_c: energy conserving and preserving for a white base (spec "Diffuse BRDF").
-  for (double r : {0.3, 0.8}) {
+  for (double r : {0.2, 0.4, 0.7, 1.0}) {
     Material m;
     m.roughness = r;
     const MaterialBsdf b = make(m);
-    for (double theta : {10.0, 60.0}) {
+    std::printf("[furnace] white opaque dielectric r %.2f:", r);
+    for (double theta : {0.0, 45.0, 75.0}) {
       const Vec3 v = dir_from_angles(theta, 0);
-      EXPECT_NEAR(albedo_quadrature(b, v, 1, 48, 96), 1.0, 1e-2) << "r " << r << " theta " << theta;
+      const double a = albedo_quadrature(b, v, 1, 64, 128);
+      std::printf(" theta %2.0f %.4f", theta, a);
+      EXPECT_NEAR(a, 1.0, 1e-2) << "r " << r << " theta " << theta;
     }
+    std::printf("\n");
   }
 }
 
