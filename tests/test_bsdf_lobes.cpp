@@ -231,3 +231,18 @@ TEST(BsdfLobes, SheenAlbedoMatchesItsTable) {
     expect_sample_consistency(lobe, dir_from_angles(45, 0));
   }
 }
+
+TEST(BsdfLobes, VolumetricTransmissionFromInsideLosesExactlyTheTotallyReflectedFacets) {
+  // From the denser side the pdf integrates to 1 - P(TIR), P(TIR) = Integral D_v(h) [facet under TIR] dh,
+  // computed here over microfacet normals (independent of the l-space Jacobian).
+  const double eta = 1.5, a = 0.5;
+  const VolumetricTransmission lobe(a, a, eta, 1.0, constant(1.0));
+  const Vec3 v = dir_from_angles(35, 0);
+  const double p_tir = integrate_sphere([&](const Vec3& h) {
+    if (h.z <= 0) return 0.0;
+    const double c = dot(v, h);
+    return eta * eta * (1 - c * c) >= 1 ? ggx_vndf_pdf(v, h, a, a) : 0.0;
+  }, 96, 128);
+  EXPECT_GT(p_tir, 0.01);
+  EXPECT_NEAR(integrate_sphere([&](const Vec3& w) { return lobe.pdf(v, w); }, 96, 128), 1.0 - p_tir, 2e-3);
+}
