@@ -289,13 +289,24 @@ BsdfSample MaterialBsdf::sample(const Vec3& v_in, const Vec3& u) const {
   std::vector<double> probs;
   selection(side, v, probs);
   // Choose a lobe with u.x and rescale u.x to [0, 1) inside the chosen interval.
-  size_t k = 0;
-  double cum = 0;
-  for (; k < side.size(); ++k) {
-    if (probs[k] > 0 && (u.x < cum + probs[k] || k + 1 == side.size())) break;
-    cum += probs[k];
+  // (Rounding of the cumulative sum: u.x beyond it picks the last lobe with a non-zero probability.)
+  size_t k = side.size(), last = side.size();
+  double cum = 0, cum_last = 0;
+  for (size_t j = 0; j < side.size(); ++j) {
+    if (!(probs[j] > 0)) continue;
+    if (u.x < cum + probs[j]) {
+      k = j;
+      break;
+    }
+    last = j;
+    cum_last = cum;
+    cum += probs[j];
   }
-  if (k >= side.size() || !(probs[k] > 0)) return out;
+  if (k == side.size()) {
+    if (last == side.size()) return out;  // nothing to sample
+    k = last;
+    cum = cum_last;
+  }
   const double ux = std::clamp((u.x - cum) / probs[k], 0.0, std::nextafter(1.0, 0.0));
   const Entry& e = side[k];
   Vec3 l;
