@@ -198,6 +198,16 @@ TEST(FitFlakes, AggregateAlbedoNearOneForSmoothFlakesAtNormalIncidence) {
   EXPECT_NEAR(f.views.front().albedo_aggregate, 1.0, 0.03);
 }
 
+// At r_f = 1 the flake normals are (nearly: alpha_ggx = 0.998) cosine distributed (GGX with
+// alpha = 1 has D = 1/pi); at normal view a normal at theta_n reflects to cos(2 theta_n), so the
+// albedo is Integral_{cos^2 > 1/2} (2 c^2 - 1) 2 c dc = 1/4 (the cone only blurs directions).
+TEST(FitFlakes, AggregateAlbedoMatchesClosedFormAtRoughOne) {
+  const FlakeLobeFit f = fit_flake_lobe(1.0, true);
+  ASSERT_FALSE(f.views.empty());
+  EXPECT_NEAR(f.views.front().cos_view, 1.0, 1e-12);
+  EXPECT_NEAR(f.views.front().albedo_aggregate, 0.25, 0.01);
+}
+
 TEST(FitHeader, HeaderMatchesLibrary) {
   const json sl = load_fit("sheen_lambda"), al = load_fit("albedo"), fl = load_fit("flake_roughness");
   std::vector<double> q;

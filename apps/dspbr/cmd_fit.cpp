@@ -142,8 +142,10 @@ json albedo_doc(const FitArgs& a, const fit::FitContext& ctx) {
   d["fit"] = {{"metric", "absolute error, minimax by Lawson reweighting"},
               {"reference", "lut/albedo.h QMC integrals"},
               {"samples", s.samples},
-              {"grid", {{"roughness", s.n_r}, {"cos_theta", s.n_mu}}},
-              {"lawson_rounds", s.minimax.lawson_rounds},
+              {"grid", {{"roughness", fmt::format("{} cell-centred + 0 and 1", s.n_r)},
+                        {"cos_theta", fmt::format("{} (geometric from 0.002 below 0.1, uniform above) + 1", s.n_mu)},
+                        {"alpha_b", fmt::format("{} geometric", s.n_r)}}},
+              {"lawson_rounds", {{"default", s.minimax.lawson_rounds}, {"sheen_E", s.minimax.lawson_rounds + 1}}},
               {"converged",
                {{"ggx_E", r.ggx_E.converged}, {"ggx_E_avg", r.ggx_E_avg.converged}, {"ggx_E5", r.ggx_E5.converged},
                 {"ggx_E5_avg", r.ggx_E5_avg.converged}, {"sheen_E", r.sheen_E.converged}}}};

@@ -63,7 +63,7 @@ GgxRef ggx_ref(double mu, double r, double e_avg, const IntegratorSettings& is, 
   const Estimate em = ggx_E(mu, r, is, stream);
   const auto base = base_E_f0s(mu, r, {0.0}, Estimate{e_avg, 0.0}, is, stream);
   // base E(mu; r, 0) = E_5 + F_ms(0, 1) (1 - E_m), same integration samples for E_m? no: separate
-  // estimates, so E_5 carries both QMC errors (~1e-4 at 4096 samples).
+  // estimates, so E_5 carries both QMC errors (~5e-5 at 16384 samples).
   return {em.value, base[0].value - fresnel_ms(0.0, 1.0, e_avg) * (1.0 - em.value)};
 }
 
@@ -95,12 +95,15 @@ AlbedoFitParams albedo_fit_start() {
 
 AlbedoFitResult fit_albedos(const AlbedoFitSettings& s, const FitContext& ctx) {
   const IntegratorSettings is = integrator(s, ctx);
-  const auto rs = r_grid(s.n_r, 0.5);
+  // Cell-centred grids plus the domain edges r = 0, 1 and mu = 1 (no extrapolation at the corners).
+  auto rs = r_grid(s.n_r, 0.5);
+  rs.insert(rs.begin(), 0.0);
+  rs.push_back(1.0);
   auto mus = cosine_grid(0.002, 1.0, s.n_mu, 0.5);
+  mus.push_back(1.0);
   // Averages: one per roughness row (also needed by E_5).
   const auto avg = parallel_map<GgxAvgRef>(ctx, rs.size(), [&](size_t i) { return ggx_avg_ref(rs[i], is, 1000003 + i); });
-  // The 1D averages also get the end points r = 0 and 1 (cheap; keeps the polynomials tame there).
-  const auto avg_ends = parallel_map<GgxAvgRef>(ctx, 2, [&](size_t i) { return ggx_avg_ref(double(i), is, 1100003 + i); });
+  // (rs holds the end points r = 0 and 1: they keep the polynomials of the averages tame there.)
   const auto ref = parallel_map<GgxRef>(ctx, rs.size() * mus.size(), [&](size_t i) {
     const size_t ir = i / mus.size();
     return ggx_ref(mus[i % mus.size()], rs[ir], avg[ir].e_avg, is, 2000003 + i);
@@ -114,10 +117,6 @@ AlbedoFitResult fit_albedos(const AlbedoFitSettings& s, const FitContext& ctx) {
   std::vector<DualResidual> em, e5, sb;
   std::vector<EavgResidual> ea;
   std::vector<P1Residual> e5a;
-  for (size_t i = 0; i < 2; ++i) {
-    ea.push_back({double(i), avg_ends[i].e_avg});
-    e5a.push_back({double(i), avg_ends[i].e5_avg});
-  }
   for (size_t ir = 0; ir < rs.size(); ++ir) {
     ea.push_back({rs[ir], avg[ir].e_avg});
     e5a.push_back({rs[ir], avg[ir].e5_avg});
@@ -135,7 +134,10 @@ AlbedoFitResult fit_albedos(const AlbedoFitSettings& s, const FitContext& ctx) {
   out.ggx_E_avg = fit_minimax<kPoly1Params>(ea, out.params.ggx_E_avg, s.minimax);
   out.ggx_E5 = fit_minimax<kDualParams>(e5, out.params.ggx_E5, s.minimax);
   out.ggx_E5_avg = fit_minimax<kPoly1Params>(e5a, out.params.ggx_E5_avg, s.minimax);
-  out.sheen_E = fit_minimax<kDualParams>(sb, out.params.sheen_E, s.minimax);
+  // Sheen: one more Lawson round (its error concentrates at grazing, small alpha_b).
+  MinimaxOptions sheen_opt = s.minimax;
+  sheen_opt.lawson_rounds += 1;
+  out.sheen_E = fit_minimax<kDualParams>(sb, out.params.sheen_E, sheen_opt);
   return out;
 }
 
@@ -177,6 +179,7 @@ nlohmann::json albedo_report(const AlbedoFitSettings& s, const AlbedoFitParams& 
     return sheen_E(mus[i % mus.size()], alphas[i / mus.size()], SheenModel::Main, is, 8000011 + i).value;
   });
   ErrorStats em, ea, be, ba, sb, furnace;
+  std::vector<double> map_em, map_sb;  // signed errors on the fresh grid (plots)
   const std::vector<double> furnace_edges = {0.05, 0.25, 0.5, 1.0 + 1e-9};
   std::vector<ErrorStats> furnace_band(furnace_edges.size() - 1);
   for (size_t ir = 0; ir < rs.size(); ++ir) {
@@ -190,6 +193,7 @@ nlohmann::json albedo_report(const AlbedoFitSettings& s, const AlbedoFitParams& 
     for (size_t j = 0; j < mus.size(); ++j) {
       const Cell& c = cells[ir * mus.size() + j];
       em.add(fit_ggx_E(mus[j], r, p) - c.e_m);
+      map_em.push_back(fit_ggx_E(mus[j], r, p) - c.e_m);
       for (size_t k = 0; k < f0s.size(); ++k) be.add(fit_base_E(mus[j], r, f0s[k], p) - c.base[k]);
       // r -> 0: 1 - E_avg -> 0 and the compensation vanishes; skip r < 0.05 where both the
       // fitted ratio and the exact one are 0/0 limits (the lobe there is a mirror: albedo 1).
@@ -201,7 +205,10 @@ nlohmann::json albedo_report(const AlbedoFitSettings& s, const AlbedoFitParams& 
       }
     }
   }
-  for (size_t i = 0; i < sheen.size(); ++i) sb.add(fit_sheen_E(mus[i % mus.size()], alphas[i / mus.size()], p) - sheen[i]);
+  for (size_t i = 0; i < sheen.size(); ++i) {
+    sb.add(fit_sheen_E(mus[i % mus.size()], alphas[i / mus.size()], p) - sheen[i]);
+    map_sb.push_back(fit_sheen_E(mus[i % mus.size()], alphas[i / mus.size()], p) - sheen[i]);
+  }
   nlohmann::json out;
   out["grid"] = {{"roughness", {{"kind", "cell offset 0.27, plus 0 and 1"}, {"n", rs.size()}}},
                  {"cos_theta", {{"kind", "geometric below 0.1 from 0.002, uniform above, offset 0.27, plus 1"},
@@ -215,6 +222,8 @@ nlohmann::json albedo_report(const AlbedoFitSettings& s, const AlbedoFitParams& 
   out["base_E_avg"] = ba.to_json();
   out["sheen_E"] = sb.to_json();
   out["white_furnace_metal"] = furnace.to_json();
+  out["maps"]["ggx_E"] = {{"roughness", rs}, {"cos_theta", mus}, {"error", map_em}};
+  out["maps"]["sheen_E"] = {{"alpha_b", alphas}, {"cos_theta", mus}, {"error", map_sb}};
   for (size_t b = 0; b < furnace_band.size(); ++b)
     out["white_furnace_metal_bands"].push_back(
         {{"roughness", {furnace_edges[b], std::min(1.0, furnace_edges[b + 1])}}, {"error", furnace_band[b].to_json()}});

@@ -14,7 +14,7 @@ namespace dspbr::fit {
 struct AlbedoFitSettings {
   double alpha_b_min = kSheenEAlphaMin;  // sheen domain alpha_b in [alpha_b_min, 1] (as the Lambda fit)
   int n_r = 28, n_mu = 36;         // fit grid
-  int samples = 4096;              // QMC samples per reference value (lut/albedo.h)
+  int samples = 16384;             // QMC samples per reference value (lut/albedo.h)
   MinimaxOptions minimax{2, 300, 1e-3};  // few Lawson rounds: balances max and mean error
 };
 

@@ -163,6 +163,27 @@ nlohmann::json sheen_lambda_report(const SheenLambdaFitSettings& s, const SheenL
                              {"g1_abs_error", g1[b].to_json()}});
     out["models"][m.name] = jm;
   }
+  // Curves for the plots (docs/fits.md): Lambda of every model and the exact one along mu.
+  {
+    const std::vector<double> c_alphas = {s.alpha_min, 1.0 / 64, 1.0 / 16, 0.25, 1.0};
+    const auto c_mus = cosine_grid(s.mu_min, s.mu_max, ctx.quick ? 16 : 48, 0.5);
+    const auto exact = parallel_map<double>(ctx, c_alphas.size() * c_mus.size(), [&](size_t i) {
+      return sheen_lambda_exact(c_mus[i % c_mus.size()], c_alphas[i / c_mus.size()]);
+    });
+    for (size_t ia = 0; ia < c_alphas.size(); ++ia) {
+      nlohmann::json c;
+      c["alpha_b"] = c_alphas[ia];
+      c["cos_theta"] = c_mus;
+      std::vector<double> ex(exact.begin() + long(ia * c_mus.size()), exact.begin() + long((ia + 1) * c_mus.size()));
+      c["lambda"]["exact"] = ex;
+      for (const auto& m : models) {
+        std::vector<double> v;
+        for (double mu : c_mus) v.push_back(m.f(mu, c_alphas[ia]));
+        c["lambda"][m.name] = v;
+      }
+      out["curves"].push_back(c);
+    }
+  }
   // Downstream: sheen albedo E_b with each Lambda vs with the exact Lambda (white furnace of M_b:
   // E_b > 1 is an energy gain; E_b(model) - E_b(exact) the error the Lambda fit causes).
   const std::vector<double> e_alphas = ctx.quick ? std::vector<double>{1.0 / 64, 0.25}
