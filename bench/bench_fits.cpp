@@ -1,0 +1,100 @@
+// ns/eval of the generated LUT-free fits (fits/dspbr_fits.hpp, float) against table lookups:
+// the library's Table::lookup (double, generic N-D) and a plain float bilinear lookup on the same
+// 32x32 GGX_E table with clamp-to-edge, i.e. what a shader's texture fetch computes in ALU.
+// Run: ./dspbr_bench --benchmark_filter=Fit   (figures go to docs/fits.md, never into tests).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "../fits/dspbr_fits.hpp"
+#include "dspbr/lut/lut_set.h"
+#include "dspbr/rng.h"
+
+namespace {
+
+struct Inputs {
+  std::vector<float> mu, r;
+  Inputs() {
+    dspbr::Pcg32 rng(7, 0);
+    for (int i = 0; i < 1024; ++i) {
+      mu.push_back(float(rng.next_double()));
+      r.push_back(float(rng.next_double()));
+    }
+  }
+};
+const Inputs& inputs() {
+  static const Inputs in;
+  return in;
+}
+
+// Float bilinear lookup on a cell-centred n x n table (rows: roughness, columns: cos theta).
+struct BilinearTable {
+  int n = 0;
+  std::vector<float> v;
+  float lookup(float mu, float r) const {
+    const float x = std::clamp(mu * n - 0.5f, 0.0f, float(n - 1)), y = std::clamp(r * n - 0.5f, 0.0f, float(n - 1));
+    const int x0 = std::min(int(x), n - 2), y0 = std::min(int(y), n - 2);
+    const float fx = x - float(x0), fy = y - float(y0);
+    const float* row0 = &v[size_t(y0 * n)];
+    const float* row1 = row0 + n;
+    const float a = row0[x0] + fx * (row0[x0 + 1] - row0[x0]);
+    const float b = row1[x0] + fx * (row1[x0 + 1] - row1[x0]);
+    return a + fy * (b - a);
+  }
+};
+
+void BM_FitGgxE(benchmark::State& state) {
+  const Inputs& in = inputs();
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(dspbr_fit_ggx_E(in.mu[i], in.r[i]));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_FitGgxE);
+
+void BM_FitBaseE(benchmark::State& state) {
+  const Inputs& in = inputs();
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(dspbr_fit_base_E(in.mu[i], in.r[i], 0.04f));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_FitBaseE);
+
+void BM_FitSheenE(benchmark::State& state) {
+  const Inputs& in = inputs();
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(dspbr_fit_sheen_E(in.mu[i], in.r[i]));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_FitSheenE);
+
+void BM_FitSheenLambda(benchmark::State& state) {
+  const Inputs& in = inputs();
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(dspbr_fit_sheen_lambda(in.mu[i], in.r[i]));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_FitSheenLambda);
+
+void BM_FitLutBilinearFloat(benchmark::State& state) {
+  const Inputs& in = inputs();
+  const dspbr::Table& t = dspbr::LutSet::builtin().ggx_e;
+  BilinearTable b;
+  b.n = t.axes[1].size;
+  for (double x : t.values) b.v.push_back(float(x));
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(b.lookup(in.mu[i], in.r[i]));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_FitLutBilinearFloat);
+
+void BM_FitLutTableLookup(benchmark::State& state) {
+  const Inputs& in = inputs();
+  const dspbr::LutSet& lut = dspbr::LutSet::builtin();
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(lut.E_m(in.mu[i], in.r[i]));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_FitLutTableLookup);
+
+}  // namespace
