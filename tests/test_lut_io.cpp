@@ -1,5 +1,6 @@
 // LUT files: EXR / JSON / header round trips, the committed default set, the `dspbr lut`
 // command (bad input, determinism across thread counts, --scene), the progress reporter.
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -213,6 +214,7 @@ TEST(LutCli, SameFilesWithOneAndTwoThreads) {
   int files = 0;
   for (const auto& e : fs::directory_iterator(d1)) {
     ++files;
+    EXPECT_NE(e.path().filename().string().rfind(".tmp-", 0), 0u) << "temporary file left: " << e.path();
     EXPECT_EQ(slurp(e.path()), slurp(d2 / e.path().filename())) << e.path().filename();
   }
   EXPECT_EQ(files, 1 + 2 + 1 + 2);  // GGX_E, 2 Base slices, Sheen_ash_E, header, JSON
@@ -263,6 +265,18 @@ TEST(LutCli, SceneSelectsTheTablesItNeeds) {
     for (const Table& t : read_lut_json((dir / "dspbr_luts.json").string())) got.push_back(t.name);
     EXPECT_EQ(got, need);
   }
+  fs::remove_all(dir);
+}
+
+// --half writes 16-bit half EXRs (and --formats exr only the images).
+TEST(LutCli, HalfWritesHalfFloatImages) {
+  const fs::path dir = temp_folder("half");
+  ASSERT_EQ(run_dspbr("lut --out '" + dir.string() + "' --tables GGX_E_avg --size GGX_E_avg=4 --samples 64 --half --formats exr"), 0);
+  auto in = OIIO::ImageInput::open((dir / "GGX_E_avg.exr").string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().format, OIIO::TypeDesc::HALF);
+  EXPECT_EQ(in->spec().channelnames, std::vector<std::string>{"Y"});
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
   fs::remove_all(dir);
 }
 

@@ -76,6 +76,9 @@ void write_exr(const std::string& path, const float* data, int width, int height
     OIIO::ImageSpec spec(width, height, 1, half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"Y"};
     spec.attribute("compression", "zip");
+    // OIIO stamps the current time unless DateTime is set; an empty one is not written, so the
+    // same tables give the same bytes.
+    spec.attribute("DateTime", "");
     if (!out->open(tmp, spec)) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
     if (!out->write_image(OIIO::TypeDesc::FLOAT, data)) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
     if (!out->close()) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
