@@ -4,6 +4,7 @@
 
 #include "dspbr/fresnel.h"
 #include "dspbr/lut/albedo.h"
+#include "dspbr/lut/lut_set.h"
 #include "dspbr/quadrature.h"
 
 namespace dspbr::fit {
@@ -181,7 +182,9 @@ nlohmann::json albedo_report(const AlbedoFitSettings& s, const AlbedoFitParams& 
   ErrorStats em, ea, be, ba, sb, furnace;
   std::vector<double> map_em, map_sb;  // signed errors on the fresh grid (plots)
   const std::vector<double> furnace_edges = {0.05, 0.25, 0.5, 1.0 + 1e-9};
-  std::vector<ErrorStats> furnace_band(furnace_edges.size() - 1);
+  std::vector<ErrorStats> furnace_band(furnace_edges.size() - 1), furnace_lut_band(furnace_edges.size() - 1);
+  // Baseline: the same furnace with the committed tables (bilinear GGX_E, linear GGX_E_avg).
+  const LutSet& lut = LutSet::builtin();
   for (size_t ir = 0; ir < rs.size(); ++ir) {
     const double r = rs[ir];
     ea.add(fit_ggx_E_avg(r, p) - avg[ir].e_avg);
@@ -190,6 +193,8 @@ nlohmann::json albedo_report(const AlbedoFitSettings& s, const AlbedoFitParams& 
     // E_m(mu) + (1 - E^(mu)) (1 - 2 Int E^ mu dmu) / (1 - E^_avg); 1 with exact tables.
     const double e_hat_int = hemispherical_average([&](double m) { return fit_ggx_E(m, r, p); });
     const double e_hat_avg = fit_ggx_E_avg(r, p);
+    const double e_lut_int = hemispherical_average([&](double m) { return lut.E_m(m, r); });
+    const double e_lut_avg = lut.E_m_avg(r);
     for (size_t j = 0; j < mus.size(); ++j) {
       const Cell& c = cells[ir * mus.size() + j];
       em.add(fit_ggx_E(mus[j], r, p) - c.e_m);
@@ -200,8 +205,12 @@ nlohmann::json albedo_report(const AlbedoFitSettings& s, const AlbedoFitParams& 
       if (r >= 0.05) {
         const double ms = (1.0 - fit_ggx_E(mus[j], r, p)) * (1.0 - e_hat_int) / std::max(1e-12, 1.0 - e_hat_avg);
         furnace.add(c.e_m + ms - 1.0);
+        const double ms_lut = (1.0 - lut.E_m(mus[j], r)) * (1.0 - e_lut_int) / std::max(1e-12, 1.0 - e_lut_avg);
         for (size_t b = 0; b + 1 < furnace_edges.size(); ++b)
-          if (r >= furnace_edges[b] && r < furnace_edges[b + 1]) furnace_band[b].add(c.e_m + ms - 1.0);
+          if (r >= furnace_edges[b] && r < furnace_edges[b + 1]) {
+            furnace_band[b].add(c.e_m + ms - 1.0);
+            furnace_lut_band[b].add(c.e_m + ms_lut - 1.0);
+          }
       }
     }
   }
@@ -226,7 +235,9 @@ nlohmann::json albedo_report(const AlbedoFitSettings& s, const AlbedoFitParams& 
   out["maps"]["sheen_E"] = {{"alpha_b", alphas}, {"cos_theta", mus}, {"error", map_sb}};
   for (size_t b = 0; b < furnace_band.size(); ++b)
     out["white_furnace_metal_bands"].push_back(
-        {{"roughness", {furnace_edges[b], std::min(1.0, furnace_edges[b + 1])}}, {"error", furnace_band[b].to_json()}});
+        {{"roughness", {furnace_edges[b], std::min(1.0, furnace_edges[b + 1])}},
+         {"error", furnace_band[b].to_json()},
+         {"error_with_tables", furnace_lut_band[b].to_json()}});
   return out;
 }
 
