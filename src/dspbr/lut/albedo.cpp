@@ -251,7 +251,7 @@ Estimate base_E_avg(double r, double f0, const IntegratorSettings& s, uint64_t s
 
 Estimate sheen_E(double mu, double alpha_b, SheenModel model, const IntegratorSettings& s, uint64_t stream) {
   check_settings(s);
-  mu = clamp_cos(mu);
+  mu = std::clamp(mu, kMinCosSheen, 1.0);
   const double ab = std::clamp(alpha_b, kMinAlphaB, 1.0);
   const Vec3 v = view_dir(mu);
   auto brdf = [&](const Vec3& l) {

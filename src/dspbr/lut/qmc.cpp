@@ -59,8 +59,7 @@ ScrambledSobol::ScrambledSobol(uint64_t seed) {
 uint32_t ScrambledSobol::sobol_bits(uint32_t index, int dim) {
   const uint32_t* v = directions().v[dim];
   uint32_t x = 0;
-  for (int k = 0; index != 0; ++k, index >>= 1)
-    if (index & 1u) x ^= v[k];
+  for (; index != 0; index &= index - 1) x ^= v[__builtin_ctz(index)];  // one XOR per set bit
   return x;
 }
 
