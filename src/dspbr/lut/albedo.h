@@ -69,7 +69,7 @@ constexpr double kMinAlphaB = 1e-3;
 // Grazing clamp of the view cosine for the sheen albedos. The spec's Lambda fit tends to a
 // finite value at mu -> 0 (the exact Charlie Lambda grows like 1/mu), so G_b does not vanish
 // there and the main sheen's albedo grows like ~4e-5 / mu below mu ~ 1e-3 and diverges at 0
-// (67 at mu = 1e-6, alpha_b = 1/2). Only endpoint grids (mu = 0 column) reach the clamp.
+// (40 at mu = 1e-6, alpha_b = 1/2). Only endpoint grids (mu = 0 column) reach the clamp.
 constexpr double kMinCosSheen = 1e-3;
 
 enum class SheenModel { Main, Ash };  // Charlie D_b with the spec's Lambda fit, or [NP13] visibility
