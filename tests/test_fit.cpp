@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../fits/dspbr_fits.hpp"
+#include "dspbr/fit/albedo_fit.h"
 #include "dspbr/fit/albedo_forms.h"
 #include "dspbr/fit/fits_header.h"
 #include "dspbr/fit/flake_fit.h"
@@ -115,6 +116,30 @@ TEST(FitSheenLambda, CeresConvergesFromDocumentedStart) {
   EXPECT_LT(std::expm1(r.rich_summary.max_abs_residual), 0.03);
   const auto start = sheen_rich_start();
   EXPECT_GT(std::abs(sheen_lambda_rich(0.3, 1.0 / 128, start.data()) / sheen_lambda_exact(0.3, 1.0 / 128) - 1), 0.3);
+}
+
+// S(x; y1, y2) - target, for the convergence test.
+struct DualPolyResidual {
+  double x, y1, y2, target;
+  template <class T>
+  bool operator()(const T* q, T* r) const {
+    r[0] = dual_poly2<T>(q, x, y1, y2) - T(target);
+    return true;
+  }
+};
+
+// The E_m form from the documented start (constant 1), on a small grid of quadrature values.
+TEST(FitAlbedo, CeresConvergesFromDocumentedStart) {
+  std::vector<DualPolyResidual> res;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j) {
+      const double r = (i + 0.5) / 12, mu = 0.01 + 0.99 * j / 11.0;
+      res.push_back({r, ggx_albedo_u(mu, r), mu, exact_ggx_E(mu, r)});
+    }
+  auto q = albedo_fit_start().ggx_E;
+  const MinimaxSummary s = fit_minimax<kDualParams>(res, q, MinimaxOptions{1, 300, 1e-3});
+  EXPECT_TRUE(s.converged);
+  EXPECT_LT(s.max_abs_residual, 3e-3);  // from errors up to ~0.6 (E_m(grazing, r = 1) vs 1)
 }
 
 TEST(FitAlbedo, WithinStatedBoundsOnFreshGrid) {
