@@ -69,7 +69,9 @@ Chi2Result chi2_test(const Bsdf& bsdf, const Vec3& v, const Chi2Settings& s) {
       if (phi < 0) phi += 2 * kPi;
       const int pi = std::min(np - 1, int(phi / dphi));
       ++st.hist[std::size_t(ti) * np + pi];
-      // Support and consistency.
+      // Support and consistency (on every consistency_stride-th sample: the pdf and eval calls
+      // cost as much as the sample itself).
+      if (s.consistency_stride > 1 && i % std::size_t(s.consistency_stride) != 0) continue;
       const double p = bsdf.pdf(v, l);
       if (!(p > 0) || !std::isfinite(p)) { ++st.outside; continue; }
       const double pdev = std::abs(smp.pdf - p) / p;

@@ -25,6 +25,7 @@ struct Chi2Settings {
   double significance = 0.01;   // family-wise level before the Sidak correction
   int num_tests = 1;            // m in the Sidak correction (tests in the whole run)
   double consistency_tol = 1e-5;  // relative tolerance for sample.pdf vs pdf() and weight vs f|cos|/pdf
+  int consistency_stride = 1;     // check support and consistency on every k-th non-delta sample
   uint64_t seed = 1;
   uint64_t stream = 0;          // distinct per test in a run (chunks use stream * 2^20 + chunk)
   bool keep_histograms = false;  // copy observed/expected per bin into the result (figures)
@@ -40,7 +41,7 @@ struct Chi2Result {
   int pooled_bins = 0;       // bins merged into the pooled cell
   // support and normalisation
   std::size_t samples = 0, invalid = 0, delta = 0;
-  std::size_t outside_support = 0;   // non-delta samples with pdf(v, l) <= 0 or not finite
+  std::size_t outside_support = 0;   // checked non-delta samples with pdf(v, l) <= 0 or not finite
   std::size_t non_finite = 0;        // samples with a non-finite direction, pdf or weight
   double pdf_integral = 0;           // Integral over the sphere of pdf(v, .) (quadrature)
   double pdf_integral_expected = 0;  // 1 - P(delta) - P(invalid), from the sample counts

@@ -449,12 +449,13 @@ SuiteSettings SuiteSettings::defaults(bool quick) {
     s.convergence_samples = {16, 64, 256, 1024};
     s.convergence_cases = 2;
   } else {
-    s.furnace_cos = {1.0, 0.9, 0.75, 0.5, 0.3, 0.15, 0.05, 0.01};
-    s.furnace_strata = 128;
-    s.furnace_samples = 65536;
+    s.furnace_cos = {1.0, 0.8, 0.5, 0.3, 0.1, 0.02};
+    s.furnace_strata = 96;
+    s.furnace_samples = 32768;
     s.reciprocity_pairs = 20000;
     s.chi2.samples = 1000000;
-    s.chi2.theta_bins = 90;
+    s.chi2.theta_bins = 64;
+    s.chi2.consistency_stride = 8;
     s.chi2_cos = {1.0, 0.5, 0.05};
     s.chi2_cos_below = {-0.8, -0.3};  // from inside; cos 0.3 is beyond the critical angle of eta 1.5 (TIR)
     s.stability.random_directions = 2000;
