@@ -78,6 +78,14 @@ TEST(FitSheenLambda, WithinStatedBoundOnFreshGrid) {
   // Exact limits of the form: 0 at normal incidence, +inf at grazing, finite and positive between.
   EXPECT_EQ(sheen_lambda_rich(1.0, 0.3, q.data()), 0.0);
   EXPECT_TRUE(std::isinf(sheen_lambda_rich(0.0, 0.3, q.data())));
+  // tiny positive cosines: finite, positive, no NaN (library and float header)
+  for (double mu : {1e-30, 1e-12, 1e-7})
+    for (double a : {a_min, 1.0}) {
+      const double l = sheen_lambda_rich(mu, a, q.data());
+      const float h = dspbr_fit_sheen_lambda(float(mu), float(a));
+      EXPECT_TRUE(std::isfinite(l) && l > 0) << mu << " " << a;
+      EXPECT_TRUE(std::isfinite(h) && h > 0) << mu << " " << a;
+    }
 }
 
 // The spec's coefficients and the 2017 original are far off; the report says so (and the

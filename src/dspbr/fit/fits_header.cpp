@@ -72,11 +72,14 @@ inline float dspbr_fit_sheen_lambda(float cos_theta, float alpha_b) {{
   const float mu = std::fmin(std::fabs(cos_theta), 1.0f);
   if (mu <= 0.0f) return HUGE_VALF;  // grazing: fully masked
   if (mu >= 1.0f) return 0.0f;       // normal incidence: no masking
+  // below cos 1e-6, Lambda > 1e5 and G = 1/(1 + Lambda + ...) changes by < 1e-5: clamping keeps
+  // mu^2 out of float underflow (which would give inf/inf = NaN)
+  const float m = std::fmax(mu, 1e-6f);
   const float s = std::sqrt(alpha_b);
   float f[4];
   for (int i = 0; i < 4; ++i) f[i] = (q[4 * i] + q[4 * i + 1] * s + q[4 * i + 2] * (s * s)) / (1.0f + q[4 * i + 3] * s);
-  const float x = f[1] * f[1] * ((1.0f - mu * mu) / (mu * mu));
-  return f[0] * x / (std::sqrt(1.0f + x) + 1.0f) * std::exp(f[2] * mu / (1.0f + f[3] * mu));
+  const float x = f[1] * f[1] * ((1.0f - m * m) / (m * m));
+  return f[0] * x / (std::sqrt(1.0f + x) + 1.0f) * std::exp(f[2] * m / (1.0f + f[3] * m));
 }}
 
 )",

@@ -43,7 +43,8 @@ double sheen_lambda_rich(double cos_theta, double alpha_b, const double* q) {
   const double mu = std::min(1.0, std::abs(cos_theta));
   if (mu == 0.0) return HUGE_VAL;  // grazing: fully masked
   if (mu == 1.0) return 0.0;       // normal incidence: no masking (t = 0)
-  return std::exp(sheen_ln_lambda_rich_form<double>(q, mu, alpha_b));
+  // Same clamp as the generated header: below cos 1e-6, Lambda > 1e5 and G changes by < 1e-5.
+  return std::exp(sheen_ln_lambda_rich_form<double>(q, std::max(mu, 1e-6), alpha_b));
 }
 
 }  // namespace dspbr::fit

@@ -71,7 +71,8 @@ T sheen_ln_lambda_rich_form(const T* q, double mu, double alpha_b) {
   // sqrt(1 + x) - 1 = x / (sqrt(1 + x) + 1), without cancellation at small x.
   return log(b * x / (sqrt(T(1.0) + x) + T(1.0))) + c * T(mu) / (T(1.0) + d * T(mu));
 }
-// Lambda of the rich form for any cos_theta (|cos| used; cos = 0 gives +inf, 1 gives 0).
+// Lambda of the rich form for any cos_theta (|cos| used; cos = 0 gives +inf, 1 gives 0; |cos| is
+// clamped to >= 1e-6 otherwise, as in the generated header).
 double sheen_lambda_rich(double cos_theta, double alpha_b, const double* q);
 
 }  // namespace dspbr::fit
