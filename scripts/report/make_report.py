@@ -100,12 +100,12 @@ def sphere_plots(rep, figs):
             inside = ((xx + 0.5) / res * 2 - 1) ** 2 + (1 - (yy + 0.5) / res * 2) ** 2 < 1
             dev = np.where(inside, a - 1.0, np.nan)
             im = axes[0, k].imshow(dev, cmap="RdBu_r", vmin=-lim, vmax=lim)
-            axes[0, k].set_title(f"{row['parameter']} = {val:g}", fontsize=8)
+            axes[0, k].set_title(f"{val:g}", fontsize=8)
             axes[0, k].axis("off")
             d = a[inside] - 1.0
             csv_rows.append([row["name"], val, float(d.mean()), float(d.min()), float(d.max())])
         fig.colorbar(im, ax=axes[0, :].tolist(), shrink=0.8, label="E − 1 (red: gain, blue: loss)")
-        fig.suptitle(f"Furnace spheres, deviation from 1: {row['name']}", fontsize=9)
+        fig.suptitle(f"Furnace spheres, deviation from 1: {row['name']} ({row['parameter']} left to right)", fontsize=9)
         f = figs.save(fig, f"spheres_{slug(row['name'])}", ["row", row["parameter"], "mean_dev", "min_dev", "max_dev"],
                       csv_rows)
         f.update({"name": row["name"], "picture": row["png"], "exr": row["exr"], "note": row["note"],
