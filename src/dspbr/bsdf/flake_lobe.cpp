@@ -22,7 +22,7 @@ Rgb FlakeLobe::eval(const Vec3& v, const Vec3& l) const {
 }
 
 double FlakeLobe::pdf(const Vec3& v, const Vec3& l) const {
-  if (delta_ || v.z <= 0) return 0.0;
+  if (delta_ || v.z <= 0 || l.z <= 0) return 0.0;  // below the horizon: failed sample (bsdf.h)
   return flake_cone_pdf(v, l, n_f_, cos_cone_);
 }
 

@@ -21,9 +21,9 @@ Rgb MicrofacetReflection::eval(const Vec3& v, const Vec3& l) const {
 }
 
 double MicrofacetReflection::pdf(const Vec3& v, const Vec3& l) const {
-  // Density of l = reflect(v, h), h ~ D_v(h): D_v(h) / (4 v.h) (Heitz 2018), defined for every l
-  // (also below the horizon, where eval is 0), so that the pdf integrates to 1 over the sphere.
-  if (delta_ || v.z <= 0) return 0.0;
+  // Density of l = reflect(v, h), h ~ D_v(h): D_v(h) / (4 v.h) (Heitz 2018). Reflections below the
+  // horizon are failed samples (bsdf.h), so the pdf is 0 there and integrates to 1 - P(below).
+  if (delta_ || v.z <= 0 || l.z <= 0) return 0.0;
   const Vec3 s = v + l;
   const double len = length(s);
   if (!(len > 0)) return 0.0;
@@ -47,6 +47,7 @@ BsdfSample MicrofacetReflection::sample(const Vec3& v, const Vec3& u) const {
   const Vec3 h = ggx_sample_vndf(v, au_, av_, u.y, u.z);
   if (dot(v, h) <= 0) return s;
   s.l = normalize(reflect(v, h));
+  if (s.l.z <= 0) return s;  // reflected below the horizon: a failed sample (bsdf.h)
   s.pdf = pdf(v, s.l);
   if (!(s.pdf > 0)) return s;
   s.weight = eval(v, s.l) * (std::abs(s.l.z) / s.pdf);
