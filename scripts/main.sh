@@ -9,4 +9,5 @@ bash "$here/scripts/build.sh"
 dspbr="${BUILD_DIR:-$here/build}/dspbr"
 "$dspbr" lut --out "$here/luts"
 "$dspbr" fit --out "$here/fits"
-"$dspbr" validate --out "$here/report"
+# Failed checks are reported in report/index.html (and listed on stderr), not fatal to the job.
+"$dspbr" validate --out "$here/report" --allow-failures
