@@ -201,35 +201,8 @@ void run_bench(const LutArgs& a) {
     for (double e : reference.errors) ref_err = std::max(ref_err, e);
     std::string dims;
     for (const Axis& ax : reference.axes) dims += (dims.empty() ? "" : "x") + std::to_string(ax.size);
-    for (Integrator integ : {Integrator::Qmc, Integrator::Mc}) {
-      const std::vector<int> budgets = avg ? std::vector<int>{8 << 10, 8 << 12, 8 << 14, 8 << 16}
-                                           : std::vector<int>{8 << 8, 8 << 10, 8 << 12, 8 << 14};
-      for (int n : budgets) {
-        LutOptions o = base;
-        o.tables = {name};
-        o.integrator = integ;
-        o.samples = n;
-        o.target_error = 0;  // fixed budget
-        o.progress = false;
-        const auto t0 = std::chrono::steady_clock::now();
-        const Table t = generate_luts(o).front();
-        const double wall = seconds_since(t0);
-        double max_abs = 0, max_se = 0;
-        for (size_t i = 0; i < t.size(); ++i) {
-          max_abs = std::max(max_abs, std::abs(t.values[i] - reference.values[i]));
-          max_se = std::max(max_se, t.errors[i]);
-        }
-        const size_t cells = name == "Base_E" ? t.size() / size_t(t.axes[0].size)
-                             : name == "Base_E_avg" ? size_t(t.axes[1].size) : t.size();
-        std::printf("| %s | %s | %s | %d | %.3f | %.3f | %.2e | %.2e |\n", name.c_str(), dims.c_str(),
-                    integrator_name(integ), n, wall, 1e3 * wall / double(cells), max_abs, max_se);
-        std::fflush(stdout);
-      }
-    }
-    {  // the default settings: adaptive QMC
-      LutOptions o = base;
-      o.tables = {name};
-      o.progress = false;
+    // Runs one setting and prints its row: wall time, time per cell, max error against the reference.
+    auto measure = [&](const LutOptions& o, const std::string& integrator, const std::string& samples) {
       const auto t0 = std::chrono::steady_clock::now();
       const Table t = generate_luts(o).front();
       const double wall = seconds_since(t0);
@@ -240,8 +213,28 @@ void run_bench(const LutArgs& a) {
       }
       const size_t cells = name == "Base_E" ? t.size() / size_t(t.axes[0].size)
                            : name == "Base_E_avg" ? size_t(t.axes[1].size) : t.size();
-      std::printf("| %s | %s | qmc adaptive (default) | <= %d | %.3f | %.3f | %.2e | %.2e |\n", name.c_str(),
-                  dims.c_str(), lut_settings(name, o).samples, wall, 1e3 * wall / double(cells), max_abs, max_se);
+      std::printf("| %s | %s | %s | %s | %.3f | %.3f | %.2e | %.2e |\n", name.c_str(), dims.c_str(),
+                  integrator.c_str(), samples.c_str(), wall, 1e3 * wall / double(cells), max_abs, max_se);
+      std::fflush(stdout);
+    };
+    for (Integrator integ : {Integrator::Qmc, Integrator::Mc}) {
+      const std::vector<int> budgets = avg ? std::vector<int>{8 << 10, 8 << 12, 8 << 14, 8 << 16}
+                                           : std::vector<int>{8 << 8, 8 << 10, 8 << 12, 8 << 14};
+      for (int n : budgets) {
+        LutOptions o = base;
+        o.tables = {name};
+        o.integrator = integ;
+        o.samples = n;
+        o.target_error = 0;  // fixed budget
+        o.progress = false;
+        measure(o, integrator_name(integ), std::to_string(n));
+      }
+    }
+    {  // the default settings: adaptive QMC
+      LutOptions o = base;
+      o.tables = {name};
+      o.progress = false;
+      measure(o, "qmc adaptive (default)", "<= " + std::to_string(lut_settings(name, o).samples));
     }
     std::printf("| %s | %s | reference (qmc) | %d | | | | %.2e |\n", name.c_str(), dims.c_str(), ref.samples, ref_err);
   }
