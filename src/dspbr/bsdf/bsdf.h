@@ -13,6 +13,7 @@
 //   transmittance, Fresnel included) / pdf. A sample that fails (absorbed, below the horizon)
 //   has valid = false.
 #pragma once
+#include <cmath>
 #include <cstdint>
 
 #include "dspbr/vec3.h"
@@ -46,5 +47,18 @@ class Bsdf {
   // Union of the flags of the lobes this BSDF can produce (for reports and masks).
   virtual uint32_t flags() const = 0;
 };
+
+// The non-delta sample of `bsdf` in direction l, by the conventions above: pdf = bsdf.pdf(v, l),
+// weight = eval(v, l) |l.n| / pdf; invalid (a failed sample) where the pdf is 0.
+inline BsdfSample make_sample(const Bsdf& bsdf, const Vec3& v, const Vec3& l, uint32_t flags) {
+  BsdfSample s;
+  s.l = l;
+  s.pdf = bsdf.pdf(v, l);
+  if (!(s.pdf > 0)) return s;
+  s.weight = bsdf.eval(v, l) * (std::abs(l.z) / s.pdf);
+  s.flags = flags;
+  s.valid = true;
+  return s;
+}
 
 }  // namespace dspbr

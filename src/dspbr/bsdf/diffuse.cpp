@@ -44,12 +44,7 @@ BsdfSample DiffuseBase::sample(const Vec3& v, const Vec3& u) const {
   s.l = sample_cosine_hemisphere(u.y, u.z);
   const bool transmit = u.x < p_.translucency;  // u.x is a fresh uniform for this choice
   if (transmit) s.l = -s.l;
-  s.pdf = pdf(v, s.l);
-  if (!(s.pdf > 0)) return s;
-  s.weight = eval(v, s.l) * (std::abs(s.l.z) / s.pdf);
-  s.flags = (transmit ? kLobeTransmission : kLobeReflection) | kLobeDiffuse;
-  s.valid = true;
-  return s;
+  return make_sample(*this, v, s.l, (transmit ? kLobeTransmission : kLobeReflection) | kLobeDiffuse);
 }
 
 uint32_t DiffuseBase::flags() const {

@@ -40,12 +40,7 @@ BsdfSample FlakeLobe::sample(const Vec3& v, const Vec3& u) const {
     s.valid = true;
     return s;
   }
-  s.pdf = pdf(v, s.l);
-  if (!(s.pdf > 0)) return s;
-  s.weight = eval(v, s.l) * (std::abs(s.l.z) / s.pdf);
-  s.flags = kLobeReflection | kLobeGlossy;
-  s.valid = true;
-  return s;
+  return make_sample(*this, v, s.l, kLobeReflection | kLobeGlossy);
 }
 
 double FlakeLobe::sampling_weight(const Vec3& v) const {

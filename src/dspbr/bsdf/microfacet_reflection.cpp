@@ -48,12 +48,7 @@ BsdfSample MicrofacetReflection::sample(const Vec3& v, const Vec3& u) const {
   if (dot(v, h) <= 0) return s;
   s.l = normalize(reflect(v, h));
   if (s.l.z <= 0) return s;  // reflected below the horizon: a failed sample (bsdf.h)
-  s.pdf = pdf(v, s.l);
-  if (!(s.pdf > 0)) return s;
-  s.weight = eval(v, s.l) * (std::abs(s.l.z) / s.pdf);
-  s.flags = kLobeReflection | kLobeGlossy;
-  s.valid = true;
-  return s;
+  return make_sample(*this, v, s.l, kLobeReflection | kLobeGlossy);
 }
 
 uint32_t MicrofacetReflection::flags() const {

@@ -29,12 +29,7 @@ BsdfSample MultiScatterReflection::sample(const Vec3& v, const Vec3& u) const {
   BsdfSample s;
   if (v.z <= 0) return s;
   s.l = sample_cosine_hemisphere(u.y, u.z);
-  s.pdf = pdf(v, s.l);
-  if (!(s.pdf > 0)) return s;
-  s.weight = eval(v, s.l) * (s.l.z / s.pdf);
-  s.flags = kLobeReflection | kLobeDiffuse;
-  s.valid = true;
-  return s;
+  return make_sample(*this, v, s.l, kLobeReflection | kLobeDiffuse);
 }
 
 double MultiScatterReflection::sampling_weight(const Vec3& v) const {

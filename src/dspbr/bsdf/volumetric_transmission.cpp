@@ -76,12 +76,7 @@ BsdfSample VolumetricTransmission::sample(const Vec3& v, const Vec3& u) const {
   }
   const Vec3 h = ggx_sample_vndf(v, au_, av_, u.y, u.z);
   if (dot(v, h) <= 0 || !refract_dir(v, h, eta, s.l)) return s;  // TIR: the sample fails
-  s.pdf = pdf(v, s.l);
-  if (!(s.pdf > 0)) return s;
-  s.weight = eval(v, s.l) * (std::abs(s.l.z) / s.pdf);
-  s.flags = kLobeTransmission | kLobeGlossy;
-  s.valid = true;
-  return s;
+  return make_sample(*this, v, s.l, kLobeTransmission | kLobeGlossy);
 }
 
 uint32_t VolumetricTransmission::flags() const {
