@@ -21,6 +21,7 @@ struct Chi2Settings {
   int theta_bins = 90;          // over [0, pi]; phi gets 2 * theta_bins bins over [0, 2 pi)
   int integration_order = 4;    // Gauss-Legendre nodes per cell and dimension for the expected counts
   int max_depth = 4;            // adaptive refinement levels (each splits a cell into 4)
+  int max_support_depth = 8;    // levels for cells crossed by the boundary of the pdf's support (jumps to 0)
   double min_expected = 5.0;    // pooling threshold
   double significance = 0.01;   // family-wise level before the Sidak correction
   int num_tests = 1;            // m in the Sidak correction (tests in the whole run)
