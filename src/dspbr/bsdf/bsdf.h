@@ -6,7 +6,7 @@
 //   surface. v may lie below the surface (v.z < 0: the viewer is inside a volumetric object).
 // - eval(v, l) returns f(v, l) WITHOUT the cosine factor |l.n|, for the non-delta lobes only.
 // - pdf(v, l) is the solid-angle density with which sample(v, .) produces l through its
-//   non-delta lobes. It integrates over the sphere to 1 - (total probability of delta lobes).
+//   non-delta lobes. It integrates over the sphere to 1 - P(delta lobes) - P(failed samples).
 // - sample(v, u) draws l. For a non-delta sample: pdf = pdf(v, l) (the full mixture density) and
 //   weight = eval(v, l) |l.n| / pdf. For a delta sample (perfectly smooth lobe): flags has Delta,
 //   pdf is the discrete probability of choosing that lobe, and weight = (lobe reflectance or

@@ -47,7 +47,7 @@ BsdfSample MicrofacetReflection::sample(const Vec3& v, const Vec3& u) const {
   const Vec3 h = ggx_sample_vndf(v, au_, av_, u.y, u.z);
   if (dot(v, h) <= 0) return s;
   s.l = normalize(reflect(v, h));
-  if (s.l.z <= 0) return s;  // reflected below the horizon: a failed sample (bsdf.h)
+  // Below the horizon pdf() is 0, so make_sample returns a failed sample (bsdf.h).
   return make_sample(*this, v, s.l, kLobeReflection | kLobeGlossy);
 }
 
