@@ -202,6 +202,11 @@ Estimate ggx_E(double mu, double r, const IntegratorSettings& s, uint64_t stream
   return combine<2>(ggx_moments(mu, r, s, stream), [](const std::array<double, 2>& m) { return m[0]; });
 }
 
+Estimate ggx_beta(double mu, double r, const IntegratorSettings& s, uint64_t stream) {
+  return combine<2>(ggx_moments(mu, r, s, stream),
+                    [](const std::array<double, 2>& m) { return m[0] > 0 ? m[1] / m[0] : 0.0; });
+}
+
 Estimate ggx_E_avg(double r, const IntegratorSettings& s, uint64_t stream) {
   return combine<2>(ggx_avg_moments(r, s, stream), [](const std::array<double, 2>& m) { return m[0]; });
 }

@@ -80,6 +80,9 @@ Estimate ggx_E(double mu, double r, const IntegratorSettings& s, uint64_t stream
 Estimate ggx_E_avg(double r, const IntegratorSettings& s, uint64_t stream = 0);
 // E(mu; r, f0), computing E_m,avg(r) itself (stream + 1 is used for it).
 Estimate base_E(double mu, double r, double f0, const IntegratorSettings& s, uint64_t stream = 0);
+// beta(mu; r) = B / E_m, B = Integral M_r (1 - v.h)^5 mu_l dl: the Schlick moment relative to E_m,
+// from one integration of both (the renderer layout stores it; docs/luts.md).
+Estimate ggx_beta(double mu, double r, const IntegratorSettings& s, uint64_t stream = 0);
 // E_avg(r, f0).
 Estimate base_E_avg(double r, double f0, const IntegratorSettings& s, uint64_t stream = 0);
 // E_b(mu; alpha_b) for the main or alternative sheen.

@@ -1,14 +1,12 @@
 #include "dspbr/lut/generate.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <memory>
 #include <stdexcept>
 
-#include "dspbr/progress.h"
+#include "dspbr/lut/parallel_cells.h"
 
 namespace dspbr {
 
@@ -22,20 +20,6 @@ uint64_t stream_of(uint64_t table, uint64_t cell) { return (table << 32) | cell;
 // Largest size per axis and total cells accepted (keeps memory and run time sane).
 constexpr int kMaxAxisSize = 4096;
 constexpr size_t kMaxCells = size_t(1) << 24;
-
-// Runs body(i) for i in [0, n) on the arena, reporting progress as `label`.
-void parallel_cells(tbb::task_arena& arena, size_t n, const std::string& label, bool progress,
-                    const std::function<void(size_t)>& body) {
-  Progress report(label, n, progress && Progress::stderr_is_terminal());
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i != r.end(); ++i) {
-        body(i);
-        report.add();
-      }
-    });
-  });
-}
 
 std::vector<double> coords(const Axis& a) {
   std::vector<double> x(size_t(a.size));

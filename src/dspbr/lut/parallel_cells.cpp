@@ -1,0 +1,23 @@
+#include "dspbr/lut/parallel_cells.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "dspbr/progress.h"
+
+namespace dspbr {
+
+void parallel_cells(tbb::task_arena& arena, size_t n, const std::string& label, bool progress,
+                    const std::function<void(size_t)>& body) {
+  Progress report(label, n, progress && Progress::stderr_is_terminal());
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i != r.end(); ++i) {
+        body(i);
+        report.add();
+      }
+    });
+  });
+}
+
+}  // namespace dspbr

@@ -1,0 +1,150 @@
+#include "dspbr/lut/renderer_generate.h"
+
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "dspbr/lut/parallel_cells.h"
+#include "dspbr/quadrature.h"
+
+namespace dspbr {
+
+namespace {
+
+// Stream ids of the renderer tables (high 32 bits), disjoint from the published tables' ids.
+enum : uint64_t { kStreamGgxE = 16, kStreamGgxBeta = 17, kStreamSheenE = 18, kStreamSheenAshE = 19 };
+
+// Roughness at which the r = 0 row of GGX_E is integrated: that row holds the limit of
+// E_m(a alpha; r) as r -> 0 at fixed a = mu / alpha (the ggx_cos warp's coordinate), reached to
+// ~1e-6 at r = 0.02 (the integrator's mu clamp of 1e-6 stays below every sample's mu there).
+constexpr double kGgxLimitRoughness = 0.02;
+
+WarpedTable make_table(const std::string& name, int scale) {
+  WarpedTable t;
+  t.name = name;
+  t.axes = renderer_default_axes(name, scale);
+  t.values.assign(t.size(), 0.0);
+  t.errors.assign(t.size(), 0.0);
+  return t;
+}
+
+double grid_x(const WarpedAxis& a, int i) { return double(i) / double(a.size - 1); }
+
+// Rounds the stored values to float: the generated header, shaders and images hold floats, and
+// the averages are integrated from exactly those.
+void round_to_float(WarpedTable& t) {
+  for (double& v : t.values) v = double(float(v));
+}
+
+// 2 Integral_0^1 g(mu) mu dmu for a g that is smooth inside each cell of the ggx_cos grid of
+// `axis` at roughness alpha > 0 (a lookup is C1 across cells): Gauss-Legendre in mu, 4 panels of
+// 8 nodes per cell [mu_k, mu_k+1], mu_k = from_grid(k / (N - 1)).
+template <class G>
+double cosine_average_ggx_cos(const WarpedAxis& axis, double alpha, G&& g) {
+  static const QuadratureRule rule = gauss_legendre(8);
+  const int cells = axis.size - 1;
+  double sum = 0;
+  for (int c = 0; c < cells; ++c) {
+    const double m0 = axis.warp.from_grid(double(c) / cells, alpha);
+    const double m1 = axis.warp.from_grid(double(c + 1) / cells, alpha);
+    if (m1 > m0) sum += integrate_gl([&](double mu) { return 2.0 * mu * g(mu); }, m0, m1, 4, rule);
+  }
+  return sum;
+}
+
+}  // namespace
+
+void fill_renderer_averages(RendererLuts& luts) {
+  // 1 - E^_m from a table of 1 - values (no cancellation where E_m is within float epsilon of 1).
+  WarpedTable missing = luts.ggx_E;
+  for (double& v : missing.values) v = 1.0 - v;
+  const WarpedAxis& r_axis = luts.ggx_E.axes[0];
+  const WarpedAxis& mu_axis = luts.ggx_E.axes[1];
+  WarpedTable& e_avg = luts.ggx_E_avg;
+  e_avg.encoding = Encoding::LogOneMinus;
+  double max_error = 0;
+  for (double e : luts.ggx_E.errors) max_error = std::max(max_error, e);
+  for (int j = 0; j < e_avg.axes[0].size; ++j) {
+    const double r = e_avg.axes[0].warp.from_grid(grid_x(e_avg.axes[0], j));
+    const double alpha = r * r, x0 = r_axis.warp.to_grid(r);
+    const double m = cosine_average_ggx_cos(mu_axis, alpha, [&](double mu) {
+      return std::max(0.0, missing.interpolate(x0, mu_axis.warp.to_grid(mu, alpha)));
+    });
+    e_avg.values[size_t(j)] = std::log(std::max(m, 1e-300));
+    e_avg.errors[size_t(j)] = max_error;
+  }
+  WarpedTable& b_avg = luts.ggx_B_avg;
+  for (int j = 0; j < b_avg.axes[0].size; ++j) {
+    const double r = b_avg.axes[0].warp.from_grid(grid_x(b_avg.axes[0], j));
+    const double alpha = r * r;
+    double v;
+    if (alpha < 1e-12) {  // mirror: E_m = 1, B = beta = (1 - mu)^5 sampled in plain mu
+      static const QuadratureRule rule = gauss_legendre(8);
+      v = integrate_gl([&](double mu) { return 2.0 * mu * luts.B(mu, 0.0); }, 0.0, 1.0, 64, rule);
+    } else {
+      v = cosine_average_ggx_cos(mu_axis, alpha, [&](double mu) { return luts.B(mu, r); });
+    }
+    b_avg.values[size_t(j)] = v;
+    b_avg.errors[size_t(j)] = max_error;
+  }
+  round_to_float(e_avg);
+  round_to_float(b_avg);
+}
+
+RendererLuts generate_renderer_luts(const LutOptions& opt, int scale) {
+  validate_lut_options(opt);
+  tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
+  RendererLuts out;
+  for (const char* name : RendererLuts::names()) *out.table(name) = make_table(name, scale);
+  const IntegratorSettings s = lut_settings("GGX_E", opt);
+
+  {  // GGX_E over (r, ggx_cos(mu; r^2))
+    WarpedTable& t = out.ggx_E;
+    const WarpedAxis &ar = t.axes[0], &am = t.axes[1];
+    parallel_cells(arena, t.size(), "GGX_E (renderer)", opt.progress, [&](size_t i) {
+      const int ir = int(i / size_t(am.size)), im = int(i % size_t(am.size));
+      const double r = std::max(ar.warp.from_grid(grid_x(ar, ir)), kGgxLimitRoughness);
+      const double mu = am.warp.from_grid(grid_x(am, im), r * r);
+      const Estimate e = ggx_E(mu, r, s, (kStreamGgxE << 32) | i);
+      t.values[i] = e.value;
+      t.errors[i] = e.error;
+    });
+    round_to_float(t);
+  }
+  {  // GGX_beta - (1 - mu)^5 over (r^2, ggx_cos(mu; r^2)); zero on the r = 0 row (mirror)
+    WarpedTable& t = out.ggx_beta;
+    const WarpedAxis &ar = t.axes[0], &am = t.axes[1];
+    parallel_cells(arena, t.size(), "GGX_beta (renderer)", opt.progress, [&](size_t i) {
+      const int ir = int(i / size_t(am.size)), im = int(i % size_t(am.size));
+      const double r = ar.warp.from_grid(grid_x(ar, ir));
+      if (r == 0) return;  // beta = (1 - mu)^5 exactly
+      const double mu = am.warp.from_grid(grid_x(am, im), r * r);
+      const Estimate e = ggx_beta(mu, r, s, (kStreamGgxBeta << 32) | i);
+      t.values[i] = e.value - std::pow(1.0 - mu, 5);
+      t.errors[i] = e.error;
+    });
+    round_to_float(t);
+  }
+  // The sheen tables reach alpha_b = 1/256 at grazing angles, where the estimator's variance is
+  // largest: their default cap is 8x the other tables' (only those cells get near it).
+  IntegratorSettings s_sheen = s;
+  if (opt.samples == 0) s_sheen.samples = 8 * lut_default_samples("Sheen_E");
+  for (const bool ash : {false, true}) {
+    WarpedTable& t = ash ? out.sheen_ash_E : out.sheen_E;
+    const WarpedAxis &aa = t.axes[0], &am = t.axes[1];
+    parallel_cells(arena, t.size(), t.name + " (renderer)", opt.progress, [&](size_t i) {
+      const int ia = int(i / size_t(am.size)), im = int(i % size_t(am.size));
+      const Estimate e = sheen_E(am.warp.from_grid(grid_x(am, im)), aa.warp.from_grid(grid_x(aa, ia)),
+                                 ash ? SheenModel::Ash : SheenModel::Main, s_sheen,
+                                 ((ash ? kStreamSheenAshE : kStreamSheenE) << 32) | i);
+      t.values[i] = e.value;
+      t.errors[i] = e.error;
+    });
+    round_to_float(t);
+  }
+  fill_renderer_averages(out);
+  return out;
+}
+
+}  // namespace dspbr

@@ -1,0 +1,119 @@
+#include "dspbr/lut/renderer_luts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "dspbr/fresnel.h"
+
+namespace dspbr {
+
+namespace {
+
+// Axis domains and warps, chosen by measuring the lookup error over the whole domain
+// (docs/luts.md, "Renderer layout"): cos warps that follow the grazing features, samples where
+// the functions bend.
+WarpedAxis axis(const char* name, int size, WarpKind kind, double p, double lo) {
+  return WarpedAxis{name, size, Warp{kind, p, lo}};
+}
+constexpr double kSheenMinAlphaB = 1.0 / 256.0;  // sheen tables: alpha_b below evaluates here
+constexpr double kSheenMinCos = 1e-3;            // sheen tables: cos below evaluates here
+constexpr double kAvgMinRoughness = 1e-3;        // GGX_E_avg: r below evaluates here
+
+int scaled(int n, int scale) { return (n - 1) * scale + 1; }
+
+}  // namespace
+
+std::vector<WarpedAxis> renderer_default_axes(const std::string& name, int scale) {
+  if (scale < 1) throw std::invalid_argument("renderer table scale must be >= 1");
+  const int s = scale;
+  if (name == "GGX_E")
+    return {axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0),
+            axis("cos_theta", scaled(64, s), WarpKind::GgxCos, 0.6, 0.0)};
+  if (name == "GGX_beta")  // stores beta - (1 - mu)^5, which vanishes as r -> 0
+    return {axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0),
+            axis("cos_theta", scaled(32, s), WarpKind::GgxCos, 0.6, 0.0)};
+  if (name == "GGX_E_avg") return {axis("roughness", scaled(32, s), WarpKind::Power, 0.5, kAvgMinRoughness)};
+  if (name == "GGX_B_avg") return {axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0)};
+  if (name == "Sheen_E" || name == "Sheen_ash_E")
+    return {axis("alpha_b", scaled(32, s), WarpKind::Power, 0.25, kSheenMinAlphaB),
+            axis("cos_theta", scaled(32, s), WarpKind::Power, 0.25, kSheenMinCos)};
+  throw std::invalid_argument("unknown renderer table '" + name + "'");
+}
+
+const std::vector<const char*>& RendererLuts::names() {
+  static const std::vector<const char*> n{"GGX_E", "GGX_beta", "GGX_E_avg", "GGX_B_avg", "Sheen_E", "Sheen_ash_E"};
+  return n;
+}
+
+const WarpedTable* RendererLuts::table(const std::string& name) const {
+  return const_cast<RendererLuts*>(this)->table(name);
+}
+
+WarpedTable* RendererLuts::table(const std::string& name) {
+  if (name == "GGX_E") return &ggx_E;
+  if (name == "GGX_beta") return &ggx_beta;
+  if (name == "GGX_E_avg") return &ggx_E_avg;
+  if (name == "GGX_B_avg") return &ggx_B_avg;
+  if (name == "Sheen_E") return &sheen_E;
+  if (name == "Sheen_ash_E") return &sheen_ash_E;
+  return nullptr;
+}
+
+size_t RendererLuts::stored_values() const {
+  size_t n = 0;
+  for (const char* name : names()) n += table(name)->size();
+  return n;
+}
+
+double RendererLuts::E_m(double cos_theta, double roughness) const {
+  const double r = std::clamp(roughness, 0.0, 1.0);
+  const double x0 = ggx_E.axes[0].warp.to_grid(r);
+  const double x1 = ggx_E.axes[1].warp.to_grid(cos_theta, r * r);
+  return ggx_E.lookup_grid(x0, x1);
+}
+
+double RendererLuts::B(double cos_theta, double roughness) const {
+  const double r = std::clamp(roughness, 0.0, 1.0);
+  const double mu = std::clamp(cos_theta, 0.0, 1.0);
+  // stored: beta - (1 - mu)^5 (zero for the mirror, so the r = 0 row of the ggx_cos grid holds it)
+  const double beta = std::pow(1.0 - mu, 5) + ggx_beta.lookup_grid(ggx_beta.axes[0].warp.to_grid(r),
+                                                                    ggx_beta.axes[1].warp.to_grid(mu, r * r));
+  return beta * E_m(mu, r);
+}
+
+double RendererLuts::missing_E_m_avg(double roughness) const {
+  // Stored: ln(1 - E_m,avg); the decoded 1 - E_m,avg keeps its relative precision as it vanishes.
+  return std::exp(ggx_E_avg.interpolate(ggx_E_avg.axes[0].warp.to_grid(roughness)));
+}
+
+double RendererLuts::E_m_avg(double roughness) const { return 1.0 - missing_E_m_avg(roughness); }
+
+double RendererLuts::B_avg(double roughness) const {
+  return ggx_B_avg.lookup_grid(ggx_B_avg.axes[0].warp.to_grid(roughness));
+}
+
+double RendererLuts::E_base(double cos_theta, double roughness, double f0) const {
+  const double e = E_m(cos_theta, roughness), b = B(cos_theta, roughness);
+  // spec "Energy Preservation": E = f0 A + (1 - f0) B + F_ms(f0, 1; E_m,avg) (1 - A)
+  return f0 * e + (1.0 - f0) * b + fresnel_ms(f0, 1.0, E_m_avg(roughness)) * (1.0 - e);
+}
+
+double RendererLuts::E_base_avg(double roughness, double f0) const {
+  const double missing = missing_E_m_avg(roughness);
+  const double e_avg = 1.0 - missing;
+  return f0 * e_avg + (1.0 - f0) * B_avg(roughness) + fresnel_ms(f0, 1.0, e_avg) * missing;
+}
+
+double RendererLuts::E_sheen(double cos_theta, double alpha_b) const {
+  return sheen_E.lookup_grid(sheen_E.axes[0].warp.to_grid(alpha_b), sheen_E.axes[1].warp.to_grid(cos_theta));
+}
+
+double RendererLuts::E_sheen_ash(double cos_theta, double alpha_b) const {
+  return sheen_ash_E.lookup_grid(sheen_ash_E.axes[0].warp.to_grid(alpha_b),
+                                 sheen_ash_E.axes[1].warp.to_grid(cos_theta));
+}
+
+}  // namespace dspbr

@@ -1,0 +1,58 @@
+// The renderer layout of the DSPBR energy-compensation tables (docs/luts.md, "Renderer layout"):
+// warped endpoint grids, Catmull-Rom lookups, and Base_E / Base_E_avg derived exactly in f0 from
+// two GGX moments (no f0 axis to interpolate):
+//
+//   GGX_E       [roughness][cos_theta]  E_m(mu; r)                       cos axis ggx_cos(p = 0.6)
+//   GGX_beta    [roughness][cos_theta]  beta - (1 - mu)^5, beta = B / E_m, B = Integral M_r (1 - v.h)^5 mu_l dl
+//                                       (the mirror's beta subtracted: 0 on the r = 0 row)
+//   GGX_E_avg   [roughness]             ln(1 - E_m,avg), E_m,avg = 2 Integral E^_m mu dmu of the lookup
+//   GGX_B_avg   [roughness]             2 Integral B^ mu dmu of the lookup
+//   Sheen_E     [alpha_b][cos_theta]    E_b, main sheen                  both axes power(p = 0.25)
+//   Sheen_ash_E [alpha_b][cos_theta]    E_b, alternative sheen
+//
+//   E(mu; r, f0)     = f0 E_m + (1 - f0) B + F_ms(f0, 1; E_m,avg) (1 - E_m),  B = beta E_m      (spec "Energy
+//   E_avg(r, f0)     = f0 E_m,avg + (1 - f0) B_avg + F_ms(f0, 1; E_m,avg) (1 - E_m,avg)  Preservation")
+//
+// The averages are the cosine averages of the directional lookups themselves (integrated from
+// the interpolant, float-rounded samples), so the spec's multiple-scattering lobe and B_c built
+// from the lookups conserve energy to the lookups' accuracy, also at r -> 0 where 1 - E_m,avg
+// vanishes like r^4 (stored as a logarithm for that reason).
+//
+// Limits: cos_theta in [0, 1] (E_m at cos = 0 is the grazing limit of the integrator, mu = 1e-6);
+// roughness in [0, 1] (r = 0: E_m = 1, the r = 0 samples hold the limit of E_m(a alpha; r) as
+// r -> 0 at fixed a = mu / alpha); E_m,avg below r = 1e-3 evaluates at r = 1e-3 (1 - E_m,avg
+// < 1e-10 there); sheen alpha_b below 1/256 evaluates at 1/256 and cos below 1e-3 at 1e-3 (the
+// spec's Lambda fit makes the main sheen's albedo diverge like 1/mu at grazing).
+#pragma once
+#include <vector>
+
+#include "dspbr/lut/warped_table.h"
+
+namespace dspbr {
+
+struct RendererLuts {
+  WarpedTable ggx_E, ggx_beta, ggx_E_avg, ggx_B_avg, sheen_E, sheen_ash_E;
+
+  // Table names in canonical order and the tables by name (nullptr when unknown).
+  static const std::vector<const char*>& names();
+  const WarpedTable* table(const std::string& name) const;
+  WarpedTable* table(const std::string& name);
+  size_t stored_values() const;  // number of stored samples of all tables
+
+  // Lookups (arguments: cos theta first, roughness r, alpha_b = r_b^2, f0).
+  double E_m(double cos_theta, double roughness) const;
+  double B(double cos_theta, double roughness) const;  // Schlick moment = beta E_m
+  double E_m_avg(double roughness) const;
+  double missing_E_m_avg(double roughness) const;  // 1 - E_m,avg, without cancellation
+  double B_avg(double roughness) const;
+  double E_base(double cos_theta, double roughness, double f0) const;
+  double E_base_avg(double roughness, double f0) const;
+  double E_sheen(double cos_theta, double alpha_b) const;
+  double E_sheen_ash(double cos_theta, double alpha_b) const;
+};
+
+// The default axes (sizes and warps) of a renderer table, `scale` times the default sample count
+// per axis (scale 1: the default renderer set, 5184 values; the reference BSDF's set uses 2).
+std::vector<WarpedAxis> renderer_default_axes(const std::string& name, int scale = 1);
+
+}  // namespace dspbr

@@ -1,0 +1,124 @@
+#include "dspbr/lut/warped_table.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace dspbr {
+
+double Warp::to_grid(double v, double alpha) const {
+  switch (kind) {
+    case WarpKind::Power: {
+      const double u = (std::clamp(v, lo, 1.0) - lo) / (1.0 - lo);
+      return p == 1 ? u : std::pow(u, p);
+    }
+    case WarpKind::GgxCos: {
+      const double mu = std::clamp(v, 0.0, 1.0);
+      const double d = mu + alpha * std::sqrt(std::max(0.0, 1.0 - mu * mu));
+      const double t = d > 0 ? mu / d : 1.0;  // alpha = 0 (mirror): t = 1 for every mu
+      return std::pow(t, p);
+    }
+    case WarpKind::LogRoughness:
+      return std::log(std::clamp(v, lo, 1.0) / lo) / std::log(1.0 / lo);
+  }
+  return 0;
+}
+
+double Warp::from_grid(double x, double alpha) const {
+  x = std::clamp(x, 0.0, 1.0);
+  switch (kind) {
+    case WarpKind::Power:
+      return lo + (1.0 - lo) * (p == 1 ? x : std::pow(x, 1.0 / p));
+    case WarpKind::GgxCos: {
+      // mu (1 - t) = t alpha sqrt(1 - mu^2)  =>  mu = t alpha / sqrt((1 - t)^2 + t^2 alpha^2)
+      const double t = std::pow(x, 1.0 / p);
+      const double d = std::sqrt((1.0 - t) * (1.0 - t) + t * t * alpha * alpha);
+      return d > 0 ? std::min(1.0, t * alpha / d) : 1.0;
+    }
+    case WarpKind::LogRoughness:
+      return lo * std::pow(1.0 / lo, x);
+  }
+  return 0;
+}
+
+std::string Warp::describe() const {
+  switch (kind) {
+    case WarpKind::Power: return fmt::format("power(p={:g}, lo={:g})", p, lo);
+    case WarpKind::GgxCos: return fmt::format("ggx_cos(p={:g})", p);
+    case WarpKind::LogRoughness: return fmt::format("log(lo={:g})", lo);
+  }
+  return "";
+}
+
+size_t WarpedTable::size() const {
+  size_t n = 1;
+  for (const WarpedAxis& a : axes) n *= size_t(a.size);
+  return n;
+}
+
+void catmull_rom_weights(double f, double w[4]) {
+  const double f2 = f * f, f3 = f2 * f;
+  w[0] = 0.5 * (-f3 + 2.0 * f2 - f);
+  w[1] = 0.5 * (3.0 * f3 - 5.0 * f2 + 2.0);
+  w[2] = 0.5 * (-3.0 * f3 + 4.0 * f2 + f);
+  w[3] = 0.5 * (f3 - f2);
+}
+
+namespace {
+
+// Cell index i in [0, n - 2] and fraction f of grid coordinate x.
+void locate(double x, int n, int* i, double* f) {
+  const double c = std::clamp(x, 0.0, 1.0) * (n - 1);
+  *i = std::min(int(c), n - 2);
+  *f = c - *i;
+}
+
+// Sample k of a row of n samples, extended linearly beyond both ends.
+template <class At>
+double extended(At&& at, int k, int n) {
+  if (k < 0) return 2.0 * at(0) - at(1);
+  if (k >= n) return 2.0 * at(n - 1) - at(n - 2);
+  return at(k);
+}
+
+}  // namespace
+
+double WarpedTable::interpolate(double x0, double x1) const {
+  if (axes.empty() || axes.size() > 2) throw std::invalid_argument("WarpedTable: rank must be 1 or 2 (" + name + ")");
+  const int n0 = axes[0].size;
+  int i0;
+  double f0, w0[4];
+  locate(x0, n0, &i0, &f0);
+  catmull_rom_weights(f0, w0);
+  if (axes.size() == 1) {
+    auto at = [&](int k) { return values[size_t(k)]; };
+    double s = 0;
+    for (int a = 0; a < 4; ++a) s += w0[a] * extended(at, i0 - 1 + a, n0);
+    return s;
+  }
+  const int n1 = axes[1].size;
+  int i1;
+  double f1, w1[4];
+  locate(x1, n1, &i1, &f1);
+  catmull_rom_weights(f1, w1);
+  // Interpolate along the fast axis in each of the four (extended) rows, then across the rows.
+  auto row = [&](int r) {
+    auto at = [&](int k) { return values[size_t(r) * size_t(n1) + size_t(k)]; };
+    double s = 0;
+    for (int b = 0; b < 4; ++b) s += w1[b] * extended(at, i1 - 1 + b, n1);
+    return s;
+  };
+  auto row_at = [&](int r) { return row(r); };
+  double s = 0;
+  for (int a = 0; a < 4; ++a) s += w0[a] * extended(row_at, i0 - 1 + a, n0);
+  return s;
+}
+
+double WarpedTable::lookup_grid(double x0, double x1) const {
+  const double s = interpolate(x0, x1);
+  return encoding == Encoding::LogOneMinus ? 1.0 - std::exp(s) : s;
+}
+
+}  // namespace dspbr

@@ -1,0 +1,64 @@
+// Tables on warped endpoint grids with Catmull-Rom interpolation: the layout family of the
+// renderer tables (docs/luts.md, "Renderer layout"). Each axis maps its physical coordinate v to a
+// grid coordinate x in [0, 1] by a warp; samples sit at x_i = i / (N - 1) (the grid reaches both
+// ends of the domain); a lookup interpolates the samples with a Catmull-Rom spline per axis,
+// outside samples extrapolated linearly (p_-1 = 2 p_0 - p_1, p_N = 2 p_N-1 - p_N-2), so the
+// interpolant is C1, exact on quadratics inside and on lines at the ends.
+//
+// Warps (v clamped to the axis domain first):
+//   Power(p, lo):   x = ((v - lo) / (1 - lo))^p                     v in [lo, 1]
+//   GgxCos(p):      x = t^p, t = mu / (mu + alpha sqrt(1 - mu^2))   mu in [0, 1]; alpha = r^2 of the
+//                   table's roughness axis. t depends on mu / alpha only (Smith's a = cot(theta) / alpha),
+//                   so the grazing drop of E_m keeps its shape at every roughness (t = 1 when alpha = 0).
+//   LogRoughness(lo): x = ln(r / lo) / ln(1 / lo)                   r in [lo, 1]
+#pragma once
+#include <string>
+#include <vector>
+
+namespace dspbr {
+
+enum class WarpKind { Power, GgxCos, LogRoughness };
+
+struct Warp {
+  WarpKind kind = WarpKind::Power;
+  double p = 1;   // exponent (Power, GgxCos)
+  double lo = 0;  // lower end of the domain (Power, LogRoughness)
+
+  // Grid coordinate x in [0, 1] of physical coordinate v; alpha only for GgxCos.
+  double to_grid(double v, double alpha = 0) const;
+  // Inverse: the physical coordinate of grid coordinate x.
+  double from_grid(double x, double alpha = 0) const;
+  // Short description, e.g. "power(p=0.25, lo=0.001)".
+  std::string describe() const;
+};
+
+struct WarpedAxis {
+  std::string name;  // physical coordinate: "roughness", "cos_theta", "alpha_b"
+  int size = 0;      // samples, >= 2, at x_i = i / (size - 1)
+  Warp warp;
+};
+
+// Value encodings: what a table stores, and how a lookup decodes it.
+//   Value:        the quantity itself
+//   LogOneMinus:  ln(1 - quantity); decode 1 - exp(stored) (keeps relative precision of 1 - E_m,avg
+//                 as it vanishes like r^4 at r -> 0)
+enum class Encoding { Value, LogOneMinus };
+
+struct WarpedTable {
+  std::string name;
+  std::vector<WarpedAxis> axes;  // 1 or 2, slowest first
+  std::vector<double> values;    // stored (encoded) values, row-major, fastest axis contiguous
+  std::vector<double> errors;    // standard error of the decoded quantity per sample (may be empty)
+  Encoding encoding = Encoding::Value;
+
+  size_t size() const;
+  // Catmull-Rom interpolation of the stored values at grid coordinates (slowest first).
+  double interpolate(double x0, double x1 = 0) const;
+  // Decoded value at grid coordinates.
+  double lookup_grid(double x0, double x1 = 0) const;
+};
+
+// Catmull-Rom weights of the four samples around fractional position f in [0, 1].
+void catmull_rom_weights(double f, double w[4]);
+
+}  // namespace dspbr
