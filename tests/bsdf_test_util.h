@@ -13,11 +13,11 @@
 
 namespace dspbr::test {
 
-// The committed tables (luts/dspbr_luts.json) when present, else a coarse in-memory set generated
+// The committed renderer tables (luts/dspbr_renderer_luts.json) when present, else a coarse in-memory set generated
 // with the project's integrator (few samples: good to ~1e-3, enough for the tolerances used).
 inline const LutSet& bsdf_luts() {
   static const LutSet set = [] {
-    if (std::ifstream(DSPBR_SOURCE_DIR "/luts/dspbr_luts.json").good()) return LutSet::builtin();
+    if (std::ifstream(DSPBR_SOURCE_DIR "/luts/dspbr_renderer_luts.json").good()) return LutSet::builtin();
     LutOptions o;
     o.samples = 2048;
     o.progress = false;

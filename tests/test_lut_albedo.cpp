@@ -227,11 +227,11 @@ TEST(LutAlbedo, FiniteAndNonNegativeAtDomainEnds) {
   }
 }
 
-// The committed default tables (luts/dspbr_luts.json, read through LutSet::builtin) against
+// The committed default tables (luts/dspbr_luts.json, read through LutSet::published) against
 // quadrature at sample cells of every table, including the smallest roughness at grazing angle
 // where the published tables are badly wrong. Goal: max abs error <= 1e-4 per cell.
 TEST(LutTables, CommittedCellsMatchQuadrature) {
-  const LutSet& s = LutSet::builtin();
+  const LutSet& s = LutSet::published();
   auto c32 = [](int i) { return (i + 0.5) / 32; };
   auto c16 = [](int i) { return (i + 0.5) / 16; };
   for (auto [i, j] : {std::pair{0, 0}, {0, 20}, {3, 5}, {3, 31}, {12, 10}, {20, 0}, {31, 31}})

@@ -126,7 +126,7 @@ TEST(LutIo, JsonRoundTrip) {
 // The committed set has the published names and sizes, finite values, and per-cell standard
 // errors that put 4 sigma under the 1e-4 accuracy goal.
 TEST(LutIo, CommittedSetHasPublishedLayoutAndAccuracy) {
-  const LutSet& s = LutSet::builtin();
+  const LutSet& s = LutSet::published();
   const std::pair<const Table*, std::vector<int>> expect[] = {
       {&s.ggx_e, {32, 32}}, {&s.ggx_e_avg, {32}},     {&s.base_e, {16, 16, 16}},
       {&s.base_e_avg, {16, 16}}, {&s.sheen_e, {16, 16}}, {&s.sheen_ash_e, {16, 16}}};
@@ -149,7 +149,7 @@ TEST(LutIo, CommittedSetHasPublishedLayoutAndAccuracy) {
 // Header round trip: the committed header holds the committed JSON values rounded to float,
 // with the published symbol names and *_size arrays.
 TEST(LutIo, CommittedHeaderMatchesJson) {
-  const LutSet& s = LutSet::builtin();
+  const LutSet& s = LutSet::published();
   EXPECT_EQ(GGX_E_size[0], 32);
   EXPECT_EQ(GGX_E_size[1], 32);
   EXPECT_EQ(GGX_E_avg_size[0], 32);

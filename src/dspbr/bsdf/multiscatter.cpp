@@ -8,7 +8,7 @@ namespace dspbr {
 
 MultiScatterReflection::MultiScatterReflection(double r_uv, const Rgb& f_ms, const LutSet& luts)
     : r_uv_(r_uv), f_ms_(f_ms), luts_(luts) {
-  const double missing_avg = 1.0 - luts_.E_m_avg(r_uv_);
+  const double missing_avg = luts_.missing_E_m_avg(r_uv_);
   inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kBsdfPi * missing_avg) : 0.0;
 }
 

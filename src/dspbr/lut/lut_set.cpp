@@ -1,26 +1,81 @@
 #include "dspbr/lut/lut_set.h"
 
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
 #include "dspbr/lut/lut_io.h"
+#include "dspbr/lut/renderer_io.h"
 
 namespace dspbr {
 
+namespace {
+bool is_renderer(const LutSet& s) { return s.layout == LutLayout::Renderer; }
+}  // namespace
+
+double LutSet::E_m(double c, double r) const { return is_renderer(*this) ? this->renderer.E_m(c, r) : ggx_e.lookup({r, c}); }
+double LutSet::E_m_avg(double r) const { return is_renderer(*this) ? this->renderer.E_m_avg(r) : ggx_e_avg.lookup({r}); }
+double LutSet::missing_E_m_avg(double r) const {
+  return is_renderer(*this) ? this->renderer.missing_E_m_avg(r) : 1.0 - ggx_e_avg.lookup({r});
+}
+double LutSet::E_base(double c, double r, double f0) const {
+  return is_renderer(*this) ? this->renderer.E_base(c, r, f0) : base_e.lookup({f0, r, c});
+}
+double LutSet::E_base_avg(double r, double f0) const {
+  return is_renderer(*this) ? this->renderer.E_base_avg(r, f0) : base_e_avg.lookup({f0, r});
+}
+double LutSet::E_sheen(double c, double ab) const {
+  return is_renderer(*this) ? this->renderer.E_sheen(c, ab) : sheen_e.lookup({ab, c});
+}
+double LutSet::E_sheen_ash(double c, double ab) const {
+  return is_renderer(*this) ? this->renderer.E_sheen_ash(c, ab) : sheen_ash_e.lookup({ab, c});
+}
+
 LutSet LutSet::load(const std::string& json_path) {
+  std::string format;
+  {
+    std::ifstream in(json_path);
+    nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (j.is_object() && j.contains("format") && j["format"].is_string()) format = j["format"].get<std::string>();
+  }
   LutSet set;
-  for (Table& t : read_lut_json(json_path)) {
-    if (t.name == "GGX_E") set.ggx_e = std::move(t);
-    else if (t.name == "GGX_E_avg") set.ggx_e_avg = std::move(t);
-    else if (t.name == "Base_E") set.base_e = std::move(t);
-    else if (t.name == "Base_E_avg") set.base_e_avg = std::move(t);
-    else if (t.name == "Sheen_E") set.sheen_e = std::move(t);
-    else if (t.name == "Sheen_ash_E") set.sheen_ash_e = std::move(t);
+  if (format == "dspbr_renderer_luts") {
+    set.layout = LutLayout::Renderer;
+    set.renderer = read_renderer_json(json_path);
+    return set;
+  }
+  set.layout = LutLayout::Published;
+  const std::vector<Table> tables = read_lut_json(json_path);
+  for (const Table& t : tables) {
+    if (t.name == "GGX_E") set.ggx_e = t;
+    else if (t.name == "GGX_E_avg") set.ggx_e_avg = t;
+    else if (t.name == "Base_E") set.base_e = t;
+    else if (t.name == "Base_E_avg") set.base_e_avg = t;
+    else if (t.name == "Sheen_E") set.sheen_e = t;
+    else if (t.name == "Sheen_ash_E") set.sheen_ash_e = t;
   }
   return set;
 }
 
 const LutSet& LutSet::builtin() {
   // Function-local static: initialised once, thread-safe (C++11 magic statics).
+  static const LutSet set = load(DSPBR_SOURCE_DIR "/luts/dspbr_renderer_luts.json");
+  return set;
+}
+
+const LutSet& LutSet::published() {
   static const LutSet set = load(DSPBR_SOURCE_DIR "/luts/dspbr_luts.json");
   return set;
+}
+
+const LutSet& LutSet::of_layout(LutLayout layout) { return layout == LutLayout::Renderer ? builtin() : published(); }
+
+const char* lut_layout_name(LutLayout layout) { return layout == LutLayout::Renderer ? "renderer" : "published"; }
+
+LutLayout parse_lut_layout(const std::string& name) {
+  if (name == "renderer") return LutLayout::Renderer;
+  if (name == "published") return LutLayout::Published;
+  throw std::invalid_argument("unknown table layout '" + name + "' (choose renderer or published)");
 }
 
 }  // namespace dspbr

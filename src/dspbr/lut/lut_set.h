@@ -1,37 +1,54 @@
-// The set of DSPBR energy-compensation tables the BSDF reads (LUT issue):
-// GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E.
+// The set of DSPBR energy-compensation tables the BSDF reads, in one of two layouts:
+//  - Published: GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E on the published
+//    cell-centred grids with clamp-to-edge multilinear lookups (what a renderer using the
+//    published files computes; lut/table.h);
+//  - Renderer: the warped, Catmull-Rom layout of lut/renderer_luts.h (accurate over the whole
+//    domain; the default of the reference BSDF).
 #pragma once
 #include <string>
 
+#include "dspbr/lut/renderer_luts.h"
 #include "dspbr/lut/table.h"
 
 namespace dspbr {
 
+enum class LutLayout { Published, Renderer };
+
 struct LutSet {
+  LutLayout layout = LutLayout::Published;
+  // Published layout.
   Table ggx_e;        // [roughness][cos_theta]
   Table ggx_e_avg;    // [roughness]
   Table base_e;       // [f0][roughness][cos_theta]
   Table base_e_avg;   // [f0][roughness]
   Table sheen_e;      // [alpha_b][cos_theta]
   Table sheen_ash_e;  // [alpha_b][cos_theta]
+  // Renderer layout.
+  RendererLuts renderer;
 
-  // Interpolated lookups in the tables' own conventions (roughness r, alpha_b = r_b^2).
-  double E_m(double cos_theta, double roughness) const { return ggx_e.lookup({roughness, cos_theta}); }
-  double E_m_avg(double roughness) const { return ggx_e_avg.lookup({roughness}); }
-  double E_base(double cos_theta, double roughness, double f0) const {
-    return base_e.lookup({f0, roughness, cos_theta});
-  }
-  double E_base_avg(double roughness, double f0) const { return base_e_avg.lookup({f0, roughness}); }
-  double E_sheen(double cos_theta, double alpha_b) const { return sheen_e.lookup({alpha_b, cos_theta}); }
-  double E_sheen_ash(double cos_theta, double alpha_b) const {
-    return sheen_ash_e.lookup({alpha_b, cos_theta});
-  }
+  // Lookups in the tables' own conventions (roughness r, alpha_b = r_b^2), cos theta first.
+  double E_m(double cos_theta, double roughness) const;
+  double E_m_avg(double roughness) const;
+  double missing_E_m_avg(double roughness) const;  // 1 - E_m,avg (exact to its relative precision
+                                                   // in the renderer layout)
+  double E_base(double cos_theta, double roughness, double f0) const;
+  double E_base_avg(double roughness, double f0) const;
+  double E_sheen(double cos_theta, double alpha_b) const;
+  double E_sheen_ash(double cos_theta, double alpha_b) const;
 
-  // Reads the machine-readable table file (luts/dspbr_luts.json) written by `dspbr lut`.
-  // Throws std::runtime_error with a message naming the file and the problem.
+  // Reads a table file written by `dspbr lut`: dspbr_luts.json (published layout) or
+  // dspbr_renderer_luts.json (renderer layout), told apart by its "format". Throws
+  // std::runtime_error with a message naming the file and the problem.
   static LutSet load(const std::string& json_path);
-  // The committed default set: DSPBR_SOURCE_DIR/luts/dspbr_luts.json (loaded once, cached).
+  // The committed default sets (loaded once, cached): builtin() is the renderer layout the
+  // reference BSDF uses by default, published() the published layout.
   static const LutSet& builtin();
+  static const LutSet& published();
+  static const LutSet& of_layout(LutLayout layout);
 };
+
+// "published" / "renderer"; parse_lut_layout throws std::invalid_argument for anything else.
+const char* lut_layout_name(LutLayout layout);
+LutLayout parse_lut_layout(const std::string& name);
 
 }  // namespace dspbr
