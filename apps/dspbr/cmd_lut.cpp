@@ -15,8 +15,12 @@
 #include "commands.h"
 #include "dspbr/io/atomic_file.h"
 #include "dspbr/lut/generate.h"
+#include "dspbr/lut/lookup_codegen.h"
 #include "dspbr/lut/lut_io.h"
+#include "dspbr/lut/renderer_generate.h"
+#include "dspbr/lut/renderer_io.h"
 #include "dspbr/scene/scene_analysis.h"
+#include "dspbr/validate/lookup_study.h"
 
 namespace dspbr::cli {
 
@@ -39,7 +43,12 @@ struct LutArgs {
   int threads = 0;
   bool half = false;
   bool bench = false;
+  bool bench_lookups = false;
+  int bench_points = 400;
   std::string scene;
+  std::string layouts = "published,renderer";
+  bool layouts_given = false;
+  int renderer_scale = 1;
 };
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -147,6 +156,32 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The renderer layout (lut/renderer_luts.h): JSON, images, and the generated lookup code.
+void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& formats) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const RendererLuts luts = generate_renderer_luts(opt, a.renderer_scale);
+  const double t_gen = seconds_since(t0);
+  const std::string provenance =
+      fmt::format("Settings: integrator {}, target std error {:g}, seed {}, scale {}.",
+                  integrator_name(opt.integrator), opt.target_error, opt.seed, a.renderer_scale);
+  if (formats.json)
+    write_text_atomically((fs::path(a.out) / "dspbr_renderer_luts.json").string(),
+                          renderer_json_text(luts, opt, a.renderer_scale));
+  if (formats.exr) write_renderer_images(luts, (fs::path(a.out) / "renderer").string());
+  if (formats.hpp)
+    for (LookupDialect d : {LookupDialect::C, LookupDialect::Glsl, LookupDialect::Hlsl})
+      write_text_atomically((fs::path(a.out) / lookup_file_name(d)).string(), lookup_code(luts, d, provenance));
+  for (const char* name : RendererLuts::names()) {
+    const WarpedTable& t = *luts.table(name);
+    double max_err = 0;
+    for (double e : t.errors) max_err = std::max(max_err, e);
+    std::string dims;
+    for (const WarpedAxis& ax : t.axes) dims += (dims.empty() ? "" : "x") + std::to_string(ax.size);
+    std::printf("renderer %-12s %-9s max std error %.2e\n", name, dims.c_str(), max_err);
+  }
+  std::printf("renderer layout: %zu stored values, generated in %.2f s\n", luts.stored_values(), t_gen);
+}
+
 void run_generate(const LutArgs& a) {
   if (a.out.empty()) throw UsageError("--out DIR is required (the folder the tables are written to)");
   const LutOptions opt = to_options(a);
@@ -155,7 +190,20 @@ void run_generate(const LutArgs& a) {
     std::printf("the scene needs no tables; nothing written\n");
     return;
   }
+  bool published = false, renderer = false;
+  // The renderer layout is one set (Base_E and the averages derive from GGX_E and GGX_beta):
+  // selecting published tables (--tables, --scene, --size) means the published layout only,
+  // unless --layout says otherwise.
+  const bool selection = a.tables_given || !a.scene.empty() || !a.sizes.empty();
+  for (const std::string& l : split(a.layouts_given || !selection ? a.layouts : "published", ',')) {
+    if (l == "published") published = true;
+    else if (l == "renderer") renderer = true;
+    else throw UsageError("--layout: unknown layout '" + l + "' (choose from published, renderer)");
+  }
+  if (a.renderer_scale < 1 || a.renderer_scale > 16) throw UsageError("--renderer-scale must be in [1, 16]");
   prepare_output_folder(a.out);
+  if (renderer) run_renderer(a, opt, formats);
+  if (!published) return;
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<Table> tables = generate_luts(opt);
   const double t_gen = seconds_since(t0);
@@ -177,7 +225,18 @@ void run_generate(const LutArgs& a) {
 // Speed/accuracy study: for each table and integrator, wall time and max |error| against a
 // high-budget QMC reference (independent seed) over a range of sample budgets. Runs on a small
 // grid per table (override with --size) to keep the reference affordable.
+// Point-of-use study: lookup errors of the committed published and renderer layouts and of the
+// fits against independent quadrature, furnaces built from the lookups (validate/lookup_study.h).
+void run_lookup_bench(const LutArgs& a) {
+  if (a.bench_points < 10 || a.bench_points > 100000) throw UsageError("--bench-points must be in [10, 100000]");
+  const validate::LookupStudy s =
+      validate::run_lookup_study(LutSet::published(), LutSet::builtin(), a.bench_points, a.seed);
+  std::printf("%s\n", validate::lookup_study_markdown(s).c_str());
+  std::fflush(stdout);
+}
+
 void run_bench(const LutArgs& a) {
+  run_lookup_bench(a);
   LutArgs b = a;
   LutOptions base = to_options(b);
   std::map<std::string, std::vector<int>> bench_sizes{{"GGX_E", {8, 8}},      {"GGX_E_avg", {8}},
@@ -267,13 +326,25 @@ void add_lut_command(CLI::App& app) {
                   "Independent randomizations per cell for the error estimate (default: 8)");
   cmd->add_option("--seed", args->seed, "Random seed (default: 1)");
   cmd->add_option("--threads", args->threads, "Worker threads (default: 0 = all cores)");
+  auto* layout_opt = cmd->add_option("--layout", args->layouts,
+                  "Comma-separated layouts: published (the published grids: EXR, pbrlut.hpp, dspbr_luts.json) and "
+                  "renderer (warped grids, Catmull-Rom lookups: dspbr_renderer_luts.json, renderer/*.exr|png, "
+                  "dspbr_lookup.h|glsl|hlsl); default: both, or published alone with --tables/--scene/--size");
+  cmd->add_option("--renderer-scale", args->renderer_scale,
+                  "Renderer layout: (N - 1) * scale + 1 samples per axis of the default N (default: 1)");
   cmd->add_flag("--half", args->half, "Write EXRs as 16-bit half floats (default: 32-bit float)");
   cmd->add_flag("--bench", args->bench,
                 "Measure wall time vs max error for a range of sample budgets per table and integrator "
                 "(prints a Markdown table; writes no files)");
-  cmd->callback([args, tables_opt] {
+  cmd->add_flag("--bench-lookups", args->bench_lookups,
+                "Only the point-of-use part of --bench: lookup error of each layout and fit against quadrature, "
+                "white furnaces from the lookups (Markdown)");
+  cmd->add_option("--bench-points", args->bench_points, "Random points of the lookup study (default: 400)");
+  cmd->callback([args, tables_opt, layout_opt] {
     args->tables_given = tables_opt->count() > 0;
-    if (args->bench) run_bench(*args);
+    args->layouts_given = layout_opt->count() > 0;
+    if (args->bench_lookups) run_lookup_bench(*args);
+    else if (args->bench) run_bench(*args);
     else run_generate(*args);
   });
 }

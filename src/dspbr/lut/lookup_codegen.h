@@ -1,0 +1,41 @@
+// Generated lookup code for the renderer layout (lut/renderer_luts.h): the same functions in
+// three dialects, written by `dspbr lut` next to the tables (docs/luts.md, "Using the tables in
+// your renderer"):
+//   dspbr_lookup.h     C99 / C++, tables embedded, only <math.h>
+//   dspbr_lookup.glsl  GLSL (4.50 / ES 3.00): tables as constant arrays, or textures with
+//                      #define DSPBR_LOOKUP_TEXTURES (bindings and packing in the file's header)
+//   dspbr_lookup.hlsl  HLSL (SM 5+): the same, Texture2D with DSPBR_LOOKUP_TEXTURES
+// The function bodies of the three are one text (GLSL syntax; C spells the math functions and
+// casts its own way), so what the shaders compute is what the C header computes.
+//
+// Functions (cos theta first everywhere):
+//   float dspbr_ggx_E(float cos_theta, float roughness)            E_m
+//   float dspbr_ggx_E_avg(float roughness)                         E_m,avg
+//   float dspbr_ggx_E_avg_missing(float roughness)                 1 - E_m,avg (no cancellation)
+//   float dspbr_base_E(float cos_theta, float roughness, float f0) E (Base_E)
+//   float dspbr_base_E_avg(float roughness, float f0)              E_avg (Base_E_avg)
+//   float dspbr_sheen_E(float cos_theta, float alpha_b)            E_b, main sheen
+//   float dspbr_sheen_ash_E(float cos_theta, float alpha_b)        E_b, alternative sheen
+//   float dspbr_fresnel_ms(float f0, float f90, float e_avg)       F_ms (per colour channel)
+//   float dspbr_ms_lobe(float cos_v, float cos_l, float roughness) M_r,ms / F_ms
+//   float dspbr_diffuse_bc(float cos_v, float cos_l, float roughness, float f0)   B_c / rho
+//   float dspbr_sheen_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_hat)
+//   float dspbr_sheen_ash_layer_scale(...)                          the same, alternative sheen
+//   DSPBR_LOOKUP_FLOATS                                            stored table values
+#pragma once
+#include <string>
+
+#include "dspbr/lut/renderer_luts.h"
+
+namespace dspbr {
+
+enum class LookupDialect { C, Glsl, Hlsl };
+
+// The text of the generated file for `luts` in `dialect`. `provenance` is one line written into
+// the file's header comment (e.g. the version and command that made it).
+std::string lookup_code(const RendererLuts& luts, LookupDialect dialect, const std::string& provenance);
+
+// File name of a dialect: dspbr_lookup.h / .glsl / .hlsl.
+const char* lookup_file_name(LookupDialect dialect);
+
+}  // namespace dspbr

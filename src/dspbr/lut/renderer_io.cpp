@@ -1,0 +1,250 @@
+#include "dspbr/lut/renderer_io.h"
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "dspbr/io/atomic_file.h"
+
+namespace dspbr {
+
+namespace {
+
+namespace fs = std::filesystem;
+using ojson = nlohmann::ordered_json;
+
+constexpr int kMaxRendererAxis = 4096;  // samples per axis accepted when reading
+
+const char* warp_kind_name(WarpKind k) {
+  switch (k) {
+    case WarpKind::Power: return "power";
+    case WarpKind::GgxCos: return "ggx_cos";
+    case WarpKind::LogRoughness: return "log";
+  }
+  return "";
+}
+
+const char* encoding_name(Encoding e) { return e == Encoding::LogOneMinus ? "log_one_minus" : "value"; }
+
+std::string axes_text(const WarpedTable& t) {
+  std::string s;
+  for (size_t d = 0; d < t.axes.size(); ++d)
+    s += (d ? "; " : "") + std::string(d + 1 == t.axes.size() ? "columns: " : "rows: ") + t.axes[d].name + "[" +
+         std::to_string(t.axes[d].size) + "] " + t.axes[d].warp.describe();
+  return s;
+}
+
+std::string decode_text(const WarpedTable& t) {
+  std::string s = t.encoding == Encoding::LogOneMinus ? "quantity = 1 - exp(stored)" : "quantity = stored";
+  if (t.name == "GGX_beta") s = "beta = (1 - cos_theta)^5 + stored; B = beta E_m";
+  return s;
+}
+
+// One image with the dspbr attributes; pixels are float, `channels` interleaved.
+void write_image(const std::string& path, const std::vector<float>& px, int width, int height, int channels,
+                 OIIO::TypeDesc type, const std::vector<std::pair<std::string, std::string>>& attrs) {
+  write_atomically(path, [&](const std::string& tmp) {
+    auto out = OIIO::ImageOutput::create(path);  // format from the final name (.exr / .png)
+    if (!out) throw std::runtime_error("cannot create an image writer for '" + path + "': " + OIIO::geterror());
+    OIIO::ImageSpec spec(width, height, channels, type);
+    if (channels == 1) spec.channelnames = {"Y"};
+    spec.attribute("compression", path.size() > 4 && path.substr(path.size() - 4) == ".exr" ? "zip" : "");
+    spec.attribute("DateTime", "");  // no time stamp: same tables, same bytes
+    spec.attribute("Software", "dspbr lut");
+    spec.attribute("oiio:ColorSpace", "Linear");  // data, not colour: no gamma tag
+    for (const auto& [k, v] : attrs) spec.attribute(k, v);
+    if (!out->open(tmp, spec)) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
+    if (!out->write_image(OIIO::TypeDesc::FLOAT, px.data()))
+      throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
+    if (!out->close()) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
+  });
+}
+
+}  // namespace
+
+std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, int scale) {
+  ojson j;
+  j["format"] = "dspbr_renderer_luts";
+  j["version"] = 1;
+  j["model"] = "DSPBR 2025x";
+  j["generator"] = "dspbr lut";
+  j["layout"] = "renderer";
+  j["scale"] = scale;
+  j["stored_values"] = luts.stored_values();
+  j["grid"] = "endpoint, x_i = i / (N - 1) of the warped coordinate";
+  j["interpolation"] = "catmull-rom, linear extrapolation beyond the ends";
+  const IntegratorSettings s = lut_settings("GGX_E", opt);
+  j["integrator"] = {{"name", integrator_name(s.integrator)},
+                     {"max_samples_per_cell", s.samples},
+                     {"target_std_error", s.target_error},
+                     {"randomizations", s.randomizations},
+                     {"seed", s.seed}};
+  ojson jt = ojson::object();
+  for (const char* name : RendererLuts::names()) {
+    const WarpedTable& t = *luts.table(name);
+    ojson e;
+    ojson axes = ojson::array();
+    for (const WarpedAxis& a : t.axes)
+      axes.push_back({{"name", a.name},
+                      {"size", a.size},
+                      {"warp", {{"kind", warp_kind_name(a.warp.kind)}, {"p", a.warp.p}, {"lo", a.warp.lo}}}});
+    e["axes"] = axes;
+    e["encoding"] = encoding_name(t.encoding);
+    e["decode"] = decode_text(t);
+    double max_err = 0;
+    for (double x : t.errors) max_err = std::max(max_err, x);
+    e["max_error"] = max_err;
+    e["values"] = t.values;
+    e["errors"] = t.errors;
+    jt[name] = e;
+  }
+  j["tables"] = jt;
+  return j.dump(1) + "\n";
+}
+
+RendererLuts read_renderer_json(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw std::runtime_error("'" + path + "' is a directory, not a table file");
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open '" + path + "'");
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const std::exception&) {
+    throw std::runtime_error("'" + path + "' is not valid JSON");
+  }
+  RendererLuts out;
+  try {
+    if (!j.is_object() || j.value("format", std::string()) != "dspbr_renderer_luts")
+      throw std::runtime_error("not a renderer table file (missing \"format\": \"dspbr_renderer_luts\")");
+    const auto& jt = j.at("tables");
+    const RendererLuts expected_axes = [] {
+      RendererLuts r;
+      for (const char* n : RendererLuts::names()) r.table(n)->axes = renderer_default_axes(n);
+      return r;
+    }();
+    for (const char* name : RendererLuts::names()) {
+      if (!jt.contains(name)) throw std::runtime_error(std::string("table ") + name + " is missing");
+      const auto& e = jt.at(name);
+      WarpedTable& t = *out.table(name);
+      t.name = name;
+      const auto& ref = expected_axes.table(name)->axes;
+      const auto& ja = e.at("axes");
+      if (!ja.is_array() || ja.size() != ref.size())
+        throw std::runtime_error(std::string(name) + ": needs " + std::to_string(ref.size()) + " axes");
+      size_t cells = 1;
+      for (size_t d = 0; d < ref.size(); ++d) {
+        WarpedAxis a;
+        a.name = ja[d].at("name").get<std::string>();
+        a.size = ja[d].at("size").get<int>();
+        if (a.name != ref[d].name)
+          throw std::runtime_error(std::string(name) + ": axis " + std::to_string(d) + " must be " + ref[d].name);
+        if (a.size < 2 || a.size > kMaxRendererAxis)
+          throw std::runtime_error(std::string(name) + ": axis " + a.name + " size must be in [2, 4096]");
+        const auto& jw = ja[d].at("warp");
+        const std::string kind = jw.at("kind").get<std::string>();
+        a.warp.p = jw.at("p").get<double>();
+        a.warp.lo = jw.at("lo").get<double>();
+        if (kind == "power") a.warp.kind = WarpKind::Power;
+        else if (kind == "ggx_cos") a.warp.kind = WarpKind::GgxCos;
+        else if (kind == "log") a.warp.kind = WarpKind::LogRoughness;
+        else throw std::runtime_error(std::string(name) + ": axis " + a.name + ": unknown warp '" + kind + "'");
+        if (a.warp.kind == WarpKind::GgxCos && !(d == 1 && ref[0].name == "roughness"))
+          throw std::runtime_error(std::string(name) + ": the ggx_cos warp needs a roughness axis before it");
+        if (!(a.warp.p > 0 && a.warp.p <= 16) || !(a.warp.lo >= 0 && a.warp.lo < 1) ||
+            (a.warp.kind == WarpKind::LogRoughness && !(a.warp.lo > 0)))
+          throw std::runtime_error(std::string(name) + ": axis " + a.name + " has a bad warp");
+        cells *= size_t(a.size);
+        t.axes.push_back(a);
+      }
+      const std::string enc = e.at("encoding").get<std::string>();
+      if (enc != encoding_name(expected_axes.table(name)->encoding) &&
+          !(std::string(name) == "GGX_E_avg" && enc == "log_one_minus"))
+        throw std::runtime_error(std::string(name) + ": unexpected encoding '" + enc + "'");
+      t.encoding = enc == "log_one_minus" ? Encoding::LogOneMinus : Encoding::Value;
+      const auto& jv = e.at("values");
+      if (!jv.is_array() || jv.size() != cells)
+        throw std::runtime_error(std::string(name) + ": number of values does not match the axes");
+      t.values = jv.get<std::vector<double>>();
+      for (double v : t.values)
+        if (!std::isfinite(v)) throw std::runtime_error(std::string(name) + ": values must be finite");
+      if (e.contains("errors")) {
+        const auto& je = e.at("errors");
+        if (!je.is_array() || je.size() != cells)
+          throw std::runtime_error(std::string(name) + ": number of errors does not match the axes");
+        t.errors = je.get<std::vector<double>>();
+      }
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error("'" + path + "': malformed table file (" + std::string(e.what()) + ")");
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error("'" + path + "': " + e.what());
+  }
+  return out;
+}
+
+std::vector<float> split_sum_pixels(const RendererLuts& luts, int size) {
+  std::vector<float> px(size_t(size) * size_t(size) * 3);
+  for (int i = 0; i < size; ++i) {
+    const double r = (i + 0.5) / size;
+    for (int k = 0; k < size; ++k) {
+      const double mu = (k + 0.5) / size;
+      float* p = &px[(size_t(i) * size_t(size) + size_t(k)) * 3];
+      p[0] = float(luts.E_m(mu, r));
+      p[1] = float(luts.B(mu, r));
+      p[2] = float(luts.E_sheen(mu, r * r));
+    }
+  }
+  return px;
+}
+
+void write_renderer_images(const RendererLuts& luts, const std::string& dir, int split_sum_size) {
+  for (const char* name : RendererLuts::names()) {
+    const WarpedTable& t = *luts.table(name);
+    const int width = t.axes.back().size, height = t.axes.size() == 2 ? t.axes[0].size : 1;
+    std::vector<float> px(t.values.begin(), t.values.end());
+    double lo = 1e300, hi = -1e300;
+    for (double v : t.values) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    std::vector<std::pair<std::string, std::string>> attrs{
+        {"dspbr:table", name},
+        {"dspbr:model", "DSPBR 2025x"},
+        {"dspbr:layout", "renderer, version 1"},
+        {"dspbr:axes", axes_text(t)},
+        {"dspbr:grid", "endpoint: sample i of N at warped coordinate i / (N - 1)"},
+        {"dspbr:interpolation", "catmull-rom, linear extrapolation beyond the ends"},
+        {"dspbr:encoding", encoding_name(t.encoding)},
+        {"dspbr:decode", decode_text(t)}};
+    write_image((fs::path(dir) / (std::string(name) + ".exr")).string(), px, width, height, 1, OIIO::TypeDesc::FLOAT,
+                attrs);
+    // 16-bit PNG: pixel = (stored - offset) / scale * 65535, rounded.
+    const double offset = lo, scale = hi > lo ? hi - lo : 1.0;
+    std::vector<float> unit(px.size());
+    for (size_t i = 0; i < px.size(); ++i) unit[i] = float((t.values[i] - offset) / scale);
+    attrs.push_back({"dspbr:png_decode", fmt::format("stored = {:.9g} + {:.9g} * pixel / 65535", offset, scale)});
+    write_image((fs::path(dir) / (std::string(name) + ".png")).string(), unit, width, height, 1,
+                OIIO::TypeDesc::UINT16, attrs);
+  }
+  const std::vector<float> ss = split_sum_pixels(luts, split_sum_size);
+  const std::vector<std::pair<std::string, std::string>> attrs{
+      {"dspbr:table", "split_sum"},
+      {"dspbr:model", "DSPBR 2025x"},
+      {"dspbr:axes", "rows: roughness[" + std::to_string(split_sum_size) + "] r, columns: cos_theta[" +
+                         std::to_string(split_sum_size) + "], cell-centred x_i = (i + 0.5) / N"},
+      {"dspbr:channels", "R: E_m = A (f0 scale), G: B = Schlick moment (bias), B: main sheen E_b at alpha_b = r^2"},
+      {"dspbr:usage", "specular IBL: prefiltered radiance * (f0 (A - B) + f90 B), i.e. scale A - B, bias B"}};
+  write_image((fs::path(dir) / "dspbr_split_sum.exr").string(), ss, split_sum_size, split_sum_size, 3,
+              OIIO::TypeDesc::FLOAT, attrs);
+  write_image((fs::path(dir) / "dspbr_split_sum.png").string(), ss, split_sum_size, split_sum_size, 3,
+              OIIO::TypeDesc::UINT16, attrs);
+}
+
+}  // namespace dspbr
