@@ -35,7 +35,18 @@ struct EvalArgs {
   double wavelength = 0;
   double area = 1;
   std::string components;  // comma-separated component names; empty: active components
+  std::string tables = "renderer";  // table layout the BSDF reads
 };
+
+// The table set of --tables (renderer: the default, accurate everywhere; published: what a
+// renderer using the published files computes).
+const LutSet& table_set(const EvalArgs& a) {
+  try {
+    return LutSet::of_layout(parse_lut_layout(a.tables));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--tables: ") + e.what());
+  }
+}
 
 std::vector<double> parse_numbers(const std::string& option, const std::string& text, size_t count) {
   std::vector<double> out;
@@ -156,6 +167,10 @@ void add_common_options(CLI::App* cmd, EvalArgs& a) {
   cmd->add_option("--wavelength", a.wavelength, "Wavelength in nm for dispersion (0: plain ior)")
       ->capture_default_str();
   cmd->add_option("--area", a.area, "Object area in m^2 (emission in lm)")->capture_default_str();
+  cmd->add_option("--tables", a.tables,
+                  "Energy tables the BSDF reads: renderer (default; warped layout, accurate over the whole domain) "
+                  "or published (the published grids, as a renderer using them gets)")
+      ->capture_default_str();
   cmd->add_option("--components", a.components,
                   "Comma-separated components to include (default: the material's active ones)");
 }
@@ -186,7 +201,7 @@ void add_eval_commands(CLI::App& app) {
     const EvalArgs& a = eval_args;
     const Vec3 v = parse_direction("--view", a.view), l = parse_direction("--light", a.light);
     const Material m = build_material(a);
-    const MaterialBsdf b(m, LutSet::builtin(), build_options(a), parse_components(a, m));
+    const MaterialBsdf b(m, table_set(a), build_options(a), parse_components(a, m));
     Json out;
     out["f"] = rgb_json(b.eval(v, l));
     out["pdf"] = b.pdf(v, l);
@@ -209,7 +224,7 @@ void add_eval_commands(CLI::App& app) {
     for (double x : u)
       if (x < 0 || x >= 1) throw UsageError("--u expects three numbers in [0, 1), got '" + a.u + "'");
     const Material m = build_material(a);
-    const MaterialBsdf b(m, LutSet::builtin(), build_options(a), parse_components(a, m));
+    const MaterialBsdf b(m, table_set(a), build_options(a), parse_components(a, m));
     const BsdfSample s = b.sample(v, {u[0], u[1], u[2]});
     Json out;
     out["valid"] = s.valid;

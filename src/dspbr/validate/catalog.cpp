@@ -136,7 +136,7 @@ Catalog dspbr_catalog(const CatalogOptions& opt) {
   Catalog cat;
   const LutSet* luts = nullptr;
   try {
-    luts = &LutSet::builtin();
+    luts = opt.luts ? opt.luts : &LutSet::builtin();
   } catch (const std::exception& e) {
     cat.skipped.push_back(std::string("all BSDF checks: the built-in tables could not be loaded: ") + e.what());
     return cat;

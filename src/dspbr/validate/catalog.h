@@ -10,6 +10,10 @@
 
 #include "dspbr/bsdf/bsdf.h"
 
+namespace dspbr {
+struct LutSet;
+}
+
 namespace dspbr::validate {
 
 // What the spec says about the energy of a case (spec sections cited in `note`).
@@ -62,9 +66,10 @@ struct CatalogOptions {
   bool quick = false;
   std::size_t random_materials = 2000;  // random parameter sets for the stability sweep
   uint64_t seed = 1;
+  const LutSet* luts = nullptr;  // tables of the BSDF cases; nullptr: LutSet::builtin()
 };
 
-// The DSPBR cases (reference BSDF of issue 3, LutSet::builtin()).
+// The DSPBR cases (the reference BSDF with opt.luts, default LutSet::builtin()).
 Catalog dspbr_catalog(const CatalogOptions& opt);
 
 }  // namespace dspbr::validate
