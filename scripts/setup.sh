@@ -7,7 +7,7 @@ PKGS=(build-essential cmake pkg-config
       libceres-dev libeigen3-dev libtbb-dev
       libgtest-dev libgmock-dev libbenchmark-dev
       nlohmann-json3-dev libcli11-dev libfmt-dev
-      libboost-dev
+      libboost-dev glslang-tools libglm-dev
       python3-numpy python3-matplotlib python3-jinja2 python3-openimageio)
 missing=()
 for p in "${PKGS[@]}"; do

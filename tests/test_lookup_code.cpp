@@ -1,0 +1,136 @@
+// The generated lookup code (luts/dspbr_lookup.h, .glsl, .hlsl; lut/lookup_codegen.h):
+//  - the C header against the library's double-precision lookups (lut/renderer_luts.h) at random
+//    points: within float rounding;
+//  - the GLSL and HLSL files executed as C++ against GLM (their function bodies and constant
+//    tables, compiled here with GLM's clamp/min/max/pow/exp/log/sqrt) against the C header.
+// The shader compilers check the same files in CTest (tests/lookup_code.cmake).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <glm/glm.hpp>
+
+#include "../luts/dspbr_lookup.h"
+#include "dspbr/lut/renderer_io.h"
+#include "dspbr/lut/renderer_luts.h"
+
+// Constant tables as C++ arrays (the shader files let the includer define these).
+#define DSPBR_TABLE(name, n) const float name[n] = {
+#define DSPBR_TABLE_END };
+namespace glsl {
+using namespace glm;
+#include "../luts/dspbr_lookup.glsl"
+}  // namespace glsl
+#undef DSPBR_LOOKUP_INCLUDED
+namespace hlsl {
+using namespace glm;
+#include "../luts/dspbr_lookup.hlsl"
+}  // namespace hlsl
+
+namespace {
+
+const dspbr::RendererLuts& committed() {
+  static const dspbr::RendererLuts luts =
+      dspbr::read_renderer_json(DSPBR_SOURCE_DIR "/luts/dspbr_renderer_luts.json");
+  return luts;
+}
+
+struct Args {
+  float mu, mu2, r, f0, ab, rho;
+};
+
+std::vector<Args> random_args(int n) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<float> u(0, 1);
+  std::vector<Args> out;
+  for (int k = 0; k < n; ++k) {
+    Args a{u(rng), u(rng), u(rng), u(rng), u(rng), u(rng)};
+    if (k % 3 == 0) a.mu = std::pow(10.0f, -4.0f * u(rng));  // grazing
+    if (k % 5 == 0) a.r = std::pow(10.0f, -3.0f * u(rng));   // near the mirror
+    if (k % 7 == 0) a.ab = std::pow(2.0f, -10.0f * u(rng));
+    if (k == 1) a = {0, 0, 0, 0, 0, 0};  // the corners
+    if (k == 2) a = {1, 1, 1, 1, 1, 1};
+    out.push_back(a);
+  }
+  return out;
+}
+
+// |a - b| within a few float ulps of the magnitude.
+void expect_float_close(double a, double b, const char* what, double tol = 2e-6) {
+  EXPECT_TRUE(std::isfinite(a)) << what;
+  EXPECT_NEAR(a, b, tol * std::max(1.0, std::abs(b))) << what;
+}
+
+TEST(LookupCode, CHeaderMatchesTheLibrary) {
+  const dspbr::RendererLuts& L = committed();
+  EXPECT_EQ(DSPBR_LOOKUP_FLOATS, int(L.stored_values()));
+  for (const Args& a : random_args(2000)) {
+    expect_float_close(dspbr_ggx_E(a.mu, a.r), L.E_m(a.mu, a.r), "ggx_E", 1e-5);
+    expect_float_close(dspbr_ggx_E_avg(a.r), L.E_m_avg(a.r), "ggx_E_avg", 1e-5);
+    expect_float_close(dspbr_ggx_E_avg_missing(a.r), L.missing_E_m_avg(a.r), "ggx_E_avg_missing",
+                       1e-5 * L.missing_E_m_avg(a.r));
+    expect_float_close(dspbr_base_E(a.mu, a.r, a.f0), L.E_base(a.mu, a.r, a.f0), "base_E", 1e-5);
+    expect_float_close(dspbr_base_E_avg(a.r, a.f0), L.E_base_avg(a.r, a.f0), "base_E_avg", 1e-5);
+    expect_float_close(dspbr_sheen_E(a.mu, a.ab), L.E_sheen(a.mu, a.ab), "sheen_E", 1e-5);
+    expect_float_close(dspbr_sheen_ash_E(a.mu, a.ab), L.E_sheen_ash(a.mu, a.ab), "sheen_ash_E", 1e-5);
+  }
+}
+
+TEST(LookupCode, CompensationTermsFollowTheSpecFormulas) {
+  const float mv = 0.3f, ml = 0.7f, r = 0.6f, f0 = 0.04f;
+  const double pi = 3.14159265358979;
+  EXPECT_NEAR(dspbr_ms_lobe(mv, ml, r),
+              (1 - dspbr_ggx_E(mv, r)) * (1 - dspbr_ggx_E(ml, r)) / (pi * (1 - dspbr_ggx_E_avg(r))), 1e-6);
+  EXPECT_NEAR(dspbr_diffuse_bc(mv, ml, r, f0),
+              (1 - dspbr_base_E(mv, r, f0)) * (1 - dspbr_base_E(ml, r, f0)) / (pi * (1 - dspbr_base_E_avg(r, f0))),
+              1e-6);
+  const double fa = 20.0 / 21 * f0 + 1.0 / 21;
+  EXPECT_NEAR(dspbr_fresnel_ms(f0, 1, 0.8f), fa * fa * 0.8 / (1 - fa * 0.2), 1e-7);
+  EXPECT_NEAR(dspbr_sheen_layer_scale(mv, ml, 0.25f, 0.5f),
+              std::min(1 - 0.5 * std::min(1.0f, dspbr_sheen_E(mv, 0.25f)), 1 - 0.5 * std::min(1.0f, dspbr_sheen_E(ml, 0.25f))),
+              1e-6);
+  EXPECT_EQ(dspbr_ms_lobe(mv, ml, 0.0f), 0.0f);  // mirror: no missing energy
+}
+
+TEST(LookupCode, GlslAndHlslComputeWhatTheCHeaderComputes) {
+  for (const Args& a : random_args(2000)) {
+    const float c[] = {dspbr_ggx_E(a.mu, a.r),
+                       dspbr_ggx_E_avg(a.r),
+                       dspbr_base_E(a.mu, a.r, a.f0),
+                       dspbr_base_E_avg(a.r, a.f0),
+                       dspbr_sheen_E(a.mu, a.ab),
+                       dspbr_sheen_ash_E(a.mu, a.ab),
+                       dspbr_ms_lobe(a.mu, a.mu2, a.r),
+                       dspbr_diffuse_bc(a.mu, a.mu2, a.r, a.f0),
+                       dspbr_sheen_layer_scale(a.mu, a.mu2, a.ab, a.rho),
+                       dspbr_sheen_ash_layer_scale(a.mu, a.mu2, a.ab, a.rho)};
+    const float g[] = {glsl::dspbr_ggx_E(a.mu, a.r),
+                       glsl::dspbr_ggx_E_avg(a.r),
+                       glsl::dspbr_base_E(a.mu, a.r, a.f0),
+                       glsl::dspbr_base_E_avg(a.r, a.f0),
+                       glsl::dspbr_sheen_E(a.mu, a.ab),
+                       glsl::dspbr_sheen_ash_E(a.mu, a.ab),
+                       glsl::dspbr_ms_lobe(a.mu, a.mu2, a.r),
+                       glsl::dspbr_diffuse_bc(a.mu, a.mu2, a.r, a.f0),
+                       glsl::dspbr_sheen_layer_scale(a.mu, a.mu2, a.ab, a.rho),
+                       glsl::dspbr_sheen_ash_layer_scale(a.mu, a.mu2, a.ab, a.rho)};
+    const float h[] = {hlsl::dspbr_ggx_E(a.mu, a.r),
+                       hlsl::dspbr_ggx_E_avg(a.r),
+                       hlsl::dspbr_base_E(a.mu, a.r, a.f0),
+                       hlsl::dspbr_base_E_avg(a.r, a.f0),
+                       hlsl::dspbr_sheen_E(a.mu, a.ab),
+                       hlsl::dspbr_sheen_ash_E(a.mu, a.ab),
+                       hlsl::dspbr_ms_lobe(a.mu, a.mu2, a.r),
+                       hlsl::dspbr_diffuse_bc(a.mu, a.mu2, a.r, a.f0),
+                       hlsl::dspbr_sheen_layer_scale(a.mu, a.mu2, a.ab, a.rho),
+                       hlsl::dspbr_sheen_ash_layer_scale(a.mu, a.mu2, a.ab, a.rho)};
+    for (int i = 0; i < 10; ++i) {
+      expect_float_close(g[i], c[i], "glsl");
+      expect_float_close(h[i], c[i], "hlsl");
+    }
+  }
+}
+
+}  // namespace
