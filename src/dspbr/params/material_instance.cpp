@@ -102,7 +102,7 @@ void check_value(const ParamDef& d, const Json& v, std::vector<std::string>& pro
 
 std::string default_params_path() {
   if (const char* env = std::getenv("DSPBR_PARAMS"); env && *env) return env;
-  return DSPBR_SOURCE_DIR "/../shared/reference/params-2025x.json";
+  return DSPBR_SOURCE_DIR "/data/dspbr/params-2025x.json";
 }
 
 std::vector<std::string> check_material_instance(const ParamDefs& defs, const Json& instance) {

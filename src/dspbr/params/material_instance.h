@@ -13,7 +13,7 @@ namespace dspbr {
 class ParamDefs;
 
 // The parameter file used when none is given: $DSPBR_PARAMS if set, else
-// DSPBR_SOURCE_DIR/../shared/reference/params-2025x.json.
+// DSPBR_SOURCE_DIR/data/dspbr/params-2025x.json.
 std::string default_params_path();
 
 // Every problem of an instance document against the definitions, one clear message each
