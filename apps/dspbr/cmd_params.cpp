@@ -18,9 +18,10 @@ namespace dspbr::cli {
 
 namespace {
 
+// The definition file at `path`; default_param_defs() when `path` is empty.
 ParamDefs load_defs(const std::string& path) {
   try {
-    return ParamDefs::load(path);
+    return path.empty() ? default_param_defs() : ParamDefs::load(path);
   } catch (const std::exception& e) {
     throw UsageError(e.what());
   }
@@ -73,10 +74,10 @@ void add_params_command(CLI::App& app) {
   auto opt = std::make_shared<Options>();
 
   auto* list = cmd->add_subcommand("list", "List the materials of a parameter definition file");
-  list->add_option("FILE", opt->file, "Parameter definition file (default: $DSPBR_PARAMS or the shared params-2025x.json)");
+  list->add_option("FILE", opt->file, "Parameter definition file (default: $DSPBR_PARAMS, else the built-in params-2025x.json)");
   list->add_flag("--json", opt->json, "Print {\"materials\": [{\"id\", \"name\", \"inherits\"}]}");
   list->callback([opt] {
-    const ParamDefs defs = load_defs(opt->file.empty() ? default_params_path() : opt->file);
+    const ParamDefs defs = load_defs(opt->file);
     if (opt->json) {
       nlohmann::ordered_json out = {{"materials", nlohmann::ordered_json::array()}};
       for (const auto& id : defs.material_ids()) {
@@ -114,9 +115,9 @@ void add_params_command(CLI::App& app) {
   auto* check = cmd->add_subcommand("check", "Validate material instance files {\"material\": ..., \"values\": {...}}");
   check->add_option("INSTANCE", opt->instances, "Material instance file(s)")->required();
   check->add_option("--params", opt->params,
-                    "Parameter definition file (default: $DSPBR_PARAMS or the shared params-2025x.json)");
+                    "Parameter definition file (default: $DSPBR_PARAMS, else the built-in params-2025x.json)");
   check->callback([opt] {
-    const ParamDefs defs = load_defs(opt->params.empty() ? default_params_path() : opt->params);
+    const ParamDefs defs = load_defs(opt->params);
     int bad = 0;
     for (const auto& path : opt->instances) {
       std::vector<std::string> problems;

@@ -3,11 +3,14 @@
 #include <exception>
 
 #include "commands.h"
+#include "dspbr/version.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"dspbr: reference toolchain for the Enterprise PBR Shading Model (DSPBR 2025x)"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
+  app.set_version_flag("--version", std::string("dspbr ") + dspbr::version_string(),
+                       "Print the version (project version and git describe of the build) and exit");
   dspbr::cli::add_lut_command(app);
   dspbr::cli::add_eval_commands(app);
   dspbr::cli::add_validate_command(app);

@@ -100,9 +100,9 @@ void check_value(const ParamDef& d, const Json& v, std::vector<std::string>& pro
 
 }  // namespace
 
-std::string default_params_path() {
-  if (const char* env = std::getenv("DSPBR_PARAMS"); env && *env) return env;
-  return DSPBR_SOURCE_DIR "/data/dspbr/params-2025x.json";
+ParamDefs default_param_defs() {
+  if (const char* env = std::getenv("DSPBR_PARAMS"); env && *env) return ParamDefs::load(env);
+  return ParamDefs::builtin();
 }
 
 std::vector<std::string> check_material_instance(const ParamDefs& defs, const Json& instance) {
@@ -180,7 +180,7 @@ Material load_material_instance(const std::string& path) {
   } catch (const Json::parse_error& e) {
     throw std::runtime_error(path + ": malformed JSON: " + e.what());
   }
-  const ParamDefs defs = ParamDefs::load(default_params_path());
+  const ParamDefs defs = default_param_defs();
   try {
     return material_from_instance(defs, doc);
   } catch (const std::exception& e) {

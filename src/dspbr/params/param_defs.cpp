@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 namespace dspbr {
 
@@ -276,6 +277,17 @@ ParamDefs ParamDefs::load(const std::string& path) {
     fail(path, std::string("malformed JSON: ") + e.what());
   }
   return from_json(doc, path);
+}
+
+// Defined in the source CMake generates from data/dspbr/params-2025x.json.
+std::string_view params_2025x_json();
+
+const ParamDefs& ParamDefs::builtin() {
+  static const ParamDefs defs = [] {
+    const std::string_view text = params_2025x_json();
+    return from_json(nlohmann::ordered_json::parse(text.begin(), text.end()), "built-in params-2025x.json");
+  }();
+  return defs;
 }
 
 ParamDefs ParamDefs::from_json(const Json& doc, const std::string& source) {

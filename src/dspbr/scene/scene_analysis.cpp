@@ -52,7 +52,7 @@ SceneAnalysis analyze_scene(const std::string& path) {
   }
   if (!glb && doc.is_object() && doc.contains("material") && !doc.contains("asset")) {
     // A material instance file.
-    const ParamDefs defs = ParamDefs::load(default_params_path());
+    const ParamDefs defs = default_param_defs();
     MaterialAnalysis a;
     a.name = doc["material"].is_string() ? doc["material"].get<std::string>() : "material";
     try {
