@@ -4,13 +4,13 @@
 //   dspbr params show FILE MATERIAL [--json]   resolved parameters in UI order and groups
 //   dspbr params check INSTANCE... [--params FILE]
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "commands.h"
+#include "dspbr/io/read_file.h"
 #include "dspbr/params/material_instance.h"
 #include "dspbr/params/param_defs.h"
 
@@ -120,24 +120,24 @@ void add_params_command(CLI::App& app) {
     const ParamDefs defs = load_defs(opt->params);
     int bad = 0;
     for (const auto& path : opt->instances) {
+      nlohmann::json doc;
+      try {
+        doc = read_json_file(path, "material instance file");
+      } catch (const std::exception& e) {
+        ++bad;
+        std::fprintf(stderr, "%s\n", e.what());  // names the file
+        continue;
+      }
       std::vector<std::string> problems;
       std::string type;
-      std::ifstream in(path);
-      if (!in) {
-        problems.push_back("cannot open the file");
-      } else {
-        try {
-          const auto doc = nlohmann::json::parse(in);
-          problems = check_material_instance(defs, doc);
-          if (problems.empty()) {
-            material_from_instance(defs, doc);  // also proves it converts
-            type = doc["material"].get<std::string>();
-          }
-        } catch (const nlohmann::json::parse_error& e) {
-          problems.push_back(std::string("malformed JSON: ") + e.what());
-        } catch (const std::exception& e) {
-          problems.push_back(e.what());
+      try {
+        problems = check_material_instance(defs, doc);
+        if (problems.empty()) {
+          material_from_instance(defs, doc);  // also proves it converts
+          type = doc["material"].get<std::string>();
         }
+      } catch (const std::exception& e) {
+        problems.push_back(e.what());
       }
       if (problems.empty()) {
         std::printf("%s: ok (material '%s')\n", path.c_str(), type.c_str());

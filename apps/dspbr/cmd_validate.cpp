@@ -121,7 +121,8 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--out", args->out, "Output folder (index.html, images/, plots/, data/)")->capture_default_str();
   cmd->add_flag("--quick", args->quick, "Reduced run (seconds): fewer cases, directions and samples");
   cmd->add_option("--seed", args->seed, "Seed of every random stream (same seed -> same report)")->capture_default_str();
-  cmd->add_option("--luts", args->luts, "Table file to check instead of the built-in luts/dspbr_luts.json");
+  cmd->add_option("--luts", args->luts, "Table file to check instead of the built-in luts/dspbr_luts.json")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--python", args->python, "Python interpreter with numpy, matplotlib and jinja2")->capture_default_str();
   cmd->add_flag("--no-html", [args](int64_t) { args->html = false; }, "Write only the data (data/report.json, images/)");
   cmd->add_flag("--allow-failures", args->allow_failures, "Exit with status 0 even when checks fail");

@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <stdexcept>
 
+#include "dspbr/io/read_file.h"
 #include "dspbr/material_params.h"
 #include "dspbr/params/param_defs.h"
 
@@ -172,14 +172,7 @@ Material material_from_instance(const ParamDefs& defs, const Json& instance) {
 }
 
 Material load_material_instance(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open the material instance file");
-  Json doc;
-  try {
-    doc = Json::parse(in);
-  } catch (const Json::parse_error& e) {
-    throw std::runtime_error(path + ": malformed JSON: " + e.what());
-  }
+  const Json doc = read_json_file(path, "material instance file");
   const ParamDefs defs = default_param_defs();
   try {
     return material_from_instance(defs, doc);

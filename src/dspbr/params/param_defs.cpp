@@ -1,8 +1,9 @@
 #include "dspbr/params/param_defs.h"
 
+#include "dspbr/io/read_file.h"
+
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -268,15 +269,7 @@ const char* param_type_name(ParamKind kind) {
 }
 
 ParamDefs ParamDefs::load(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) fail(path, "cannot open the parameter definition file (give one with --params or DSPBR_PARAMS)");
-  nlohmann::ordered_json doc;
-  try {
-    doc = nlohmann::ordered_json::parse(in);
-  } catch (const nlohmann::ordered_json::parse_error& e) {
-    fail(path, std::string("malformed JSON: ") + e.what());
-  }
-  return from_json(doc, path);
+  return from_json(read_json_file<nlohmann::ordered_json>(path, "parameter definition file"), path);
 }
 
 // Defined in the source CMake generates from data/dspbr/params-2025x.json.

@@ -42,8 +42,8 @@ struct MaterialDef {
 
 class ParamDefs {
  public:
-  // Reads and resolves a definition file. Throws std::runtime_error "<path>: <problem>" for an
-  // unreadable file, malformed JSON, a missing "materials" object, an unknown parameter type, an
+  // Reads and resolves a definition file. Throws std::runtime_error naming the file and the
+  // problem for a missing, unreadable or non-JSON file (read_json_file), a missing "materials" object, an unknown parameter type, an
   // inheritance cycle or an unknown base, a malformed range/default, or a default out of range.
   static ParamDefs load(const std::string& path);
   // The definitions of data/dspbr/params-2025x.json, compiled into the library (parsed once;
