@@ -20,7 +20,7 @@ namespace {
 using namespace dspbr;
 
 Material subtype(const char* id) {
-  static const ParamDefs defs = ParamDefs::load(default_params_path());
+  static const ParamDefs defs = default_param_defs();
   return material_from_instance(defs, nlohmann::json{{"material", id}});
 }
 

@@ -5,5 +5,5 @@ add_test(NAME fit_quick_deterministic
 '$<TARGET_FILE:dspbr>' fit --quick --threads 1 --out fit-q1 > /dev/null && \
 '$<TARGET_FILE:dspbr>' fit --quick --threads 2 --out fit-q2 > /dev/null && \
 diff -r fit-q1 fit-q2"
-         WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+         WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
 set_tests_properties(fit_quick_deterministic PROPERTIES TIMEOUT 300)

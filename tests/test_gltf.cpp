@@ -250,7 +250,7 @@ TEST(Gltf, BadInputsGiveClearErrors) {
       {"bad_texture.gltf", "refers to texture 7"},
       {"malformed.gltf", "malformed JSON"},
       {"not_gltf.gltf", "not a glTF asset"},
-      {"no_such_file.gltf", "cannot open"},
+      {"no_such_file.gltf", "does not exist"},
   };
   for (const auto& [file, message] : cases) {
     const std::string e = error_of([&] { map_materials(read_gltf(kData + file)); });

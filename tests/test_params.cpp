@@ -9,6 +9,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "dspbr/params/material_instance.h"
 #include "dspbr/params/param_defs.h"
@@ -92,6 +94,17 @@ TEST(ParamDefs, OfficialFileResolvesEverySubtype) {
 }
 
 // UI order: parameters of group '' first, then each group contiguous, uiOrder increasing inside.
+// The definitions compiled into the library are those of the shipped file, material by material.
+TEST(ParamDefs, BuiltinDefinitionsAreTheShippedFile) {
+  const ParamDefs& builtin = ParamDefs::builtin();
+  const ParamDefs file = ParamDefs::load(kOfficial);
+  EXPECT_EQ(builtin.source(), "built-in params-2025x.json");
+  ASSERT_EQ(builtin.material_ids(), file.material_ids());
+  for (const auto& id : file.material_ids())
+    EXPECT_EQ(material_def_to_json(builtin.material(id)), material_def_to_json(file.material(id))) << id;
+  EXPECT_EQ(&ParamDefs::builtin(), &builtin);  // parsed once
+}
+
 TEST(ParamDefs, UiOrderPutsEmptyGroupFirst) {
   const ParamDefs defs = ParamDefs::load(kOfficial);
   for (const auto& mid : defs.material_ids()) {
@@ -165,7 +178,7 @@ TEST(ParamDefs, BadDefinitionFilesGiveClearErrors) {
   EXPECT_NE(load_error(kData + "bad_type.json").find("unknown type \"colour\""), std::string::npos);
   EXPECT_NE(load_error(kData + "bad_default.json").find("outside"), std::string::npos);
   EXPECT_NE(load_error(kData + "malformed.json").find("malformed JSON"), std::string::npos);
-  EXPECT_NE(load_error(kData + "does_not_exist.json").find("cannot open"), std::string::npos);
+  EXPECT_NE(load_error(kData + "does_not_exist.json").find("does not exist"), std::string::npos);
   EXPECT_THROW(ParamDefs::load(kOfficial).material("unobtainium"), std::invalid_argument);
 }
 
@@ -278,4 +291,18 @@ TEST(ParamsCli, ListShowCheck) {
     EXPECT_EQ(count_lines_with(r.output, "dspbr: error: "), 1) << r.output;
   }
   EXPECT_NE(run_dspbr("params show " + kOfficial + " unobtainium").status, 0);
+}
+
+// Without FILE, `params list` prints the built-in definitions: the shipped file's materials in
+// file order, whatever the working folder.
+TEST(ParamsCli, ListWithoutFileUsesTheBuiltInDefinitions) {
+  const auto list = run_dspbr("params list --json", ::testing::TempDir());
+  ASSERT_EQ(list.status, 0) << list.output;
+  std::ifstream in(kOfficial);
+  const auto raw = nlohmann::ordered_json::parse(in);
+  std::vector<std::string> expected, listed;
+  for (const auto& [id, _] : raw["materials"].items()) expected.push_back(id);
+  const Json out = Json::parse(list.output);
+  for (const auto& m : out["materials"]) listed.push_back(m["id"].get<std::string>());
+  EXPECT_EQ(listed, expected);
 }

@@ -12,9 +12,11 @@ struct ToolRun {
   std::string output;
 };
 
-inline ToolRun run_dspbr(const std::string& args) {
+// `cwd`: folder to run in (default: the test's own).
+inline ToolRun run_dspbr(const std::string& args, const std::string& cwd = "") {
   ToolRun r;
-  const std::string cmd = std::string("\"") + DSPBR_EXE + "\" " + args + " 2>&1";
+  const std::string cmd =
+      (cwd.empty() ? std::string() : "cd '" + cwd + "' && ") + "\"" + DSPBR_EXE + "\" " + args + " 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return r;
   std::array<char, 4096> buf{};

@@ -168,7 +168,6 @@ json flake_doc(const FitArgs& a, const fit::FitContext& ctx) {
 }
 
 void run(const FitArgs& a, const std::string& command_line) {
-  if (a.threads < 0) throw UsageError("--threads must be >= 0 (0: all cores)");
   const auto names = parse_only(a.only);
   std::error_code ec;
   fs::create_directories(a.out, ec);
@@ -209,8 +208,9 @@ void add_fit_command(CLI::App& app) {
                   "Comma-separated fits: sheen_lambda, albedo (= ggx_E, ggx_E_avg, base_E, base_E_avg, sheen_E), "
                   "flake_roughness (default: all)");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores); results do not depend on it")
-      ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the QMC reference integrals")->capture_default_str();
+      ->capture_default_str()
+      ->check(thread_count());
+  cmd->add_option("--seed", args->seed, "Seed of the QMC reference integrals")->capture_default_str()->check(non_negative_integer());
   cmd->add_flag("--quick", args->quick, "Small grids and sample counts (smoke tests; coarser error figures)");
   cmd->callback([args] { run(*args, "dspbr fit"); });
 }

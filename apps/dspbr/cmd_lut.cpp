@@ -318,14 +318,15 @@ void add_lut_command(CLI::App& app) {
                   "qmc (importance-sampled, Owen-scrambled Sobol', default) or mc (plain Monte Carlo baseline)");
   cmd->add_option("--samples", args->samples,
                   "Maximum samples per cell, all randomizations together (default: 524288; 2097152 for the "
-                  "averages); exactly this many with --target-error 0");
+                  "averages); exactly this many with --target-error 0")
+      ->check(non_negative_integer());
   cmd->add_option("--target-error", args->target_error,
                   "Adaptive budget: stop a cell once its standard error is at most this (default: 1e-5; 0: fixed "
                   "budget)");
   cmd->add_option("--randomizations", args->randomizations,
                   "Independent randomizations per cell for the error estimate (default: 8)");
-  cmd->add_option("--seed", args->seed, "Random seed (default: 1)");
-  cmd->add_option("--threads", args->threads, "Worker threads (default: 0 = all cores)");
+  cmd->add_option("--seed", args->seed, "Random seed (default: 1)")->check(non_negative_integer());
+  cmd->add_option("--threads", args->threads, "Worker threads (default: 0 = all cores)")->check(thread_count());
   auto* layout_opt = cmd->add_option("--layout", args->layouts,
                   "Comma-separated layouts: published (the published grids: EXR, pbrlut.hpp, dspbr_luts.json) and "
                   "renderer (warped grids, Catmull-Rom lookups: dspbr_renderer_luts.json, renderer/*.exr|png, "

@@ -4,13 +4,13 @@
 //   dspbr params show FILE MATERIAL [--json]   resolved parameters in UI order and groups
 //   dspbr params check INSTANCE... [--params FILE]
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "commands.h"
+#include "dspbr/io/read_file.h"
 #include "dspbr/params/material_instance.h"
 #include "dspbr/params/param_defs.h"
 
@@ -18,9 +18,10 @@ namespace dspbr::cli {
 
 namespace {
 
+// The definition file at `path`; default_param_defs() when `path` is empty.
 ParamDefs load_defs(const std::string& path) {
   try {
-    return ParamDefs::load(path);
+    return path.empty() ? default_param_defs() : ParamDefs::load(path);
   } catch (const std::exception& e) {
     throw UsageError(e.what());
   }
@@ -73,10 +74,10 @@ void add_params_command(CLI::App& app) {
   auto opt = std::make_shared<Options>();
 
   auto* list = cmd->add_subcommand("list", "List the materials of a parameter definition file");
-  list->add_option("FILE", opt->file, "Parameter definition file (default: $DSPBR_PARAMS or the shared params-2025x.json)");
+  list->add_option("FILE", opt->file, "Parameter definition file (default: $DSPBR_PARAMS, else the built-in params-2025x.json)");
   list->add_flag("--json", opt->json, "Print {\"materials\": [{\"id\", \"name\", \"inherits\"}]}");
   list->callback([opt] {
-    const ParamDefs defs = load_defs(opt->file.empty() ? default_params_path() : opt->file);
+    const ParamDefs defs = load_defs(opt->file);
     if (opt->json) {
       nlohmann::ordered_json out = {{"materials", nlohmann::ordered_json::array()}};
       for (const auto& id : defs.material_ids()) {
@@ -114,29 +115,29 @@ void add_params_command(CLI::App& app) {
   auto* check = cmd->add_subcommand("check", "Validate material instance files {\"material\": ..., \"values\": {...}}");
   check->add_option("INSTANCE", opt->instances, "Material instance file(s)")->required();
   check->add_option("--params", opt->params,
-                    "Parameter definition file (default: $DSPBR_PARAMS or the shared params-2025x.json)");
+                    "Parameter definition file (default: $DSPBR_PARAMS, else the built-in params-2025x.json)");
   check->callback([opt] {
-    const ParamDefs defs = load_defs(opt->params.empty() ? default_params_path() : opt->params);
+    const ParamDefs defs = load_defs(opt->params);
     int bad = 0;
     for (const auto& path : opt->instances) {
+      nlohmann::json doc;
+      try {
+        doc = read_json_file(path, "material instance file");
+      } catch (const std::exception& e) {
+        ++bad;
+        std::fprintf(stderr, "%s\n", e.what());  // names the file
+        continue;
+      }
       std::vector<std::string> problems;
       std::string type;
-      std::ifstream in(path);
-      if (!in) {
-        problems.push_back("cannot open the file");
-      } else {
-        try {
-          const auto doc = nlohmann::json::parse(in);
-          problems = check_material_instance(defs, doc);
-          if (problems.empty()) {
-            material_from_instance(defs, doc);  // also proves it converts
-            type = doc["material"].get<std::string>();
-          }
-        } catch (const nlohmann::json::parse_error& e) {
-          problems.push_back(std::string("malformed JSON: ") + e.what());
-        } catch (const std::exception& e) {
-          problems.push_back(e.what());
+      try {
+        problems = check_material_instance(defs, doc);
+        if (problems.empty()) {
+          material_from_instance(defs, doc);  // also proves it converts
+          type = doc["material"].get<std::string>();
         }
+      } catch (const std::exception& e) {
+        problems.push_back(e.what());
       }
       if (problems.empty()) {
         std::printf("%s: ok (material '%s')\n", path.c_str(), type.c_str());

@@ -126,8 +126,11 @@ void add_validate_command(CLI::App& app) {
       "furnace spheres; writes an HTML report");
   cmd->add_option("--out", args->out, "Output folder (index.html, images/, plots/, data/)")->capture_default_str();
   cmd->add_flag("--quick", args->quick, "Reduced run (seconds): fewer cases, directions and samples");
-  cmd->add_option("--seed", args->seed, "Seed of every random stream (same seed -> same report)")->capture_default_str();
-  cmd->add_option("--luts", args->luts, "Table file to check instead of the built-in luts/dspbr_luts.json");
+  cmd->add_option("--seed", args->seed, "Seed of every random stream (same seed -> same report)")
+      ->capture_default_str()
+      ->check(non_negative_integer());
+  cmd->add_option("--luts", args->luts, "Table file to check instead of the built-in luts/dspbr_luts.json")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--tables", args->tables,
                   "Energy tables of the BSDF cases: renderer (default) or published (shows the published layout's "
                   "artefacts, e.g. energy gains at grazing angles)")

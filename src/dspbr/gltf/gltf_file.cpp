@@ -1,5 +1,7 @@
 #include "dspbr/gltf/gltf_file.h"
 
+#include "dspbr/io/read_file.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstring>
@@ -68,12 +70,6 @@ bool is_lfs_pointer(const std::string& file, std::uint64_t file_size, std::uint6
       }
     }
   return false;
-}
-
-std::vector<std::uint8_t> read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot open the file");
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 std::string percent_decode(const std::string& uri) {
@@ -224,11 +220,7 @@ GltfFile parse_gltf(const std::vector<std::uint8_t>& bytes, const std::string& p
     }
     if (chunk == 0) fail(path, "malformed GLB: no JSON chunk");
   }
-  try {
-    f.json = Json::parse(json_begin, json_begin + json_size);
-  } catch (const Json::parse_error& e) {
-    fail(path, std::string("malformed JSON: ") + e.what());
-  }
+  f.json = parse_json(std::string_view(json_begin, json_size), path, "glTF file");
   if (!f.json.is_object()) fail(path, "the glTF JSON must be an object");
   if (!f.json.contains("asset") || !f.json["asset"].is_object() || !f.json["asset"].contains("version"))
     fail(path, "not a glTF asset: missing \"asset\": {\"version\": \"2.0\"}");
@@ -239,6 +231,9 @@ GltfFile parse_gltf(const std::vector<std::uint8_t>& bytes, const std::string& p
   return f;
 }
 
-GltfFile read_gltf(const std::string& path) { return parse_gltf(read_bytes(path), path); }
+GltfFile read_gltf(const std::string& path) {
+  const std::string bytes = read_file(path);
+  return parse_gltf({bytes.begin(), bytes.end()}, path);
+}
 
 }  // namespace dspbr::gltf

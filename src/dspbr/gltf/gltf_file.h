@@ -21,7 +21,8 @@ struct GltfFile {
 };
 
 // Reads and checks a .gltf or .glb file (chosen by the file's magic, not its name). Throws
-// std::runtime_error "<path>: <problem>" for an unreadable file, malformed JSON, a bad GLB header
+// std::runtime_error naming the file and the problem for a missing, unreadable or non-JSON file
+// (read_file.h), malformed JSON, a bad GLB header
 // or chunk (magic, version, lengths), a missing or short buffer referenced by a bufferView, or a
 // bufferView / accessor outside its buffer. A buffer file that is a Git LFS pointer announcing at
 // least byteLength bytes is accepted with a warning (materials do not need the geometry).

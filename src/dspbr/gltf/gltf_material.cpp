@@ -250,7 +250,7 @@ class Mapper {
 void range_notes(GltfMaterial& g) {
   static const ParamDefs* defs = [] () -> const ParamDefs* {
     try {
-      static const ParamDefs d = ParamDefs::load(default_params_path());
+      static const ParamDefs d = default_param_defs();
       return &d;
     } catch (const std::exception&) {
       return nullptr;

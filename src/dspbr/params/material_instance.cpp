@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <stdexcept>
 
+#include "dspbr/io/read_file.h"
 #include "dspbr/material_params.h"
 #include "dspbr/params/param_defs.h"
 
@@ -100,9 +100,9 @@ void check_value(const ParamDef& d, const Json& v, std::vector<std::string>& pro
 
 }  // namespace
 
-std::string default_params_path() {
-  if (const char* env = std::getenv("DSPBR_PARAMS"); env && *env) return env;
-  return DSPBR_SOURCE_DIR "/../shared/reference/params-2025x.json";
+ParamDefs default_param_defs() {
+  if (const char* env = std::getenv("DSPBR_PARAMS"); env && *env) return ParamDefs::load(env);
+  return ParamDefs::builtin();
 }
 
 std::vector<std::string> check_material_instance(const ParamDefs& defs, const Json& instance) {
@@ -172,15 +172,8 @@ Material material_from_instance(const ParamDefs& defs, const Json& instance) {
 }
 
 Material load_material_instance(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open the material instance file");
-  Json doc;
-  try {
-    doc = Json::parse(in);
-  } catch (const Json::parse_error& e) {
-    throw std::runtime_error(path + ": malformed JSON: " + e.what());
-  }
-  const ParamDefs defs = ParamDefs::load(default_params_path());
+  const Json doc = read_json_file(path, "material instance file");
+  const ParamDefs defs = default_param_defs();
   try {
     return material_from_instance(defs, doc);
   } catch (const std::exception& e) {

@@ -12,9 +12,9 @@ namespace dspbr {
 
 class ParamDefs;
 
-// The parameter file used when none is given: $DSPBR_PARAMS if set, else
-// DSPBR_SOURCE_DIR/../shared/reference/params-2025x.json.
-std::string default_params_path();
+// The definitions used when no file is given: the file $DSPBR_PARAMS names if set (read at each
+// call; errors as ParamDefs::load), else ParamDefs::builtin().
+ParamDefs default_param_defs();
 
 // Every problem of an instance document against the definitions, one clear message each
 // (unknown material type, unknown parameter, wrong type, out of range, wrong vector length,
@@ -26,7 +26,7 @@ std::vector<std::string> check_material_instance(const ParamDefs& defs, const nl
 // instance is not valid.
 Material material_from_instance(const ParamDefs& defs, const nlohmann::json& instance);
 
-// Reads, validates and converts the instance file at `path` against default_params_path().
+// Reads, validates and converts the instance file at `path` against default_param_defs().
 // Throws std::runtime_error with a one-line message naming the file and the problem(s) (unreadable
 // file, malformed JSON, invalid instance). Used by `dspbr eval --material FILE`.
 Material load_material_instance(const std::string& path);

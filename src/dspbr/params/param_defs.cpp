@@ -1,12 +1,14 @@
 #include "dspbr/params/param_defs.h"
 
+#include "dspbr/io/read_file.h"
+
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 namespace dspbr {
 
@@ -267,15 +269,18 @@ const char* param_type_name(ParamKind kind) {
 }
 
 ParamDefs ParamDefs::load(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) fail(path, "cannot open the parameter definition file (give one with --params or DSPBR_PARAMS)");
-  nlohmann::ordered_json doc;
-  try {
-    doc = nlohmann::ordered_json::parse(in);
-  } catch (const nlohmann::ordered_json::parse_error& e) {
-    fail(path, std::string("malformed JSON: ") + e.what());
-  }
-  return from_json(doc, path);
+  return from_json(read_json_file<nlohmann::ordered_json>(path, "parameter definition file"), path);
+}
+
+// Defined in the source CMake generates from data/dspbr/params-2025x.json.
+std::string_view params_2025x_json();
+
+const ParamDefs& ParamDefs::builtin() {
+  static const ParamDefs defs = [] {
+    const std::string_view text = params_2025x_json();
+    return from_json(nlohmann::ordered_json::parse(text.begin(), text.end()), "built-in params-2025x.json");
+  }();
+  return defs;
 }
 
 ParamDefs ParamDefs::from_json(const Json& doc, const std::string& source) {

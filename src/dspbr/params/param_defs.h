@@ -42,10 +42,13 @@ struct MaterialDef {
 
 class ParamDefs {
  public:
-  // Reads and resolves a definition file. Throws std::runtime_error "<path>: <problem>" for an
-  // unreadable file, malformed JSON, a missing "materials" object, an unknown parameter type, an
+  // Reads and resolves a definition file. Throws std::runtime_error naming the file and the
+  // problem for a missing, unreadable or non-JSON file (read_json_file), a missing "materials" object, an unknown parameter type, an
   // inheritance cycle or an unknown base, a malformed range/default, or a default out of range.
   static ParamDefs load(const std::string& path);
+  // The definitions of data/dspbr/params-2025x.json, compiled into the library (parsed once;
+  // source() is "built-in params-2025x.json"): no file is read at run time.
+  static const ParamDefs& builtin();
   // Same from an already parsed document; `source` names it in messages.
   static ParamDefs from_json(const nlohmann::json& doc, const std::string& source);
   // Same, keeping the file's material order (nlohmann::json sorts keys).

@@ -1,12 +1,11 @@
 #include "dspbr/scene/scene_analysis.h"
 
-#include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "dspbr/gltf/gltf_file.h"
 #include "dspbr/gltf/gltf_material.h"
+#include "dspbr/io/read_file.h"
 #include "dspbr/params/material_instance.h"
 #include "dspbr/params/param_defs.h"
 #include "dspbr/scene/components.h"
@@ -36,23 +35,16 @@ void finish(MaterialAnalysis& a, SceneAnalysis& s) {
 }  // namespace
 
 SceneAnalysis analyze_scene(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open the scene file");
-  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::string bytes = read_file(path);
   SceneAnalysis s;
   s.path = path;
-  const bool glb = bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
+  const bool glb = bytes.rfind("glTF", 0) == 0;
+  const bool json_name = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
   Json doc;
-  if (!glb) {
-    try {
-      doc = Json::parse(bytes.begin(), bytes.end());
-    } catch (const Json::parse_error& e) {
-      throw std::runtime_error(path + ": malformed JSON: " + e.what());
-    }
-  }
+  if (!glb) doc = parse_json(bytes, path, json_name ? "material instance or glTF file" : "glTF file");
   if (!glb && doc.is_object() && doc.contains("material") && !doc.contains("asset")) {
     // A material instance file.
-    const ParamDefs defs = ParamDefs::load(default_params_path());
+    const ParamDefs defs = default_param_defs();
     MaterialAnalysis a;
     a.name = doc["material"].is_string() ? doc["material"].get<std::string>() : "material";
     try {
@@ -63,7 +55,7 @@ SceneAnalysis analyze_scene(const std::string& path) {
     finish(a, s);
     s.materials.push_back(std::move(a));
   } else {
-    const gltf::GltfFile file = gltf::parse_gltf(bytes, path);
+    const gltf::GltfFile file = gltf::parse_gltf({bytes.begin(), bytes.end()}, path);
     s.warnings = file.warnings;
     for (auto& g : gltf::map_materials(file)) {
       MaterialAnalysis a;

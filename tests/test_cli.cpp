@@ -1,0 +1,99 @@
+// Conventions of the `dspbr` command as a whole (apps/dspbr/main.cpp): --version, exit codes
+// (0 success, 1 checks failed, 2 bad input or usage), one-line errors naming the file.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "dspbr/version.h"
+#include "test_params_run.h"
+
+TEST(Cli, VersionPrintsProjectVersionAndGitDescription) {
+  const ToolRun r = run_dspbr("--version");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output, std::string("dspbr ") + dspbr::version_string() + "\n");
+  // "<version>" or "<version> (<describe>)": an abbreviated hash, optionally after a tag and
+  // before "-dirty".
+  const std::regex form("dspbr " + std::regex_replace(DSPBR_PROJECT_VERSION, std::regex("\\."), "\\.") +
+                        "( \\(([^ ]+-g)?[0-9a-f]{4,40}(-dirty)?\\))?\n");
+  EXPECT_TRUE(std::regex_match(r.output, form)) << r.output;
+}
+
+namespace {
+
+// A usage error: exit status 2 and one line "dspbr: error: ..." containing `needle`.
+void expect_usage_error(const std::string& args, const std::string& needle) {
+  const ToolRun r = run_dspbr(args);
+  EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
+  EXPECT_EQ(r.output.rfind("dspbr: error: ", 0), 0u) << args << "\n" << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << "\n" << r.output;
+  EXPECT_NE(r.output.find(needle), std::string::npos) << args << "\n" << r.output;
+}
+
+std::string temp_path(const std::string& name) { return ::testing::TempDir() + "/cli_" + name; }
+
+}  // namespace
+
+TEST(Cli, ParseErrorsExitWith2AndHelpWith0) {
+  expect_usage_error("lut --bogus", "--bogus");
+  expect_usage_error("eval --view 0,0,1", "--light is required");
+  expect_usage_error("lut --seed abc", "--seed");
+  expect_usage_error("", "A subcommand is required");
+  for (const char* help : {"--help", "--help-all", "params --help", "params list --help"}) {
+    const ToolRun r = run_dspbr(help);
+    EXPECT_EQ(r.status, 0) << help << "\n" << r.output;
+    EXPECT_NE(r.output.find("Usage:"), std::string::npos) << help << "\n" << r.output;
+  }
+}
+
+TEST(Cli, UnknownSubcommandSuggestsTheNearestName) {
+  expect_usage_error("lutt", "unknown subcommand 'lutt'; did you mean 'lut'?");
+  expect_usage_error("valdate --quick", "unknown subcommand 'valdate'; did you mean 'validate'?");
+  expect_usage_error("params lst", "unknown subcommand 'lst'; did you mean 'list'?");
+  expect_usage_error("scene analyse x.gltf", "unknown subcommand 'analyse'; did you mean 'analyze'?");
+  expect_usage_error("render", "unknown subcommand 'render' (choose from lut, eval, sample, validate, fit, params, scene)");
+}
+
+TEST(Cli, DirectoryGivenAsAFileIsNamed) {
+  const std::string dir = temp_path("folder.gltf");
+  std::filesystem::create_directories(dir);
+  const std::string message = dir + " is a directory";
+  expect_usage_error("scene analyze " + dir, message);
+  expect_usage_error("lut --scene " + dir + " --out " + temp_path("lut_out"), message);
+  expect_usage_error("eval --material " + dir + " --view 0,0,1 --light 0,0,1", message);
+  expect_usage_error("params list " + dir, message);
+  expect_usage_error("params show " + dir + " glass", message);
+  expect_usage_error("validate --luts " + dir, dir);
+  const ToolRun check = run_dspbr("params check " + dir);
+  EXPECT_EQ(check.status, 2) << check.output;
+  EXPECT_EQ(count_lines_with(check.output, message), 1) << check.output;
+}
+
+TEST(Cli, PngRenamedGltfIsNamedAsSuch) {
+  const std::string png = temp_path("image.gltf");
+  std::ofstream(png, std::ios::binary) << std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16);
+  expect_usage_error("scene analyze " + png, png + " is not a glTF file (it starts like a PNG image)");
+  expect_usage_error("lut --scene " + png + " --out " + temp_path("lut_out"), png + " is not a glTF file");
+}
+
+TEST(Cli, NegativeOrOversizedUnsignedOptionsAreRefused) {
+  const std::string out = " --out " + temp_path("refused");
+  expect_usage_error("lut --seed -1 --tables GGX_E --size GGX_E=4x4 --formats json" + out,
+                     "--seed: must be a non-negative integer below 2^64, got '-1'");
+  expect_usage_error("lut --seed 18446744073709551616 --tables GGX_E --size GGX_E=4x4 --formats json" + out,
+                     "--seed: must be a non-negative integer below 2^64");
+  expect_usage_error("lut --samples -5 --tables GGX_E --size GGX_E=4x4 --formats json" + out, "--samples:");
+  expect_usage_error("fit --quick --seed -1" + out, "--seed:");
+  expect_usage_error("validate --quick --no-html --seed -1" + out, "--seed:");
+}
+
+TEST(Cli, ThreadCountAboveTheLimitIsRefused) {
+  const std::string out = " --out " + temp_path("refused");
+  expect_usage_error("lut --threads 2147483647 --tables GGX_E --size GGX_E=4x4 --formats json" + out,
+                     "--threads: must be a thread count from 0 (all cores) to 1024, got '2147483647'");
+  expect_usage_error("lut --threads -1 --tables GGX_E --size GGX_E=4x4 --formats json" + out, "--threads:");
+  expect_usage_error("fit --quick --threads 1025" + out, "--threads:");
+}
