@@ -15,7 +15,9 @@
 #include "commands.h"
 #include "dspbr/lut/lut_set.h"
 #include "dspbr/validate/catalog.h"
+#include "dspbr/validate/provenance.h"
 #include "dspbr/validate/suite.h"
+#include "dspbr/validate/waivers.h"
 
 namespace dspbr::cli {
 
@@ -50,28 +52,37 @@ void run_validate(const ValidateArgs& a) {
 
   validate::SuiteSettings s = validate::SuiteSettings::defaults(a.quick);
   s.seed = a.seed;
-  validate::CatalogOptions co;
-  co.quick = a.quick;
-  co.seed = a.seed;
-  co.random_materials = a.quick ? 20 : 2000;
-  validate::Catalog cat = validate::dspbr_catalog(co);
+  s.command_line = validate::process_command_line();
 
+  // The tables: checked against the independent reference and used by every BSDF case.
   const LutSet* luts = nullptr;
   LutSet loaded;
   if (!a.luts.empty()) {
     try {
       loaded = LutSet::load(a.luts);
+      s.table_file = validate::table_file_settings(a.luts);
     } catch (const std::exception& e) {
       throw UsageError(std::string("--luts: ") + e.what());
     }
+    const std::vector<std::string> missing = validate::missing_tables(loaded);
+    if (!missing.empty())
+      throw UsageError(fmt::format("--luts: {}: incomplete table file: missing or empty {}", a.luts,
+                                   fmt::join(missing, ", ")));
     luts = &loaded;
   } else {
     try {
       luts = &LutSet::builtin();
+      s.table_file = validate::table_file_settings(std::string(DSPBR_SOURCE_DIR) + "/luts/dspbr_luts.json");
     } catch (const std::exception& e) {
       std::fprintf(stderr, "dspbr validate: tables skipped: %s\n", e.what());
     }
   }
+  validate::CatalogOptions co;
+  co.quick = a.quick;
+  co.seed = a.seed;
+  co.random_materials = a.quick ? 20 : 2000;
+  co.luts = luts;
+  validate::Catalog cat = validate::dspbr_catalog(co);
 
   std::fprintf(stderr, "dspbr validate (%s): %zu cases, %zu stability corners, %zu furnace rows -> %s\n",
                a.quick ? "quick" : "full", cat.cases.size(), cat.stability.size(), cat.furnace_rows.size(),
@@ -90,9 +101,10 @@ void run_validate(const ValidateArgs& a) {
   // Summary on stdout.
   std::printf("validation (%s run, seed %llu): report in %s/%s\n", a.quick ? "quick" : "full",
               static_cast<unsigned long long>(a.seed), a.out.c_str(), a.html ? "index.html" : "data/report.json");
+  std::printf("  %-58s %5s %5s %7s %11s\n", "check", "PASS", "FAIL", "WAIVED", "NOT JUDGED");
   for (const auto& c : r.report["summary"])
-    std::printf("  %-58s %4d / %-4d passed\n", c["check"].get<std::string>().c_str(), c["passed"].get<int>(),
-                c["total"].get<int>());
+    std::printf("  %-58s %5d %5d %7d %11d\n", c["check"].get<std::string>().c_str(), c["passed"].get<int>(),
+                c["failed"].get<int>(), c["waived"].get<int>(), c["not_judged"].get<int>());
   const auto& skipped = r.report["skipped"];
   std::size_t shown = 0;
   for (const auto& sk : skipped) {
@@ -104,6 +116,10 @@ void run_validate(const ValidateArgs& a) {
   if (skipped.size() > shown) std::printf("  skipped: %zu rejected random materials\n", skipped.size() - shown);
   if (a.quick)
     std::printf("  quick run: fewer cases, directions and samples than the full run (see the report's settings)\n");
+  for (const auto& w : r.report["waivers"])
+    if (w["used"].get<int>() > 0)
+      std::printf("  WAIVED %d x %s (%s): %s\n", w["used"].get<int>(), w["id"].get<std::string>().c_str(),
+                  w["spec"].get<std::string>().c_str(), w["reason"].get<std::string>().c_str());
   for (const std::string& f : r.failures) std::printf("  FAILED %s\n", f.c_str());
   if (r.failed_checks > 0 && !a.allow_failures)
     throw std::runtime_error(fmt::format("{} validation check(s) failed (listed above; details in {}/index.html)",
@@ -124,7 +140,8 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--luts", args->luts, "Table file to check instead of the built-in luts/dspbr_luts.json");
   cmd->add_option("--python", args->python, "Python interpreter with numpy, matplotlib and jinja2")->capture_default_str();
   cmd->add_flag("--no-html", [args](int64_t) { args->html = false; }, "Write only the data (data/report.json, images/)");
-  cmd->add_flag("--allow-failures", args->allow_failures, "Exit with status 0 even when checks fail");
+  cmd->add_flag("--allow-failures", args->allow_failures,
+                "Exit with status 0 even when checks fail (waived failures never fail the run)");
   cmd->callback([args] { run_validate(*args); });
 }
 

@@ -134,9 +134,9 @@ const char* kNoteFlakes =
 
 Catalog dspbr_catalog(const CatalogOptions& opt) {
   Catalog cat;
-  const LutSet* luts = nullptr;
+  const LutSet* luts = opt.luts;
   try {
-    luts = &LutSet::builtin();
+    if (!luts) luts = &LutSet::builtin();
   } catch (const std::exception& e) {
     cat.skipped.push_back(std::string("all BSDF checks: the built-in tables could not be loaded: ") + e.what());
     return cat;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dspbr/bsdf/bsdf.h"
+#include "dspbr/lut/lut_set.h"
 
 namespace dspbr::validate {
 
@@ -62,9 +63,10 @@ struct CatalogOptions {
   bool quick = false;
   std::size_t random_materials = 2000;  // random parameter sets for the stability sweep
   uint64_t seed = 1;
+  const LutSet* luts = nullptr;  // tables of every BSDF (null: LutSet::builtin()); must outlive the catalog
 };
 
-// The DSPBR cases (reference BSDF of issue 3, LutSet::builtin()).
+// The DSPBR cases (reference BSDF of issue 3, with opt.luts).
 Catalog dspbr_catalog(const CatalogOptions& opt);
 
 }  // namespace dspbr::validate
