@@ -17,7 +17,7 @@ namespace dspbr::validate {
 enum class EnergyClaim {
   Conserving,            // E <= 1 only (no preservation claim): a loss is reported, not failed
   Preserving,            // E >= 1 - tol as well (energy-compensated white materials)
-  GainsBySpec,           // the spec's own model gains energy here: a gain is reported, not failed
+  GainsBySpec,           // the spec's own model gains energy here (conservation failures: waivers.h)
 };
 
 struct BsdfCase {

@@ -39,13 +39,14 @@ const char* claim_name(EnergyClaim c) {
 
 constexpr double kNoView = std::numeric_limits<double>::quiet_NaN();
 
-// Worst first: FAIL > WAIVED > NOT JUDGED > PASS.
+// Worst first: FAIL > WAIVED > PASS > NOT JUDGED (a judged verdict outweighs an unjudged one:
+// a case whose grazing rows are not judged and whose other rows pass is PASS).
 int rank(Status s) {
   switch (s) {
     case Status::Fail: return 3;
     case Status::Waived: return 2;
-    case Status::NotJudged: return 1;
-    default: return 0;
+    case Status::NotJudged: return 0;
+    default: return 1;
   }
 }
 
