@@ -17,6 +17,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 from jinja2 import Environment, FileSystemLoader, select_autoescape  # noqa: E402
 from PIL import Image  # noqa: E402  (matplotlib's own dependency)
@@ -100,7 +101,7 @@ def furnace_plots(rep, figs):
     for comp, cs in groups.items():
         ncol = min(len(cs), 4)
         nrow = math.ceil(len(cs) / ncol)
-        fig, grid = plt.subplots(nrow + 1, ncol, figsize=(max(3.1 * ncol, 8.0), 2.5 * nrow + 0.7), squeeze=False,
+        fig, grid = plt.subplots(nrow + 1, ncol, figsize=(max(3.1 * ncol, 6.0), 2.5 * nrow + 0.7), squeeze=False,
                                  layout="constrained", height_ratios=[0.7 / 2.5] + [1] * nrow)
         top = grid[0, 0].get_gridspec()
         for ax in grid[0]:
@@ -154,7 +155,7 @@ def furnace_plots(rep, figs):
                   "c": f"conservation limit 1 + {tol['conservation']:g}", "p": "preservation limit (claimed)",
                   "g": "|cos θ_v| < 0.1: agreement NOT JUDGED"}
         keys = [q for q in "snezcpg" if q in handles]
-        legend_ax.legend([handles[q] for q in keys], [labels[q] for q in keys], loc="center", ncol=min(3, ncol + 1),
+        legend_ax.legend([handles[q] for q in keys], [labels[q] for q in keys], loc="center", ncol=2 if ncol == 1 else 3,
                          fontsize=7, frameon=False)
         f = figs.save(fig, f"furnace_{slug(comp)}",
                       ["case", "cos", "sampled_r", "sampled_g", "sampled_b", "se_r", "se_g", "se_b", "non_delta_r",
@@ -352,6 +353,7 @@ def lut_plots(rep, figs):
         h2, = ax.semilogy(np.maximum([c["table_se"] for c in cells], floor), ".", ms=3, color="0.6")
         h3, = ax.semilogy([c["allowed"] for c in cells], "r_")
         ax.set_ylabel("absolute error (albedo)", fontsize=8)
+        ax.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
         ax.tick_params(labelsize=7)
         ax.set_xlabel(f"checked cell (row of the errors CSV); max |table − reference| {t['max_abs_error']:.2e}",
                       fontsize=8)
