@@ -1,27 +1,54 @@
 #!/usr/bin/env python3
 """Builds the validation report DIR/index.html (+ DIR/plots/*.png and *.csv) from the data
 DIR/data/report.json written by `dspbr validate`. Run with /usr/bin/python3 (numpy, matplotlib,
-jinja2). Every figure is written as PNG together with a CSV of the numbers it shows.
+jinja2). Every figure is written as PNG (plus a small *_thumb.png shown on the page, linking to
+the full one) together with a CSV of the numbers it shows.
 
 usage: make_report.py DIR
 """
 import csv
 import json
+import math
 import os
 import sys
+from concurrent.futures import ProcessPoolExecutor
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 from jinja2 import Environment, FileSystemLoader, select_autoescape  # noqa: E402
+from PIL import Image  # noqa: E402  (matplotlib's own dependency)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+THUMB_WIDTH = 1000  # px: figures wider than this are shown as thumbnails linking to the full PNG
+
+# Words for the identifiers of report.json (the glossary of the page explains them).
+CLAIM_WORDS = {"preserving": "preserving (E = 1 claimed)", "conserving": "conserving (E ≤ 1 only)",
+               "gains_by_spec": "gains energy by the spec"}
+AXIS_WORDS = {"roughness": "roughness r", "cos_theta": "cos θ (view)", "f0": "f0", "alpha_b": "α_b = r_b² (sheen)"}
+TABLE_UNIT = {"GGX_E": "E_m", "GGX_E_avg": "E_m,avg", "Base_E": "E", "Base_E_avg": "E_avg",
+              "Sheen_E": "E_b", "Sheen_ash_E": "E_b (alt.)"}
+
+
+def words(s):
+    """An identifier of report.json as words: component names, check names."""
+    for a, b in (("_", " "), ("<=", "≤"), (">=", "≥"), ("eta^2", "η²"), (" - P(delta) - P(fail)", " − P(δ) − P(fail)")):
+        s = s.replace(a, b)
+    return s
 
 
 def slug(s):
     return "".join(c if c.isalnum() else "_" for c in s).strip("_")
+
+
+def axis_coord(a, i):
+    """Position of sample i on a table axis (cell-centred or endpoint grid)."""
+    if a["kind"] == "cell_centred":
+        return a["lo"] + (i + 0.5) / a["size"] * (a["hi"] - a["lo"])
+    return a["lo"] + i / max(a["size"] - 1, 1) * (a["hi"] - a["lo"])
 
 
 class Figures:
@@ -30,85 +57,164 @@ class Figures:
         os.makedirs(os.path.join(out, "plots"), exist_ok=True)
 
     def save(self, fig, name, header, rows):
+        """Figures use constrained layout (no bbox_inches="tight": one draw less per figure)."""
         png = f"plots/{name}.png"
         csv_path = f"plots/{name}.csv"
-        fig.savefig(os.path.join(self.out, png), dpi=110, bbox_inches="tight")
+        fig.savefig(os.path.join(self.out, png), dpi=110)
         plt.close(fig)
         with open(os.path.join(self.out, csv_path), "w", newline="") as f:
             w = csv.writer(f)
             w.writerow(header)
             w.writerows(rows)
-        return {"png": png, "csv": csv_path}
+        return {"png": png, "csv": csv_path, "thumb": self.thumbnail(png)}
+
+    def thumbnail(self, png):
+        """A Lanczos-resampled copy THUMB_WIDTH wide (the PNG itself when not wider)."""
+        with Image.open(os.path.join(self.out, png)) as img:
+            if img.width <= THUMB_WIDTH:
+                return png
+            small = img.convert("RGB").resize((THUMB_WIDTH, round(img.height * THUMB_WIDTH / img.width)),
+                                              Image.LANCZOS).quantize(256)  # palette PNG: a few tens of kB
+        thumb = png[:-4] + "_thumb.png"
+        small.save(os.path.join(self.out, thumb), optimize=True)
+        return thumb
+
+
+def legend_above(ax, handles, labels, ncol):
+    """A legend above the axes, off the data (constrained layout makes room for it)."""
+    ax.legend(handles, labels, loc="lower left", bbox_to_anchor=(0.0, 1.0), ncol=ncol, fontsize=8, frameon=False)
 
 
 def furnace_plots(rep, figs):
+    """One panel per case: E − 1 by both estimators with ±4σ bars, tolerance lines, the unjudged
+    grazing band shaded; one legend above the panels."""
     energy = rep["energy"]
     tol = energy["tolerances"]
+    k = tol["sigmas"]
     rows_by_case = {}
     for r in energy["rows"]:
         rows_by_case.setdefault(r["case"], []).append(r)
-    cases = energy["cases"]
     groups = {}
-    for c in cases:
+    for c in energy["cases"]:
         groups.setdefault(c["component"], []).append(c)
     out = []
     for comp, cs in groups.items():
-        fig, ax = plt.subplots(figsize=(7.5, 4))
+        ncol = min(len(cs), 4)
+        nrow = math.ceil(len(cs) / ncol)
+        fig, grid = plt.subplots(nrow + 1, ncol, figsize=(max(3.1 * ncol, 6.0), 2.5 * nrow + 0.7), squeeze=False,
+                                 layout="constrained", height_ratios=[0.7 / 2.5] + [1] * nrow)
+        top = grid[0, 0].get_gridspec()
+        for ax in grid[0]:
+            ax.remove()
+        legend_ax = fig.add_subplot(top[0, :])
+        legend_ax.axis("off")
+        axes = grid[1:]
         csv_rows = []
-        for c in cs:
+        handles = {}
+        for ax, c in zip(axes.ravel(), cs):
             rs = sorted(rows_by_case[c["case"]], key=lambda r: r["cos"])
             x = np.array([r["cos"] for r in rs])
-            y = np.array([r["sampled"][1] for r in rs])
-            e = np.array([r["sampled_se"][1] for r in rs])
-            ye = np.array([r["eval"][1] for r in rs])
-            line = ax.errorbar(x, y, yerr=4 * e, marker="o", ms=3, capsize=2, label=c["case"])
-            ax.plot(x, ye, "x", color=line[0].get_color(), ms=5)
+            ys = np.array([r["sampled"][1] for r in rs]) - 1
+            es = np.array([r["sampled_se"][1] for r in rs])
+            yn = np.array([r["non_delta"][1] for r in rs]) - 1
+            en = np.array([r.get("non_delta_se", r["sampled_se"])[1] for r in rs])
+            ye = np.array([r["eval"][1] for r in rs]) - 1
+            ee = np.array([r["eval_se"][1] for r in rs])
+            dx = 0.012 * (x.max() - x.min() if len(x) > 1 else 1)
+            if np.any(np.abs(x) < 0.1):  # estimator agreement NOT JUDGED there
+                handles["g"] = ax.axvspan(-0.1 if x.min() < 0 else 0, 0.1, color="0.88", lw=0)
+            handles["s"] = ax.errorbar(x - dx, ys, yerr=k * es, fmt="o", ms=3, capsize=2, color="C0")
+            if np.any(np.abs(yn - ys) > 1e-9):
+                handles["n"] = ax.errorbar(x, yn, yerr=k * en, fmt="s", ms=2.5, capsize=2, color="0.5")
+            handles["e"] = ax.errorbar(x + dx, ye, yerr=k * ee, fmt="x", ms=4, capsize=2, color="C1")
+            handles["z"] = ax.axhline(0.0, color="k", lw=0.8)
+            handles["c"] = ax.axhline(tol["conservation"], color="r", lw=0.7, ls="--")
+            if c["claim"] == "preserving":
+                handles["p"] = ax.axhline(-c.get("preservation_tol", tol["preservation"]), color="b", lw=0.7, ls="--")
+            # y range from the estimates and limits, not the error bars: a huge eval bar at grazing
+            # view (few directions near a narrow lobe) runs off the panel instead of flattening it.
+            pts = np.concatenate([ys, ye, yn if "n" in handles else ys, [0.0, tol["conservation"]]])
+            lo, hi = float(np.min(pts)), float(np.max(pts))
+            pad = 0.15 * (hi - lo) + 0.01
+            ax.set_ylim(lo - pad, hi + pad)
+            ax.set_title(c["case"], fontsize=8)
+            ax.set_xlabel("cos θ_v (< 0: viewer inside)", fontsize=7)
+            ax.tick_params(labelsize=7)
+            ax.grid(alpha=0.3)
             for r in rs:
-                csv_rows.append([c["case"], r["cos"], *r["sampled"], *r["sampled_se"], *r["eval"], *r["eval_se"],
-                                 r["invalid_fraction"], r["conserving"], r["preserving"], r["estimators_agree"]])
-        ax.axhline(1.0, color="k", lw=0.8)
-        ax.axhline(1.0 + tol["conservation"], color="r", lw=0.6, ls="--")
-        if any(c["claim"] == "preserving" for c in cs):
-            ax.axhline(1.0 - tol["preservation"], color="b", lw=0.6, ls="--")
-        ax.set_xlabel("cos θ_v (negative: viewer inside)")
-        ax.set_ylabel("directional albedo E(v)")
-        ax.set_title(f"White furnace: {comp}  (o: BSDF-sampled ±4σ, x: cosine-weighted eval)")
-        ax.legend(fontsize=7, loc="best")
-        ax.grid(alpha=0.3)
+                csv_rows.append([c["case"], r["cos"], *r["sampled"], *r["sampled_se"], *r["non_delta"], *r["eval"],
+                                 *r["eval_se"], r["invalid_fraction"], *[r["verdicts"].get(v, "")
+                                                                          for v in ("agreement", "conservation",
+                                                                                    "preservation")]])
+        for ax in axes.ravel()[len(cs):]:
+            ax.axis("off")
+        for ax in axes[:, 0]:
+            ax.set_ylabel("E − 1", fontsize=8)
+        labels = {"s": f"BSDF-sampled, all lobes (±{k:g}σ)", "n": f"BSDF-sampled, non-delta lobes (±{k:g}σ)",
+                  "e": f"cosine-weighted eval, non-delta (±{k:g}σ)", "z": "E = 1",
+                  "c": f"conservation limit 1 + {tol['conservation']:g}", "p": "preservation limit (claimed)",
+                  "g": "|cos θ_v| < 0.1: agreement NOT JUDGED"}
+        keys = [q for q in "snezcpg" if q in handles]
+        legend_ax.legend([handles[q] for q in keys], [labels[q] for q in keys], loc="center", ncol=2 if ncol == 1 else 3,
+                         fontsize=7, frameon=False)
         f = figs.save(fig, f"furnace_{slug(comp)}",
-                      ["case", "cos", "sampled_r", "sampled_g", "sampled_b", "se_r", "se_g", "se_b", "eval_r", "eval_g",
-                       "eval_b", "eval_se_r", "eval_se_g", "eval_se_b", "invalid_fraction", "conserving", "preserving",
-                       "estimators_agree"], csv_rows)
+                      ["case", "cos", "sampled_r", "sampled_g", "sampled_b", "se_r", "se_g", "se_b", "non_delta_r",
+                       "non_delta_g", "non_delta_b", "eval_r", "eval_g", "eval_b", "eval_se_r", "eval_se_g",
+                       "eval_se_b", "invalid_fraction", "agreement", "conservation", "preservation"], csv_rows)
         f["component"] = comp
         f["cases"] = cs
         out.append(f)
     return out
 
 
-def sphere_plots(rep, figs):
+def split_strip(rgb, n, res):
+    gap = (rgb.shape[1] - n * res) // max(n - 1, 1)
+    return [rgb[:, k * (res + gap):k * (res + gap) + res] for k in range(n)]
+
+
+def sphere_plots(rep, figs, out_dir):
+    """Per row: the pictures on a neutral grey background (top) and E − 1 in false colour (bottom)
+    with a colour bar whose arrows mark clipping; the true range is in the title."""
     out = []
+    lim = 0.2
     for row in rep["furnace_images"]:
         n = len(row["values"])
         res = row["res"]
-        fig, axes = plt.subplots(1, n, figsize=(2.1 * n + 1, 2.4), squeeze=False)
+        pics = split_strip(plt.imread(os.path.join(out_dir, row["png"]))[:, :, :3], n, res)
+        fig, axes = plt.subplots(2, n, figsize=(1.9 * n + 1.2, 4.2), squeeze=False, layout="constrained")
+        yy, xx = np.mgrid[0:res, 0:res]
+        inside = ((xx + 0.5) / res * 2 - 1) ** 2 + (1 - (yy + 0.5) / res * 2) ** 2 < 1
         csv_rows = []
-        lim = 0.2
         im = None
-        for k, (val, alb) in enumerate(zip(row["values"], row["albedo_green"])):
+        lo, hi = np.inf, -np.inf
+        for k, (val, alb, pic) in enumerate(zip(row["values"], row["albedo_green"], pics)):
+            shown = np.where(inside[..., None], pic, 0.5)  # neutral grey outside the sphere
+            axes[0, k].imshow(shown, interpolation="nearest")
+            axes[0, k].add_patch(plt.Circle((res / 2 - 0.5, res / 2 - 0.5), res / 2, fill=False, color="0.25", lw=0.6))
+            axes[0, k].set_title(f"{row['parameter']} = {val:g}", fontsize=8)
             a = np.array(alb, dtype=float).reshape(res, res)
-            yy, xx = np.mgrid[0:res, 0:res]
-            inside = ((xx + 0.5) / res * 2 - 1) ** 2 + (1 - (yy + 0.5) / res * 2) ** 2 < 1
             dev = np.where(inside, a - 1.0, np.nan)
-            im = axes[0, k].imshow(dev, cmap="RdBu_r", vmin=-lim, vmax=lim)
-            axes[0, k].set_title(f"{val:g}", fontsize=8)
-            axes[0, k].axis("off")
+            im = axes[1, k].imshow(dev, cmap="RdBu_r", vmin=-lim, vmax=lim, interpolation="nearest")
+            for ax in axes[:, k]:
+                ax.set_xticks([])
+                ax.set_yticks([])
+                for sp in ax.spines.values():
+                    sp.set_visible(False)
             d = a[inside] - 1.0
+            lo, hi = min(lo, d.min()), max(hi, d.max())
             csv_rows.append([row["name"], val, float(d.mean()), float(d.min()), float(d.max())])
-        fig.colorbar(im, ax=axes[0, :].tolist(), shrink=0.8, label="E − 1 (red: gain, blue: loss)")
-        fig.suptitle(f"Furnace spheres, deviation from 1: {row['name']} ({row['parameter']} left to right)", fontsize=9)
+        extend = {(False, False): "neither", (True, False): "min", (False, True): "max", (True, True): "both"}[
+            (lo < -lim, hi > lim)]
+        cb = fig.colorbar(im, ax=axes[1, :].tolist(), shrink=0.9, extend=extend)
+        cb.set_label("E − 1 (no unit)", fontsize=8)
+        cb.ax.tick_params(labelsize=7)
+        axes[0, 0].set_ylabel("picture", fontsize=8)
+        axes[1, 0].set_ylabel("E − 1", fontsize=8)
+        clip = " (arrows: clipped)" if extend != "neither" else ""
+        fig.suptitle(f"{row['name']}: E − 1 from {lo:+.3f} to {hi:+.3f}{clip}", fontsize=9)
         f = figs.save(fig, f"spheres_{slug(row['name'])}", ["row", row["parameter"], "mean_dev", "min_dev", "max_dev"],
                       csv_rows)
-        f.update({"name": row["name"], "picture": row["png"], "exr": row["exr"], "note": row["note"],
+        f.update({"name": row["name"], "exr": row["exr"], "picture": row["png"], "note": row["note"],
                   "parameter": row["parameter"], "values": row["values"], "spp": row["spp"], "res": res,
                   "stats": csv_rows})
         out.append(f)
@@ -123,18 +229,19 @@ def reciprocity_plot(rep, figs):
     refl = [max(c["reflection_upper"]["max_rel_dev"], c["reflection_lower"]["max_rel_dev"]) for c in cases]
     trans = [c["transmission_adjoint" if c.get("eta_rule") == "adjoint" else "transmission_eta2"]["max_rel_dev"]
              for c in cases]
-    fig, ax = plt.subplots(figsize=(8, 0.22 * len(cases) + 1.5))
+    fig, ax = plt.subplots(figsize=(8, 0.22 * len(cases) + 1.5), layout="constrained")
     y = np.arange(len(cases))
     floor = 1e-17
-    ax.barh(y - 0.2, np.maximum(refl, floor), height=0.4, label="reflection f(v,l) vs f(l,v)")
-    ax.barh(y + 0.2, np.maximum(trans, floor), height=0.4, label="refraction (η² rule)")
-    ax.axvline(rec["tolerance"], color="r", ls="--", lw=0.8, label="tolerance")
+    h1 = ax.barh(y - 0.2, np.maximum(refl, floor), height=0.4)
+    h2 = ax.barh(y + 0.2, np.maximum(trans, floor), height=0.4)
+    h3 = ax.axvline(rec["tolerance"], color="r", ls="--", lw=0.8)
     ax.set_xscale("log")
     ax.set_yticks(y)
     ax.set_yticklabels(names, fontsize=7)
     ax.invert_yaxis()
-    ax.set_xlabel("max relative deviation")
-    ax.legend(fontsize=7)
+    ax.set_xlabel(f"max relative deviation |a − b| / max(a, b) (bars start at {floor:g})")
+    legend_above(ax, [h1, h2, h3], ["reflection f(v,l) vs f(l,v)", "refraction (η² rule)",
+                                     f"tolerance {rec['tolerance']:g}"], ncol=3)
     return figs.save(fig, "reciprocity", ["case", "reflection_max_rel_dev", "transmission_max_rel_dev", "eta_rule",
                                           "plain_symmetry_max_rel_dev"],
                      [[c["case"], r, t, c.get("eta_rule", ""), c["transmission_plain"]["max_rel_dev"]]
@@ -145,44 +252,53 @@ def chi2_plots(rep, figs):
     ch = rep["chi2"]
     tests = ch["tests"]
     out = {}
-    fig, ax = plt.subplots(figsize=(8, 3.5))
+    # p-values by name (the same labels as the table below), not by an index.
+    fig, ax = plt.subplots(figsize=(8, 0.2 * len(tests) + 1.4), layout="constrained")
     p = np.array([max(t["p_value"], 1e-300) for t in tests])
+    y = np.arange(len(tests))
     colors = ["tab:green" if t["passed"] else "tab:red" for t in tests]
-    ax.scatter(np.arange(len(tests)), p, c=colors, s=12)
-    ax.axhline(ch["alpha_per_test"], color="r", ls="--", lw=0.8, label=f"Šidák α = {ch['alpha_per_test']:.2e}")
-    ax.set_yscale("log")
-    ax.set_xlabel("test (case × incidence, see table)")
-    ax.set_ylabel("p-value")
-    ax.legend(fontsize=7)
+    ax.scatter(p, y, c=colors, s=14)
+    h = ax.axvline(ch["alpha_per_test"], color="r", ls="--", lw=0.8)
+    ax.set_xscale("log")
+    ax.set_xlim(min(p.min(), ch["alpha_per_test"]) / 10, 1.5)
+    ax.set_yticks(y)
+    ax.set_yticklabels([f"{t['case']}, cos θ_v = {t['cos']:g}" for t in tests], fontsize=7)
+    ax.invert_yaxis()
+    ax.set_xlabel("p-value (green: all sampling checks PASS, red: a failure)")
+    ax.grid(alpha=0.3, axis="x")
+    legend_above(ax, [h], [f"Šidák-corrected α = {ch['alpha_per_test']:.2e} per test"], ncol=1)
     out["pvalues"] = figs.save(fig, "chi2_pvalues", ["case", "cos", "statistic", "dof", "p_value", "alpha",
-                                                      "pdf_integral", "pdf_integral_expected", "passed"],
+                                                      "pdf_integral", "pdf_integral_expected", "verdict"],
                                [[t["case"], t["cos"], t["statistic"], t["dof"], t["p_value"], t["alpha"],
-                                 t["pdf_integral"], t["pdf_integral_expected"], t["passed"]] for t in tests])
+                                 t["pdf_integral"], t["pdf_integral_expected"], t.get("verdict", "")] for t in tests])
     hists = []
-    for k, h in enumerate(ch["histograms"]):
-        nt, nphi = h["theta_bins"], h["phi_bins"]
-        o = np.array(h["observed"]).reshape(nt, nphi)
-        e = np.array(h["expected"]).reshape(nt, nphi)
-        fig, axes = plt.subplots(1, 3, figsize=(11, 2.6))
+    for k, hh in enumerate(ch["histograms"]):
+        nt, nphi = hh["theta_bins"], hh["phi_bins"]
+        o = np.array(hh["observed"]).reshape(nt, nphi)
+        e = np.array(hh["expected"]).reshape(nt, nphi)
+        fig, axes = plt.subplots(1, 3, figsize=(13, 3.4), layout="constrained")
         vmax = max(o.max(), e.max(), 1)
         ext = [0, 360, 180, 0]
-        axes[0].imshow(o, aspect="auto", extent=ext, vmin=0, vmax=vmax, cmap="viridis")
-        axes[0].set_title("observed", fontsize=8)
-        im1 = axes[1].imshow(e, aspect="auto", extent=ext, vmin=0, vmax=vmax, cmap="viridis")
-        axes[1].set_title("expected (∫pdf)", fontsize=8)
-        fig.colorbar(im1, ax=axes[1])
+        im0 = axes[0].imshow(o, aspect="auto", extent=ext, vmin=0, vmax=vmax, cmap="viridis")
+        axes[0].set_title("observed samples", fontsize=9)
+        axes[1].imshow(e, aspect="auto", extent=ext, vmin=0, vmax=vmax, cmap="viridis")
+        axes[1].set_title("expected = N ∫pdf over the bin", fontsize=9)
+        fig.colorbar(im0, ax=axes[:2].tolist(), label="samples per bin", shrink=0.9)
         with np.errstate(divide="ignore", invalid="ignore"):
             z = np.where(e > 0, (o - e) / np.sqrt(e), 0)
-        im2 = axes[2].imshow(z, aspect="auto", extent=ext, vmin=-4, vmax=4, cmap="RdBu_r")
-        axes[2].set_title("(obs − exp) / √exp", fontsize=8)
-        fig.colorbar(im2, ax=axes[2])
+        zlim = 4
+        ext_z = {(False, False): "neither", (True, False): "min", (False, True): "max", (True, True): "both"}[
+            (z.min() < -zlim, z.max() > zlim)]
+        im2 = axes[2].imshow(z, aspect="auto", extent=ext, vmin=-zlim, vmax=zlim, cmap="RdBu_r")
+        axes[2].set_title(f"(obs − exp) / √exp, range {z.min():+.1f} … {z.max():+.1f}", fontsize=9)
+        fig.colorbar(im2, ax=axes[2], label="Pearson residual (σ)", extend=ext_z, shrink=0.9)
         for a in axes:
-            a.set_xlabel("φ (deg)")
-            a.set_ylabel("θ (deg)")
-        fig.suptitle(f"{h['case']}, cos θ_v = {h['cos']:g}, p = {h['p_value']:.3g}", fontsize=9)
+            a.set_xlabel("φ_l (degrees)", fontsize=8)
+            a.tick_params(labelsize=7)
+        axes[0].set_ylabel("θ_l (degrees)", fontsize=8)
         rows = [[i, j, o[i, j], e[i, j]] for i in range(nt) for j in range(nphi)]
         f = figs.save(fig, f"chi2_hist_{k}", ["theta_bin", "phi_bin", "observed", "expected"], rows)
-        f["title"] = f"{h['case']} at cos θ_v = {h['cos']:g}"
+        f["title"] = f"{hh['case']} at cos θ_v = {hh['cos']:g} (p = {hh['p_value']:.3g})"
         hists.append(f)
     out["histograms"] = hists
     return out
@@ -199,78 +315,126 @@ def lut_plots(rep, figs):
         shape = [a["size"] for a in axes]
         vals = vals.reshape(shape)
         name = t["name"]
+        unit = f"{TABLE_UNIT.get(name, name)} (albedo, no unit)"
         if len(shape) == 1:
-            fig, ax = plt.subplots(figsize=(4.5, 3))
-            x = [(i + 0.5) / shape[0] if axes[0]["kind"] == "cell_centred" else i / (shape[0] - 1) for i in range(shape[0])]
+            fig, ax = plt.subplots(figsize=(4.5, 3), layout="constrained")
+            x = [axis_coord(axes[0], i) for i in range(shape[0])]
             ax.plot(x, vals, "o-", ms=3)
-            ax.set_xlabel(axes[0]["name"])
-            ax.set_ylabel(name)
+            ax.set_xlabel(AXIS_WORDS.get(axes[0]["name"], axes[0]["name"]))
+            ax.set_ylabel(unit)
             ax.grid(alpha=0.3)
         else:
-            slices = [vals] if len(shape) == 2 else [vals[i] for i in np.linspace(0, shape[0] - 1, 4).astype(int)]
-            titles = [""] if len(shape) == 2 else [f"{axes[0]['name']} index {i}" for i in
-                                                    np.linspace(0, shape[0] - 1, 4).astype(int)]
-            fig, axs = plt.subplots(1, len(slices), figsize=(3.6 * len(slices) + 1, 3.2), squeeze=False)
+            idx = [None] if len(shape) == 2 else sorted(set(np.linspace(0, shape[0] - 1, 4).astype(int).tolist()))
+            slices = [vals] if len(shape) == 2 else [vals[i] for i in idx]
+            titles = [""] if len(shape) == 2 else [f"{AXIS_WORDS.get(axes[0]['name'], axes[0]['name'])} = "
+                                                   f"{axis_coord(axes[0], i):.3g}" for i in idx]
+            lo, hi = float(vals.min()), float(vals.max())
+            vmin, vmax = min(0.0, lo), max(1.0, hi)  # the colour scale covers the true range: nothing clipped
+            fig, axs = plt.subplots(1, len(slices), figsize=(3.3 * len(slices) + 1.2, 3.2), squeeze=False,
+                                    layout="constrained")
             im = None
+            xa, ya = axes[-1], axes[-2]
             for a, s, tt in zip(axs[0], slices, titles):
-                im = a.imshow(s, origin="lower", extent=[0, 1, 0, 1], vmin=0, vmax=1, cmap="magma")
-                a.set_xlabel(axes[-1]["name"])
-                a.set_ylabel(axes[-2]["name"])
+                im = a.imshow(s, origin="lower", extent=[xa["lo"], xa["hi"], ya["lo"], ya["hi"]], vmin=vmin, vmax=vmax,
+                              cmap="magma", aspect="auto")
+                a.set_xlabel(AXIS_WORDS.get(xa["name"], xa["name"]), fontsize=8)
                 a.set_title(tt, fontsize=8)
-            fig.colorbar(im, ax=axs[0].tolist(), label=name)
+                a.tick_params(labelsize=7)
+            axs[0, 0].set_ylabel(AXIS_WORDS.get(ya["name"], ya["name"]), fontsize=8)
+            cb = fig.colorbar(im, ax=axs[0].tolist())
+            cb.set_label(f"{unit}; values {lo:.3g} … {hi:.3g}", fontsize=8)
         fig.suptitle(name, fontsize=9)
         pic = figs.save(fig, f"lut_{slug(name)}", ["flat_index", "value"], [[i, v] for i, v in enumerate(vals.ravel())])
-        # Error against the independent reference.
+        # Error against the independent reference, with the table's own error estimate beside it.
         cells = t["cells"]
-        fig, ax = plt.subplots(figsize=(4.5, 3))
-        err = [c["abs_error"] for c in cells]
-        allowed = [c["allowed"] for c in cells]
-        ax.semilogy(np.maximum(err, 1e-12), "o", ms=3, label="|table − reference|")
-        ax.semilogy(allowed, "r_", label="allowed")
-        ax.set_xlabel("checked cell")
-        ax.set_title(f"{name}: max error {t['max_abs_error']:.2e}", fontsize=9)
-        ax.legend(fontsize=7)
+        fig, ax = plt.subplots(figsize=(5.2, 3.6), layout="constrained")
+        floor = 1e-12
+        h1, = ax.semilogy(np.maximum([c["abs_error"] for c in cells], floor), "o", ms=3)
+        h2, = ax.semilogy(np.maximum([c["table_se"] for c in cells], floor), ".", ms=3, color="0.6")
+        h3, = ax.semilogy([c["allowed"] for c in cells], "r_")
+        ax.set_ylabel("absolute error (albedo)", fontsize=8)
+        ax.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
+        ax.tick_params(labelsize=7)
+        ax.set_xlabel(f"checked cell (row of the errors CSV); max |table − reference| {t['max_abs_error']:.2e}",
+                      fontsize=8)
+        legend_above(ax, [h1, h2, h3], ["|table − reference|", "table's own σ (reported, not used)",
+                                        "allowed (fixed)"], ncol=2)
         errf = figs.save(fig, f"lut_error_{slug(name)}",
                          ["index", "x", "table", "table_se", "reference", "reference_err", "abs_error", "allowed"],
                          [[c["index"], c["x"], c["table"], c["table_se"], c["reference"], c["reference_err"],
                            c["abs_error"], c["allowed"]] for c in cells])
         out.append({"name": name, "picture": pic, "error": errf, "max_abs_error": t["max_abs_error"],
-                    "passed": t["passed"], "cells": len(cells)})
+                    "max_table_se": t.get("max_table_se", 0.0), "verdict": t.get("verdict", ""),
+                    "cells": len(cells), "size": "×".join(str(s) for s in shape)})
     return out
 
 
 def convergence_plot(rep, figs):
+    """One panel per component, one colour per case (roughness row); solid: sampled, dashed: eval."""
     conv = rep["convergence"]
     if not conv:
         return None
-    fig, ax = plt.subplots(figsize=(6, 4))
-    rows = []
+    comps = []
     for c in conv:
-        n = np.array(c["samples"], dtype=float)
-        l1 = ax.loglog(n, np.maximum(c["rms_error_sampled"], 1e-12), "o-", ms=3, label=f"{c['case']} (sampled)")
-        ax.loglog(n, np.maximum(c["rms_error_eval"], 1e-12), "x--", ms=4, color=l1[0].get_color(),
-                  label=f"{c['case']} (eval)")
-        for i in range(len(n)):
-            rows.append([c["case"], int(n[i]), c["rms_error_sampled"][i], c["rms_error_eval"][i], c["reference"]])
-    n = np.array(conv[0]["samples"], dtype=float)
-    ax.loglog(n, 0.5 / np.sqrt(n), "k:", label="∝ N^−1/2")
-    ax.set_xlabel("samples N")
-    ax.set_ylabel("RMS error of E(v) at cos θ_v = 0.5")
-    ax.legend(fontsize=6)
-    ax.grid(alpha=0.3, which="both")
+        comp = c.get("component", "")
+        if comp not in comps:
+            comps.append(comp)
+    fig, axes = plt.subplots(1, len(comps), figsize=(4.6 * len(comps) + 2, 3.6), squeeze=False, layout="constrained")
+    rows = []
+    for ax, comp in zip(axes[0], comps):
+        cs = [c for c in conv if c.get("component", "") == comp]
+        cmap = plt.get_cmap("viridis")
+        for i, c in enumerate(cs):
+            col = cmap(i / max(len(cs) - 1, 1) * 0.9)
+            n = np.array(c["samples"], dtype=float)
+            ax.loglog(n, c["rms_error_sampled"], "o-", ms=3, color=col, label=f"{c['case']}")
+            ax.loglog(n, c["rms_error_eval"], "x--", ms=4, color=col)
+            for j in range(len(n)):
+                rows.append([c["case"], int(n[j]), c["rms_error_sampled"][j], c["rms_error_eval"][j], c["reference"]])
+        n = np.array(cs[0]["samples"], dtype=float)
+        ax.loglog(n, 0.5 / np.sqrt(n), "k:", label="0.5 N^−1/2")
+        if "reference_se" in cs[0]:  # errors cannot be resolved below the reference's own noise
+            ax.axhline(max(c["reference_se"] for c in cs), color="0.5", lw=0.8, ls="-.", label="reference σ (largest)")
+        ax.set_xlabel("samples (or eval directions) N", fontsize=8)
+        ax.set_ylabel(f"RMS error of E(v), cos θ_v = {cs[0]['cos']:g}", fontsize=8)
+        ax.set_title(f"{words(comp)}: solid = BSDF-sampled, dashed = eval", fontsize=9)
+        ax.grid(alpha=0.3, which="both")
+        ax.tick_params(labelsize=7)
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.0, 1.0))
     return figs.save(fig, "convergence", ["case", "samples", "rms_error_sampled", "rms_error_eval", "reference"], rows)
 
 
 def energy_statement(rep):
-    """Where DSPBR itself (the spec's formulas, not our code) loses or gains energy, with numbers."""
-    out = []
+    """Where DSPBR itself (the spec's formulas, not our code) loses or gains energy: one row per
+    spec statement (the note), with the cases it covers and their measured range."""
+    groups = {}
     for c in rep["energy"]["cases"]:
-        if c["claim"] == "preserving" and c["preserving"] and c["conserving"]:
+        if c["claim"] == "preserving" and c.get("preservation") == "PASS" and c.get("conservation") == "PASS":
             continue
         if c["component"] in ("sheen", "clearcoat") and "lobe" in c["case"]:
             continue  # single lobes on their own are not materials
-        out.append({"case": c["case"], "claim": c["claim"], "min": c["min"], "max": c["max"], "note": c["note"]})
-    return out
+        g = groups.setdefault(c["note"], {"note": c["note"], "claim": CLAIM_WORDS.get(c["claim"], c["claim"]),
+                                          "cases": []})
+        g["cases"].append({"case": c["case"], "min": c["min"], "max": c["max"]})
+    return list(groups.values())
+
+
+def not_judged_groups(rep):
+    groups = {}
+    for v in rep.get("verdicts_not_passed", []):
+        if v["status"] == "NOT JUDGED":
+            groups.setdefault((v["check"], v.get("reason", "")), []).append(v["what"])
+    return [{"check": k[0], "reason": k[1], "items": items} for k, items in groups.items()]
+
+
+def run_figure_job(name, out):
+    with open(os.path.join(out, "data", "report.json")) as f:
+        rep = json.load(f)
+    figs = Figures(out)
+    if name == "spheres":
+        return sphere_plots(rep, figs, out)
+    return {"furnace": furnace_plots, "luts": lut_plots, "chi2": chi2_plots, "reciprocity": reciprocity_plot,
+            "convergence": convergence_plot}[name](rep, figs)
 
 
 def main():
@@ -285,21 +449,23 @@ def main():
     except (OSError, ValueError) as e:
         print(f"make_report.py: cannot read {path}: {e}", file=sys.stderr)
         return 1
-    figs = Figures(out)
-    ctx = {
+    # The figure groups are independent: drawn by two processes (most costly first).
+    jobs = ["furnace", "spheres", "luts", "chi2", "reciprocity", "convergence"]
+    with ProcessPoolExecutor(max_workers=2) as pool:
+        futures = {k: pool.submit(run_figure_job, k, out) for k in jobs}
+        ctx = {k: f.result() for k, f in futures.items()}
+    ctx.update({
         "rep": rep,
-        "furnace": furnace_plots(rep, figs),
-        "spheres": sphere_plots(rep, figs),
-        "reciprocity": reciprocity_plot(rep, figs),
-        "chi2": chi2_plots(rep, figs),
-        "luts": lut_plots(rep, figs),
-        "convergence": convergence_plot(rep, figs),
         "statement": energy_statement(rep),
-        "failed": sum(c["total"] - c["passed"] for c in rep["summary"]),
-    }
+        "not_judged": not_judged_groups(rep),
+        "failed": sum(c["failed"] for c in rep["summary"]),
+        "claim_words": CLAIM_WORDS,
+    })
     env = Environment(loader=FileSystemLoader(os.path.join(HERE, "templates")),
                       autoescape=select_autoescape(["html"]))
     env.filters["g"] = lambda x, d=4: f"{x:.{d}g}" if isinstance(x, (int, float)) else x
+    env.filters["words"] = words
+    env.filters["word"] = lambda s: {"PASS": "pass", "FAIL": "fail", "WAIVED": "waived", "NOT JUDGED": "nj"}.get(s, "")
     html = env.get_template("index.html.j2").render(**ctx)
     tmp = os.path.join(out, ".index.html.tmp")
     with open(tmp, "w") as f:

@@ -134,13 +134,14 @@ const char* kNoteFlakes =
 
 Catalog dspbr_catalog(const CatalogOptions& opt) {
   Catalog cat;
-  const LutSet* luts = nullptr;
+  const LutSet* luts = opt.luts;
   try {
-    luts = opt.luts ? opt.luts : &LutSet::builtin();
+    if (!luts) luts = &LutSet::builtin();
   } catch (const std::exception& e) {
     cat.skipped.push_back(std::string("all BSDF checks: the built-in tables could not be loaded: ") + e.what());
     return cat;
   }
+  cat.luts = luts;
   Builder b{*luts, cat};
   const std::vector<double> rough =
       opt.quick ? std::vector<double>{0.0, 0.5, 1.0} : std::vector<double>{0.0, 0.2, 0.5, 0.8, 1.0};

@@ -9,10 +9,7 @@
 #include <vector>
 
 #include "dspbr/bsdf/bsdf.h"
-
-namespace dspbr {
-struct LutSet;
-}
+#include "dspbr/lut/lut_set.h"
 
 namespace dspbr::validate {
 
@@ -20,7 +17,7 @@ namespace dspbr::validate {
 enum class EnergyClaim {
   Conserving,            // E <= 1 only (no preservation claim): a loss is reported, not failed
   Preserving,            // E >= 1 - tol as well (energy-compensated white materials)
-  GainsBySpec,           // the spec's own model gains energy here: a gain is reported, not failed
+  GainsBySpec,           // the spec's own model gains energy here (conservation failures: waivers.h)
 };
 
 struct BsdfCase {
@@ -60,16 +57,17 @@ struct Catalog {
   std::vector<StabilityCase> stability;
   std::vector<FurnaceRow> furnace_rows;
   std::vector<std::string> skipped;  // what could not be checked, and why
+  const LutSet* luts = nullptr;      // the tables the BSDF cases read (waivers of table effects)
 };
 
 struct CatalogOptions {
   bool quick = false;
   std::size_t random_materials = 2000;  // random parameter sets for the stability sweep
   uint64_t seed = 1;
-  const LutSet* luts = nullptr;  // tables of the BSDF cases; nullptr: LutSet::builtin()
+  const LutSet* luts = nullptr;  // tables of every BSDF (null: LutSet::builtin()); must outlive the catalog
 };
 
-// The DSPBR cases (the reference BSDF with opt.luts, default LutSet::builtin()).
+// The DSPBR cases (the reference BSDF with opt.luts).
 Catalog dspbr_catalog(const CatalogOptions& opt);
 
 }  // namespace dspbr::validate

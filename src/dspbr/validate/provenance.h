@@ -1,0 +1,21 @@
+// Where a validation report comes from: project version and git commit (fixed when CMake
+// configured the build, dspbr/version.h), and the settings of the table file that was used.
+#pragma once
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace dspbr::validate {
+
+std::string project_version();  // CMake PROJECT_VERSION, e.g. "0.1"
+std::string git_describe();     // `git describe --always --dirty` at configure time ("unknown" without git)
+
+// File name, FNV-1a 64-bit hash of its bytes, and the generator settings of each table (sizes,
+// integrator, samples, target error, seed) of a `dspbr lut` JSON file. Throws std::runtime_error
+// naming the file when it cannot be read.
+nlohmann::json table_file_settings(const std::string& path);
+
+// The command line of this process (/proc/self/cmdline, arguments joined by spaces; "" if unknown).
+std::string process_command_line();
+
+}  // namespace dspbr::validate
