@@ -174,6 +174,33 @@ TEST(LutIo, CommittedHeaderMatchesJson) {
   EXPECT_EQ(lut_header_text(tables, LutOptions{}), slurp(kLuts + "/pbrlut.hpp"));
 }
 
+// The Base_E atlas holds the slices stacked vertically; every PNG decodes (offset + scale * pixel /
+// 65535 from its own attribute) to the JSON values within 16-bit rounding; the attributes name the
+// table and its axes.
+TEST(LutIo, CommittedAtlasAndPngsMatchJson) {
+  for (const Table& t : read_lut_json(kLuts + "/dspbr_luts.json")) {
+    if (!lut_atlas_name(t).empty()) {
+      int w = 0, h = 0;
+      const std::vector<float> px = read_lut_exr(kLuts + "/" + lut_atlas_name(t), &w, &h);
+      ASSERT_EQ(size_t(w) * size_t(h), t.size());
+      EXPECT_EQ(h, t.axes[0].size * t.axes[1].size);
+      for (size_t i = 0; i < t.size(); ++i) EXPECT_EQ(px[i], float(t.values[i]));
+    }
+    auto in = OIIO::ImageInput::open(kLuts + "/" + lut_png_names(t)[0]);
+    ASSERT_TRUE(in) << t.name;
+    const OIIO::ImageSpec& spec = in->spec();
+    EXPECT_EQ(spec.format, OIIO::TypeDesc::UINT16);
+    EXPECT_EQ(spec.get_string_attribute("dspbr:table"), t.name);
+    EXPECT_NE(spec.get_string_attribute("dspbr:axes").find(t.axes.back().name), std::string::npos);
+    double lo = 0, scale = 0;
+    ASSERT_EQ(std::sscanf(spec.get_string_attribute("dspbr:png_decode").c_str(), "value = %lf + %lf", &lo, &scale), 2);
+    std::vector<uint16_t> px(size_t(spec.width) * size_t(spec.height));
+    ASSERT_TRUE(in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT16, px.data()));
+    ASSERT_EQ(px.size(), t.size());
+    for (size_t i = 0; i < t.size(); ++i) EXPECT_NEAR(lo + scale * px[i] / 65535.0, t.values[i], 0.51 * scale / 65535.0 + 1e-9);
+  }
+}
+
 TEST(LutIo, CommittedExrsMatchJson) {
   for (const Table& t : read_lut_json(kLuts + "/dspbr_luts.json")) {
     const std::vector<std::string> names = lut_exr_names(t);
@@ -217,7 +244,7 @@ TEST(LutCli, SameFilesWithOneAndTwoThreads) {
     EXPECT_NE(e.path().filename().string().rfind(".tmp-", 0), 0u) << "temporary file left: " << e.path();
     EXPECT_EQ(slurp(e.path()), slurp(d2 / e.path().filename())) << e.path().filename();
   }
-  EXPECT_EQ(files, 1 + 2 + 1 + 2);  // GGX_E, 2 Base slices, Sheen_ash_E, header, JSON
+  EXPECT_EQ(files, 1 + 2 + 1 + 1 + 3 + 2);  // GGX_E, 2 Base slices + atlas, Sheen_ash_E, 3 PNGs, header, JSON
   fs::remove_all(d1);
   fs::remove_all(d2);
 }

@@ -34,7 +34,7 @@ struct LutArgs {
   bool tables_given = false;
   std::vector<std::string> sizes;
   std::string grid = "cell";
-  std::string formats = "exr,hpp,json";
+  std::string formats = "exr,png,hpp,json";
   std::string integrator = "qmc";
   int samples = 0;
   double target_error = kLutDefaultTargetError;
@@ -123,12 +123,13 @@ LutOptions to_options(const LutArgs& a) {
 
 LutFormats to_formats(const LutArgs& a) {
   LutFormats f;
-  f.exr = f.hpp = f.json = false;
+  f.exr = f.hpp = f.json = f.png = false;
   for (const std::string& s : split(a.formats, ',')) {
     if (s == "exr") f.exr = true;
     else if (s == "hpp") f.hpp = true;
     else if (s == "json") f.json = true;
-    else throw UsageError("--formats: unknown format '" + s + "' (choose from exr, hpp, json)");
+    else if (s == "png") f.png = true;
+    else throw UsageError("--formats: unknown format '" + s + "' (choose from exr, png, hpp, json)");
   }
   f.half = a.half;
   return f;
@@ -167,7 +168,7 @@ void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& for
   if (formats.json)
     write_text_atomically((fs::path(a.out) / "dspbr_renderer_luts.json").string(),
                           renderer_json_text(luts, opt, a.renderer_scale));
-  if (formats.exr) write_renderer_images(luts, (fs::path(a.out) / "renderer").string());
+  if (formats.exr || formats.png) write_renderer_images(luts, (fs::path(a.out) / "renderer").string(), formats.half);
   if (formats.hpp)
     for (LookupDialect d : {LookupDialect::C, LookupDialect::Glsl, LookupDialect::Hlsl})
       write_text_atomically((fs::path(a.out) / lookup_file_name(d)).string(), lookup_code(luts, d, provenance));
@@ -313,7 +314,7 @@ void add_lut_command(CLI::App& app) {
   cmd->add_option("--size", args->sizes,
                   "Per-table resolution NAME=SIZE, slowest axis first, e.g. GGX_E=64x64, Base_E=16x32x32 (repeatable)");
   cmd->add_option("--grid", args->grid, "Axis sampling: cell (x_i = (i+0.5)/N, default) or endpoint (x_i = i/(N-1))");
-  cmd->add_option("--formats", args->formats, "Comma-separated output formats: exr,hpp,json (default: all)");
+  cmd->add_option("--formats", args->formats, "Comma-separated output formats: exr, png (16-bit), hpp (headers, lookup code), json (default: all)");
   cmd->add_option("--integrator", args->integrator,
                   "qmc (importance-sampled, Owen-scrambled Sobol', default) or mc (plain Monte Carlo baseline)");
   cmd->add_option("--samples", args->samples,

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "dspbr/io/atomic_file.h"
+#include "dspbr/lut/table_image.h"
 
 namespace dspbr {
 
@@ -69,20 +70,23 @@ void emit_braces(std::ostringstream& o, const Table& t, size_t level, size_t off
   o << "}";
 }
 
-void write_exr(const std::string& path, const float* data, int width, int height, bool half) {
-  write_atomically(path, [&](const std::string& tmp) {
-    auto out = OIIO::ImageOutput::create(tmp);
-    if (!out) throw std::runtime_error("cannot create an EXR writer for '" + path + "': " + OIIO::geterror());
-    OIIO::ImageSpec spec(width, height, 1, half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
-    spec.channelnames = {"Y"};
-    spec.attribute("compression", "zip");
-    // OIIO stamps the current time unless DateTime is set; an empty one is not written, so the
-    // same tables give the same bytes.
-    spec.attribute("DateTime", "");
-    if (!out->open(tmp, spec)) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
-    if (!out->write_image(OIIO::TypeDesc::FLOAT, data)) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
-    if (!out->close()) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
-  });
+// The table's axes and conventions as image attributes (a file explains itself).
+ImageAttributes table_attributes(const Table& t) {
+  std::string axes;
+  for (size_t d = 0; d < t.axes.size(); ++d) {
+    const Axis& a = t.axes[d];
+    axes += (d ? ", " : "") + a.name + "[" + std::to_string(a.size) + "] on [" + fmt::format("{:g}", a.lo) + ", " +
+            fmt::format("{:g}", a.hi) + "]";
+  }
+  return {{"dspbr:table", t.name},
+          {"dspbr:model", "DSPBR 2025x"},
+          {"dspbr:layout", "published, version 1"},
+          {"dspbr:axes", axes + " (slowest to fastest; columns = the fastest)"},
+          {"dspbr:grid", t.axes.empty() || t.axes[0].kind == GridKind::CellCentred
+                             ? "cell-centred: sample i of N at (i + 0.5) / N"
+                             : "endpoint: sample i of N at i / (N - 1)"},
+          {"dspbr:interpolation", "multilinear, clamp to edge"},
+          {"dspbr:encoding", "value"}};
 }
 
 }  // namespace
@@ -113,9 +117,34 @@ double write_lut_exrs(const Table& t, const std::string& dir, bool half) {
     }
     for (size_t i = 0; i < per_image; ++i)
       max_rounding = std::max(max_rounding, std::abs(double(stored[i]) - t.values[k * per_image + i]));
-    write_exr((fs::path(dir) / names[k]).string(), px.data(), width, height, half);
+    ImageAttributes attrs = table_attributes(t);
+    if (names.size() > 1) attrs.push_back({"dspbr:slice", t.axes[0].name + " = " + fmt::format("{:.9g}", t.axes[0].coord(int(k)))});
+    write_table_image((fs::path(dir) / names[k]).string(), px, width, height, 1,
+                      half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT, attrs);
+  }
+  if (t.axes.size() == 3) {  // one 3D-ready atlas: the slices stacked vertically
+    std::vector<float> px(t.values.begin(), t.values.end());
+    ImageAttributes attrs = table_attributes(t);
+    attrs.push_back({"dspbr:atlas", fmt::format("{} slices of {}x{} stacked vertically: row = {}_index * {} + {}_index",
+                                                names.size(), width, height, t.axes[0].name, height, t.axes[1].name)});
+    write_table_image((fs::path(dir) / lut_atlas_name(t)).string(), px, width, height * int(names.size()), 1,
+                      half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT, attrs);
   }
   return max_rounding;
+}
+
+std::string lut_atlas_name(const Table& t) { return t.axes.size() == 3 ? t.name + ".exr" : ""; }
+
+std::vector<std::string> lut_png_names(const Table& t) { return {t.name + ".png"}; }
+
+double write_lut_png(const Table& t, const std::string& dir) {
+  const int width = t.axes.back().size;
+  const int height = int(t.size() / size_t(width));
+  ImageAttributes attrs = table_attributes(t);
+  if (t.axes.size() == 3)
+    attrs.push_back({"dspbr:atlas", fmt::format("{} slices stacked vertically: row = {}_index * {} + {}_index",
+                                                t.axes[0].size, t.axes[0].name, t.axes[1].size, t.axes[1].name)});
+  return write_table_png((fs::path(dir) / lut_png_names(t)[0]).string(), t.values, width, height, attrs);
 }
 
 std::vector<float> read_lut_exr(const std::string& path, int* width, int* height) {
@@ -203,7 +232,10 @@ std::string lut_json_text(const std::vector<Table>& tables, const LutOptions& op
     e["max_error"] = max_err;
     e["min_value"] = min_v;
     e["max_value"] = max_v;
-    e["files"] = lut_exr_names(t);
+    std::vector<std::string> files = lut_exr_names(t);
+    if (!lut_atlas_name(t).empty()) files.push_back(lut_atlas_name(t));
+    for (const std::string& f : lut_png_names(t)) files.push_back(f);
+    e["files"] = files;
     e["values"] = t.values;
     e["errors"] = t.errors;
     jt[t.name] = e;
@@ -265,6 +297,8 @@ std::vector<double> write_luts(const std::vector<Table>& tables, const LutOption
   std::vector<double> rounding(tables.size(), 0.0);
   if (formats.exr)
     for (size_t i = 0; i < tables.size(); ++i) rounding[i] = write_lut_exrs(tables[i], dir, formats.half);
+  if (formats.png)
+    for (const Table& t : tables) write_lut_png(t, dir);
   if (formats.hpp) write_text_atomically((fs::path(dir) / "pbrlut.hpp").string(), lut_header_text(tables, opt));
   if (formats.json) write_text_atomically((fs::path(dir) / "dspbr_luts.json").string(), lut_json_text(tables, opt));
   return rounding;

@@ -1,6 +1,7 @@
 // Files of the LUT toolchain (layout in docs/luts.md):
 //  - EXR through OpenImageIO, one channel "Y", scanline 0 = index 0 of the slowest image axis,
-//    columns = the fastest axis; 3D Base_E is one image per f0 slice (Base_<f0>_E.exr).
+//    columns = the fastest axis; 3D Base_E is one image per f0 slice (Base_<f0>_E.exr) and one
+//    atlas of the slices stacked vertically (Base_E.exr); 16-bit PNGs (NAME.png); dspbr:* attributes.
 //  - pbrlut.hpp: C/C++ header with the published symbol names (declarations always visible,
 //    definitions under PBRLUT_IMPLEMENTATION, values printed with max_digits10 = 9 digits).
 //  - dspbr_luts.json: axes, values (double), per-cell standard errors, integrator settings.
@@ -14,7 +15,7 @@
 namespace dspbr {
 
 struct LutFormats {
-  bool exr = true, hpp = true, json = true;
+  bool exr = true, hpp = true, json = true, png = true;
   bool half = false;  // EXR pixel type: half instead of 32-bit float
 };
 
@@ -22,9 +23,16 @@ struct LutFormats {
 // f0 with two decimals, or more when two slices would otherwise share a name.
 std::vector<std::string> lut_exr_names(const Table& t);
 
-// Writes the EXRs of `t` into dir (atomically, one file at a time); returns the largest
-// |stored - value| caused by the pixel type (float or half rounding).
+// Writes the EXRs of `t` into dir (atomically, one file at a time), for a 3D table also the atlas
+// (lut_atlas_name: the slices stacked vertically); returns the largest |stored - value| caused by
+// the pixel type (float or half rounding).
 double write_lut_exrs(const Table& t, const std::string& dir, bool half);
+std::string lut_atlas_name(const Table& t);  // "" for 1D/2D tables
+
+// 16-bit PNG of `t` (3D: the atlas), value = offset + scale * pixel / 65535 (dspbr:png_decode);
+// returns the 16-bit rounding error.
+std::vector<std::string> lut_png_names(const Table& t);
+double write_lut_png(const Table& t, const std::string& dir);
 
 // Reads one single-channel "Y" EXR: width, height and the pixels row by row (as float).
 std::vector<float> read_lut_exr(const std::string& path, int* width, int* height);

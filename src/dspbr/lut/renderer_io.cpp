@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "dspbr/io/atomic_file.h"
+#include "dspbr/lut/table_image.h"
 
 namespace dspbr {
 
@@ -44,26 +45,6 @@ std::string decode_text(const WarpedTable& t) {
   std::string s = t.encoding == Encoding::LogOneMinus ? "quantity = 1 - exp(stored)" : "quantity = stored";
   if (t.name == "GGX_beta") s = "beta = (1 - cos_theta)^5 + stored; B = beta E_m";
   return s;
-}
-
-// One image with the dspbr attributes; pixels are float, `channels` interleaved.
-void write_image(const std::string& path, const std::vector<float>& px, int width, int height, int channels,
-                 OIIO::TypeDesc type, const std::vector<std::pair<std::string, std::string>>& attrs) {
-  write_atomically(path, [&](const std::string& tmp) {
-    auto out = OIIO::ImageOutput::create(path);  // format from the final name (.exr / .png)
-    if (!out) throw std::runtime_error("cannot create an image writer for '" + path + "': " + OIIO::geterror());
-    OIIO::ImageSpec spec(width, height, channels, type);
-    if (channels == 1) spec.channelnames = {"Y"};
-    spec.attribute("compression", path.size() > 4 && path.substr(path.size() - 4) == ".exr" ? "zip" : "");
-    spec.attribute("DateTime", "");  // no time stamp: same tables, same bytes
-    spec.attribute("Software", "dspbr lut");
-    spec.attribute("oiio:ColorSpace", "Linear");  // data, not colour: no gamma tag
-    for (const auto& [k, v] : attrs) spec.attribute(k, v);
-    if (!out->open(tmp, spec)) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
-    if (!out->write_image(OIIO::TypeDesc::FLOAT, px.data()))
-      throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
-    if (!out->close()) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
-  });
 }
 
 }  // namespace
@@ -204,17 +185,12 @@ std::vector<float> split_sum_pixels(const RendererLuts& luts, int size) {
   return px;
 }
 
-void write_renderer_images(const RendererLuts& luts, const std::string& dir, int split_sum_size) {
+void write_renderer_images(const RendererLuts& luts, const std::string& dir, bool half, int split_sum_size) {
   for (const char* name : RendererLuts::names()) {
     const WarpedTable& t = *luts.table(name);
     const int width = t.axes.back().size, height = t.axes.size() == 2 ? t.axes[0].size : 1;
     std::vector<float> px(t.values.begin(), t.values.end());
-    double lo = 1e300, hi = -1e300;
-    for (double v : t.values) {
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-    std::vector<std::pair<std::string, std::string>> attrs{
+    ImageAttributes attrs{
         {"dspbr:table", name},
         {"dspbr:model", "DSPBR 2025x"},
         {"dspbr:layout", "renderer, version 1"},
@@ -223,28 +199,22 @@ void write_renderer_images(const RendererLuts& luts, const std::string& dir, int
         {"dspbr:interpolation", "catmull-rom, linear extrapolation beyond the ends"},
         {"dspbr:encoding", encoding_name(t.encoding)},
         {"dspbr:decode", decode_text(t)}};
-    write_image((fs::path(dir) / (std::string(name) + ".exr")).string(), px, width, height, 1, OIIO::TypeDesc::FLOAT,
-                attrs);
-    // 16-bit PNG: pixel = (stored - offset) / scale * 65535, rounded.
-    const double offset = lo, scale = hi > lo ? hi - lo : 1.0;
-    std::vector<float> unit(px.size());
-    for (size_t i = 0; i < px.size(); ++i) unit[i] = float((t.values[i] - offset) / scale);
-    attrs.push_back({"dspbr:png_decode", fmt::format("stored = {:.9g} + {:.9g} * pixel / 65535", offset, scale)});
-    write_image((fs::path(dir) / (std::string(name) + ".png")).string(), unit, width, height, 1,
-                OIIO::TypeDesc::UINT16, attrs);
+    write_table_image((fs::path(dir) / (std::string(name) + ".exr")).string(), px, width, height, 1,
+                      half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT, attrs);
+    write_table_png((fs::path(dir) / (std::string(name) + ".png")).string(), t.values, width, height, attrs);
   }
   const std::vector<float> ss = split_sum_pixels(luts, split_sum_size);
-  const std::vector<std::pair<std::string, std::string>> attrs{
+  const ImageAttributes attrs{
       {"dspbr:table", "split_sum"},
       {"dspbr:model", "DSPBR 2025x"},
       {"dspbr:axes", "rows: roughness[" + std::to_string(split_sum_size) + "] r, columns: cos_theta[" +
                          std::to_string(split_sum_size) + "], cell-centred x_i = (i + 0.5) / N"},
       {"dspbr:channels", "R: E_m = A (f0 scale), G: B = Schlick moment (bias), B: main sheen E_b at alpha_b = r^2"},
       {"dspbr:usage", "specular IBL: prefiltered radiance * (f0 (A - B) + f90 B), i.e. scale A - B, bias B"}};
-  write_image((fs::path(dir) / "dspbr_split_sum.exr").string(), ss, split_sum_size, split_sum_size, 3,
-              OIIO::TypeDesc::FLOAT, attrs);
-  write_image((fs::path(dir) / "dspbr_split_sum.png").string(), ss, split_sum_size, split_sum_size, 3,
-              OIIO::TypeDesc::UINT16, attrs);
+  write_table_image((fs::path(dir) / "dspbr_split_sum.exr").string(), ss, split_sum_size, split_sum_size, 3,
+                    half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT, attrs);
+  write_table_image((fs::path(dir) / "dspbr_split_sum.png").string(), ss, split_sum_size, split_sum_size, 3,
+                    OIIO::TypeDesc::UINT16, attrs);
 }
 
 }  // namespace dspbr

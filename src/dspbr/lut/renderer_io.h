@@ -1,7 +1,7 @@
 // Files of the renderer layout (docs/luts.md, "Renderer layout" and "GPU-ready files"):
 //  - dspbr_renderer_luts.json: axes with warps, encodings, stored values (float-exact doubles),
 //    per-sample standard errors, integrator settings;
-//  - per table NAME.exr (32-bit float, channel Y) and NAME.png (16-bit grey, value =
+//  - per table NAME.exr (32-bit float or half, channel Y) and NAME.png (16-bit grey, value =
 //    offset + scale * pixel / 65535), each with its axes, warps, grid, encoding and decoding as
 //    image attributes ("dspbr:*"), so that a file explains itself;
 //  - dspbr_split_sum.exr / .png: the split-sum table for image-based lighting on a plain
@@ -23,8 +23,10 @@ std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, 
 // problem.
 RendererLuts read_renderer_json(const std::string& path);
 
-// Writes NAME.exr and NAME.png per table and the split-sum images into dir (atomically).
-void write_renderer_images(const RendererLuts& luts, const std::string& dir, int split_sum_size = 64);
+// Writes NAME.exr (float, or half) and NAME.png per table and the split-sum images into dir
+// (atomically).
+void write_renderer_images(const RendererLuts& luts, const std::string& dir, bool half = false,
+                           int split_sum_size = 64);
 
 // The split-sum table (rows roughness, columns cos theta, cell-centred, 3 channels interleaved).
 std::vector<float> split_sum_pixels(const RendererLuts& luts, int size);
