@@ -181,3 +181,20 @@ def test_bad_arrays_raise():
     with pytest.raises(ValueError) as e:
         dspbr.Bsdf("/nonexistent/material.json")
     assert str(e.value) == msg
+
+
+def test_gil_released_during_long_calls():
+    import threading
+    import time
+    bsdf = dspbr.Bsdf(MATERIALS[1])
+    rng = np.random.default_rng(5)
+    v, l = directions(rng, 300_000), directions(rng, 300_000)
+    done = threading.Event()
+    worker = threading.Thread(target=lambda: (bsdf.eval(v, l), done.set()))
+    ticks = 0
+    worker.start()
+    while not done.is_set():  # runs only while the worker's C++ loop does not hold the GIL
+        ticks += 1
+        time.sleep(0.001)
+    worker.join()
+    assert ticks >= 5
