@@ -571,7 +571,8 @@ from the surface, normalized here; a (3,) argument broadcasts against an (N, 3) 
       .def("sample", &PyBsdf::sample, py::arg("v"), py::arg("u"),
            "Samples l for v with uniform numbers u in [0, 1)^3 per row: dict of arrays l, weight (= f |cos| / pdf; "
            "for a delta lobe reflectance / probability), pdf, flags (REFLECTION | TRANSMISSION | DELTA | GLOSSY | "
-           "DIFFUSE), valid; failed samples have valid False and zeros.")
+           "DIFFUSE), valid; failed samples have valid False and zeros. For (3,) arguments: l and weight (3,), pdf, "
+           "flags and valid scalars.")
       .def("emission", &PyBsdf::emission, py::arg("v"), "Emitted radiance L_e(v), (N, 3) or (3,).")
       .def("delta_probability", &PyBsdf::delta_probability, py::arg("v"),
            "Total probability of the delta lobes for v, (N,) or a float.")
