@@ -104,23 +104,15 @@ Material build_material(const EvalArgs& a) {
 
 uint32_t parse_components(const EvalArgs& a, const Material& m) {
   if (a.components.empty()) return active_components(m);
-  uint32_t mask = 0;
+  std::vector<std::string> names;
   std::stringstream ss(a.components);
   std::string name;
-  while (std::getline(ss, name, ',')) {
-    bool found = false;
-    for (Component c : all_components())
-      if (name == component_name(c)) {
-        mask |= c;
-        found = true;
-      }
-    if (!found) {
-      std::string all;
-      for (Component c : all_components()) all += std::string(all.empty() ? "" : ", ") + component_name(c);
-      throw UsageError("--components: unknown component '" + name + "' (known: " + all + ")");
-    }
+  while (std::getline(ss, name, ',')) names.push_back(name);
+  try {
+    return parse_component_names(names);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--components: ") + e.what());
   }
-  return mask;
 }
 
 BsdfOptions build_options(const EvalArgs& a) {

@@ -43,25 +43,7 @@ void add_scene_command(CLI::App& app) {
       throw UsageError(e.what());
     }
     if (opt->json) {
-      nlohmann::ordered_json out;
-      out["materials"] = nlohmann::ordered_json::array();
-      for (const auto& m : s.materials) {
-        nlohmann::ordered_json j;
-        j["name"] = m.name;
-        j["components"] = component_names(m.components);
-        j["tables"] = m.tables;
-        j["textured"] = m.textured;
-        j["notes"] = m.notes;
-        if (opt->parameters) {
-          nlohmann::ordered_json p = nlohmann::ordered_json::object();
-          for (const auto& id : material_parameter_ids()) p[id] = get_material_parameter(m.material, id);
-          j["parameters"] = p;
-        }
-        out["materials"].push_back(j);
-      }
-      out["tables"] = s.tables;
-      out["warnings"] = s.warnings;
-      std::cout << out.dump(2) << "\n";
+      std::cout << scene_analysis_json(s, opt->parameters).dump(2) << "\n";
       return;
     }
     std::printf("%s: %zu material(s)\n", s.path.c_str(), s.materials.size());

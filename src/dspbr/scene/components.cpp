@@ -41,6 +41,21 @@ std::vector<std::string> component_names(uint32_t mask) {
   return names;
 }
 
+uint32_t parse_component_names(const std::vector<std::string>& names) {
+  uint32_t mask = 0;
+  for (const std::string& name : names) {
+    const auto& all = all_components();
+    const auto it = std::find_if(all.begin(), all.end(), [&](Component c) { return name == component_name(c); });
+    if (it == all.end()) {
+      std::string known;
+      for (Component c : all) known += std::string(known.empty() ? "" : ", ") + component_name(c);
+      throw std::invalid_argument("unknown component '" + name + "' (known: " + known + ")");
+    }
+    mask |= *it;
+  }
+  return mask;
+}
+
 uint32_t active_components(const Material& m) {
   uint32_t mask = 0;
   const double dielectric = 1.0 - m.metallic;

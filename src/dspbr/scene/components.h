@@ -32,6 +32,9 @@ enum Component : uint32_t {
 const char* component_name(Component c);
 const std::vector<Component>& all_components();
 std::vector<std::string> component_names(uint32_t mask);
+// The mask of a list of component names; throws std::invalid_argument "unknown component 'x'
+// (known: metallic, ...)" for a name that is none.
+uint32_t parse_component_names(const std::vector<std::string>& names);
 
 // Components whose weight is non-zero for this (untextured) material.
 uint32_t active_components(const Material& m);

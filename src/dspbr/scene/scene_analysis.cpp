@@ -6,6 +6,7 @@
 #include "dspbr/gltf/gltf_file.h"
 #include "dspbr/gltf/gltf_material.h"
 #include "dspbr/io/read_file.h"
+#include "dspbr/material_params.h"
 #include "dspbr/params/material_instance.h"
 #include "dspbr/params/param_defs.h"
 #include "dspbr/scene/components.h"
@@ -88,5 +89,27 @@ SceneAnalysis analyze_scene(const std::string& path) {
 }
 
 std::vector<std::string> tables_for_scene(const std::string& path) { return analyze_scene(path).tables; }
+
+nlohmann::ordered_json scene_analysis_json(const SceneAnalysis& s, bool parameters) {
+  nlohmann::ordered_json out;
+  out["materials"] = nlohmann::ordered_json::array();
+  for (const auto& m : s.materials) {
+    nlohmann::ordered_json j;
+    j["name"] = m.name;
+    j["components"] = component_names(m.components);
+    j["tables"] = m.tables;
+    j["textured"] = m.textured;
+    j["notes"] = m.notes;
+    if (parameters) {
+      nlohmann::ordered_json p = nlohmann::ordered_json::object();
+      for (const auto& id : material_parameter_ids()) p[id] = get_material_parameter(m.material, id);
+      j["parameters"] = p;
+    }
+    out["materials"].push_back(j);
+  }
+  out["tables"] = s.tables;
+  out["warnings"] = s.warnings;
+  return out;
+}
 
 }  // namespace dspbr

@@ -3,6 +3,7 @@
 // material instance file ({"material": ..., "values": {...}}, see params/material_instance.h).
 #pragma once
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ struct SceneAnalysis {
 // bad input (unreadable, malformed JSON, truncated .glb, missing buffer, wrong types, invalid
 // instance).
 SceneAnalysis analyze_scene(const std::string& path);
+
+// The analysis as JSON, as `dspbr scene analyze --json` prints it: {"materials": [{"name",
+// "components", "tables", "textured", "notes"[, "parameters": {id: value}]}], "tables", "warnings"}.
+nlohmann::ordered_json scene_analysis_json(const SceneAnalysis& s, bool parameters = false);
 
 // Names of the LUT tables (GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E) that the
 // materials of the scene at `path` (.gltf/.glb or a material instance .json) need, in the

@@ -1,0 +1,610 @@
+// The Python extension dspbr._dspbr (pybind11): the reference BSDF on numpy arrays of directions,
+// the table generator and reader, the scene analysis. Conventions follow the CLI (cmd_eval.cpp,
+// cmd_lut.cpp, cmd_scene.cpp): directions in the local shading frame (normal +z), normalized here;
+// the same validation and the same one-line messages, raised as ValueError. Loops over directions
+// run in C++ (TBB) with the GIL released.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "dspbr/bsdf/material_bsdf.h"
+#include "dspbr/lut/generate.h"
+#include "dspbr/lut/lut_io.h"
+#include "dspbr/lut/lut_set.h"
+#include "dspbr/material.h"
+#include "dspbr/material_params.h"
+#include "dspbr/params/material_instance.h"
+#include "dspbr/params/param_defs.h"
+#include "dspbr/scene/components.h"
+#include "dspbr/scene/scene_analysis.h"
+#include "dspbr/version.h"
+
+namespace py = pybind11;
+using Json = nlohmann::json;
+
+namespace dspbr::python {
+
+namespace {
+
+constexpr int kMaxThreads = 1024;  // as the CLI's --threads
+
+[[noreturn]] void fail(const std::string& message) { throw py::value_error(message); }
+
+// Python value -> JSON (numbers, bools, strings, sequences, numpy arrays, dicts; +inf as
+// {"infinity": true}, the parameter files' spelling).
+Json to_json(const py::handle& obj, const std::string& what) {
+  if (obj.is_none()) return nullptr;
+  if (py::isinstance<py::bool_>(obj)) return obj.cast<bool>();
+  if (py::isinstance<py::int_>(obj)) return obj.cast<long long>();
+  if (py::isinstance<py::float_>(obj)) {
+    const double x = obj.cast<double>();
+    if (std::isinf(x) && x > 0) return Json{{"infinity", true}};
+    return x;
+  }
+  if (py::isinstance<py::str>(obj)) return obj.cast<std::string>();
+  if (py::hasattr(obj, "tolist") && !py::isinstance<py::list>(obj)) return to_json(obj.attr("tolist")(), what);
+  if (py::isinstance<py::dict>(obj)) {
+    Json out = Json::object();
+    for (const auto& [k, v] : obj.cast<py::dict>()) {
+      if (!py::isinstance<py::str>(k)) fail(what + ": keys must be strings, got " + py::repr(k).cast<std::string>());
+      out[k.cast<std::string>()] = to_json(v, what);
+    }
+    return out;
+  }
+  if (py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj)) {
+    Json out = Json::array();
+    for (const auto& v : obj) out.push_back(to_json(v, what));
+    return out;
+  }
+  fail(what + ": unsupported value " + py::repr(obj).cast<std::string>());
+}
+
+// JSON -> Python, through the json module (the same objects `json.loads` gives for the CLI output).
+py::object to_python(const nlohmann::ordered_json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
+
+bool is_path(const py::handle& obj) {
+  return py::isinstance<py::str>(obj) || py::isinstance(obj, py::module_::import("os").attr("PathLike"));
+}
+std::string path_string(const py::handle& obj) {
+  return py::str(py::module_::import("os").attr("fspath")(obj)).cast<std::string>();
+}
+
+// The material of a Python argument: None (generic defaults), a material instance file path, an
+// instance document {"material": TYPE, "values": {...}}, or a dict {id: value} applied in order to
+// the generic defaults. Validated like `dspbr eval` (validate_material).
+Material material_of(const py::object& obj) {
+  Material m;
+  try {
+    if (obj.is_none()) {
+    } else if (is_path(obj)) {
+      const std::string path = path_string(obj);
+      py::gil_scoped_release release;
+      m = load_material_instance(path);
+    } else if (py::isinstance<py::dict>(obj)) {
+      const py::dict d = obj.cast<py::dict>();
+      if (d.contains("material") && d.contains("values")) {
+        m = material_from_instance(default_param_defs(), to_json(obj, "material"));
+      } else {
+        for (const auto& [k, v] : d) {
+          if (!py::isinstance<py::str>(k)) fail("material: keys must be parameter ids, got " + py::repr(k).cast<std::string>());
+          const std::string id = k.cast<std::string>();
+          set_material_parameter(m, id, to_json(v, "parameter '" + id + "'"));
+        }
+      }
+    } else {
+      fail("material expects a dict of parameters {id: value}, an instance {\"material\": ..., \"values\": ...} or "
+           "a material instance file path, got " + py::repr(obj).cast<std::string>());
+    }
+    validate_material(m);
+  } catch (const py::error_already_set&) {
+    throw;
+  } catch (const py::value_error&) {
+    throw;
+  } catch (const std::exception& e) {
+    fail(e.what());
+  }
+  return m;
+}
+
+Vec3 vec3_of(const py::object& obj, const std::string& what) {
+  std::vector<double> x;
+  try {
+    x = obj.cast<std::vector<double>>();
+  } catch (const py::cast_error&) {
+    fail(what + " expects 3 numbers, got " + py::repr(obj).cast<std::string>());
+  }
+  if (x.size() != 3) fail(what + " expects 3 numbers, got " + py::repr(obj).cast<std::string>());
+  for (double c : x)
+    if (!std::isfinite(c)) fail(what + " expects 3 finite numbers, got " + py::repr(obj).cast<std::string>());
+  return {x[0], x[1], x[2]};
+}
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// (3,) or (N, 3) array of doubles.
+struct Triples {
+  Array a;
+  size_t n = 1;
+  bool single = true;
+  Vec3 at(size_t i) const {
+    const double* p = a.data() + 3 * (single ? 0 : i);
+    return {p[0], p[1], p[2]};
+  }
+};
+
+Triples triples_of(const py::object& obj, const char* name) {
+  Triples t;
+  try {
+    t.a = Array::ensure(obj);
+  } catch (const py::error_already_set&) {
+  }
+  if (!t.a) fail(std::string(name) + " must be an array of numbers of shape (3,) or (N, 3)");
+  if (t.a.ndim() == 1 && t.a.shape(0) == 3) return t;
+  if (t.a.ndim() == 2 && t.a.shape(1) == 3) {
+    t.single = false;
+    t.n = size_t(t.a.shape(0));
+    return t;
+  }
+  std::string shape;
+  for (py::ssize_t i = 0; i < t.a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(t.a.shape(i));
+  if (t.a.ndim() == 1) shape += ",";
+  fail(std::string(name) + " must have shape (3,) or (N, 3), got (" + shape + ")");
+}
+
+// Number of rows of a broadcast of (3,) / (N, 3) arguments.
+size_t common_rows(const Triples& a, const char* an, const Triples& b, const char* bn) {
+  if (!a.single && !b.single && a.n != b.n)
+    fail(std::string(an) + " and " + bn + " have different lengths (" + std::to_string(a.n) + " and " +
+         std::to_string(b.n) + ")");
+  return a.single ? b.n : a.n;
+}
+
+// Normalized directions of a (3,) / (N, 3) argument broadcast to n rows; a zero or non-finite row
+// is an error naming it (the CLI: "--view must be a non-zero vector").
+std::vector<Vec3> directions(const Triples& t, const char* name, size_t n) {
+  const size_t rows = t.single ? 1 : n;
+  std::vector<Vec3> out(rows);
+  size_t bad = rows;
+  {
+    py::gil_scoped_release release;
+    for (size_t i = 0; i < rows && bad == rows; ++i) {
+      const Vec3 v = t.at(i);
+      const double len = length(v);
+      if (!(len > 0) || !std::isfinite(len)) bad = i;
+      else out[i] = v * (1.0 / len);
+    }
+  }
+  if (bad != rows) {
+    const Vec3 v = t.at(bad);
+    const std::string where = t.single ? std::string(name) : std::string(name) + "[" + std::to_string(bad) + "]";
+    fail(where + " must be a finite non-zero vector, got (" + py::repr(py::float_(v.x)).cast<std::string>() + ", " +
+         py::repr(py::float_(v.y)).cast<std::string>() + ", " + py::repr(py::float_(v.z)).cast<std::string>() + ")");
+  }
+  return out;
+}
+
+const Vec3& row(const std::vector<Vec3>& d, size_t i) { return d.size() == 1 ? d[0] : d[i]; }
+
+// Runs body(i) for i in [0, n) on the TBB pool, GIL released.
+void parallel_rows(size_t n, const std::function<void(size_t)>& body) {
+  py::gil_scoped_release release;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 256), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i) body(i);
+  });
+}
+
+Array rows3(size_t n, bool single) {
+  return single ? Array(std::vector<py::ssize_t>{3}) : Array(std::vector<py::ssize_t>{py::ssize_t(n), 3});
+}
+Array rows1(size_t n) { return Array(std::vector<py::ssize_t>{py::ssize_t(n)}); }
+
+py::object scalar_or_rows(Array a, bool single) {
+  if (single) return py::float_(a.at(0));
+  return std::move(a);
+}
+
+class PyBsdf {
+ public:
+  PyBsdf(const py::object& material, const py::object& components, const std::string& sheen,
+         const std::string& tables, const py::object& position, const py::object& object_normal, double wavelength,
+         double area) {
+    material_ = material_of(material);
+    BsdfOptions o;
+    if (sheen == "main") o.sheen_model = SheenModel::Main;
+    else if (sheen == "ash") o.sheen_model = SheenModel::Ash;
+    else fail("sheen expects 'main' or 'ash', got '" + sheen + "'");
+    o.position = vec3_of(position, "position");
+    const Vec3 n = vec3_of(object_normal, "object_normal");
+    if (!(length(n) > 0)) fail("object_normal must be a non-zero vector");
+    o.object_normal = normalize(n);
+    if (!std::isfinite(wavelength) || wavelength < 0) fail("wavelength expects a wavelength in nm (0: no dispersion)");
+    o.wavelength_nm = wavelength;
+    if (!std::isfinite(area) || !(area > 0)) fail("area expects a positive area in m^2");
+    o.object_area_m2 = area;
+    uint32_t mask = active_components(material_);
+    if (!components.is_none()) {
+      std::vector<std::string> names;
+      if (py::isinstance<py::str>(components)) {
+        names.push_back(components.cast<std::string>());
+      } else {
+        try {
+          names = components.cast<std::vector<std::string>>();
+        } catch (const py::cast_error&) {
+          fail("components expects a list of component names, got " + py::repr(components).cast<std::string>());
+        }
+      }
+      try {
+        mask = parse_component_names(names);
+      } catch (const std::invalid_argument& e) {
+        fail(std::string("components: ") + e.what());
+      }
+    }
+    const LutSet* luts = nullptr;
+    try {
+      luts = &LutSet::of_layout(parse_lut_layout(tables));
+    } catch (const std::invalid_argument& e) {
+      fail(std::string("tables: ") + e.what());
+    }
+    tables_ = tables;
+    py::gil_scoped_release release;
+    bsdf_ = std::make_unique<MaterialBsdf>(material_, *luts, o, mask);
+  }
+
+  py::object eval(const py::object& v_in, const py::object& l_in) const {
+    const Triples tv = triples_of(v_in, "v"), tl = triples_of(l_in, "l");
+    const size_t n = common_rows(tv, "v", tl, "l");
+    const auto v = directions(tv, "v", n), l = directions(tl, "l", n);
+    Array out = rows3(n, tv.single && tl.single);
+    double* f = out.mutable_data();
+    parallel_rows(n, [&](size_t i) {
+      const Rgb c = bsdf_->eval(row(v, i), row(l, i));
+      f[3 * i] = c.r, f[3 * i + 1] = c.g, f[3 * i + 2] = c.b;
+    });
+    return std::move(out);
+  }
+
+  py::object pdf(const py::object& v_in, const py::object& l_in) const {
+    const Triples tv = triples_of(v_in, "v"), tl = triples_of(l_in, "l");
+    const size_t n = common_rows(tv, "v", tl, "l");
+    const auto v = directions(tv, "v", n), l = directions(tl, "l", n);
+    Array out = rows1(n);
+    double* p = out.mutable_data();
+    parallel_rows(n, [&](size_t i) { p[i] = bsdf_->pdf(row(v, i), row(l, i)); });
+    return scalar_or_rows(out, tv.single && tl.single);
+  }
+
+  py::dict sample(const py::object& v_in, const py::object& u_in) const {
+    const Triples tv = triples_of(v_in, "v"), tu = triples_of(u_in, "u");
+    const size_t n = common_rows(tv, "v", tu, "u");
+    const auto v = directions(tv, "v", n);
+    for (size_t i = 0; i < (tu.single ? 1 : n); ++i) {
+      const Vec3 u = tu.at(i);
+      for (double x : {u.x, u.y, u.z})
+        if (!(x >= 0 && x < 1))
+          fail(std::string(tu.single ? "u" : "u[" + std::to_string(i) + "]") + " expects three numbers in [0, 1), got " +
+               py::repr(py::float_(x)).cast<std::string>());
+    }
+    const bool single = tv.single && tu.single;
+    Array l = rows3(n, single), w = rows3(n, single), pdf = rows1(n);
+    py::array_t<uint32_t> flags(std::vector<py::ssize_t>{py::ssize_t(n)});
+    py::array_t<bool> valid(std::vector<py::ssize_t>{py::ssize_t(n)});
+    double *pl = l.mutable_data(), *pw = w.mutable_data(), *pp = pdf.mutable_data();
+    uint32_t* pf = flags.mutable_data();
+    bool* pv = valid.mutable_data();
+    parallel_rows(n, [&](size_t i) {
+      const BsdfSample s = bsdf_->sample(row(v, i), tu.at(i));
+      const Vec3 sl = s.valid ? s.l : Vec3{0, 0, 0};
+      const Rgb sw = s.valid ? s.weight : Rgb{0, 0, 0};
+      pl[3 * i] = sl.x, pl[3 * i + 1] = sl.y, pl[3 * i + 2] = sl.z;
+      pw[3 * i] = sw.r, pw[3 * i + 1] = sw.g, pw[3 * i + 2] = sw.b;
+      pp[i] = s.valid ? s.pdf : 0;
+      pf[i] = s.valid ? s.flags : 0;
+      pv[i] = s.valid;
+    });
+    py::dict out;
+    out["l"] = l;
+    out["weight"] = w;
+    out["pdf"] = scalar_or_rows(pdf, single);
+    if (single) {
+      out["flags"] = py::int_(pf[0]);
+      out["valid"] = py::bool_(pv[0]);
+    } else {
+      out["flags"] = flags;
+      out["valid"] = valid;
+    }
+    return out;
+  }
+
+  py::object emission(const py::object& v_in) const {
+    const Triples tv = triples_of(v_in, "v");
+    const auto v = directions(tv, "v", tv.n);
+    Array out = rows3(tv.n, tv.single);
+    double* e = out.mutable_data();
+    parallel_rows(tv.n, [&](size_t i) {
+      const Rgb c = bsdf_->emission(row(v, i));
+      e[3 * i] = c.r, e[3 * i + 1] = c.g, e[3 * i + 2] = c.b;
+    });
+    return std::move(out);
+  }
+
+  py::object delta_probability(const py::object& v_in) const {
+    const Triples tv = triples_of(v_in, "v");
+    const auto v = directions(tv, "v", tv.n);
+    Array out = rows1(tv.n);
+    double* p = out.mutable_data();
+    parallel_rows(tv.n, [&](size_t i) { p[i] = bsdf_->delta_probability(row(v, i)); });
+    return scalar_or_rows(out, tv.single);
+  }
+
+  std::vector<std::string> components() const { return component_names(bsdf_->mask()); }
+  double ior() const { return bsdf_->ior(); }
+  uint32_t flags() const { return bsdf_->flags(); }
+  py::object material() const {
+    nlohmann::ordered_json j = nlohmann::ordered_json::object();
+    for (const auto& id : material_parameter_ids()) j[id] = get_material_parameter(material_, id);
+    return to_python(j);
+  }
+  std::string repr() const {
+    std::string c;
+    for (const auto& s : components()) c += (c.empty() ? "" : ", ") + s;
+    return "dspbr.Bsdf(components=[" + c + "], tables='" + tables_ + "')";
+  }
+
+ private:
+  Material material_;
+  std::string tables_;
+  std::unique_ptr<MaterialBsdf> bsdf_;
+};
+
+// ---- dspbr.lut -------------------------------------------------------------------------------
+
+std::vector<int> dims_of(const py::handle& obj, const std::string& name) {
+  const std::string what = "size of " + name;
+  if (py::isinstance<py::bool_>(obj)) fail(what + " expects an int or a tuple of ints, got " + py::repr(obj).cast<std::string>());
+  if (py::isinstance<py::int_>(obj)) return {obj.cast<int>()};
+  std::vector<int> dims;
+  try {
+    for (const auto& x : obj) {
+      if (!py::isinstance<py::int_>(x) || py::isinstance<py::bool_>(x)) throw py::cast_error();
+      dims.push_back(x.cast<int>());
+    }
+  } catch (const std::exception&) {
+    fail(what + " expects an int or a tuple of ints, got " + py::repr(obj).cast<std::string>());
+  }
+  return dims;
+}
+
+LutOptions lut_options(const py::object& tables, const py::object& size, const std::string& integrator,
+                       long long samples, double target_error, int randomizations, const py::int_& seed, int threads,
+                       const std::string& grid) {
+  LutOptions opt;
+  opt.progress = false;
+  if (!tables.is_none()) {
+    std::vector<std::string> names;
+    if (py::isinstance<py::str>(tables)) names.push_back(tables.cast<std::string>());
+    else {
+      try {
+        names = tables.cast<std::vector<std::string>>();
+      } catch (const py::cast_error&) {
+        fail("tables expects a list of table names, got " + py::repr(tables).cast<std::string>());
+      }
+    }
+    opt.tables.clear();
+    for (const auto& t : names) {
+      if (!is_lut_table_name(t))
+        fail("tables: unknown table '" + t + "' (choose from GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E)");
+      if (std::find(opt.tables.begin(), opt.tables.end(), t) == opt.tables.end()) opt.tables.push_back(t);
+    }
+  }
+  if (!size.is_none()) {
+    if (!py::isinstance<py::dict>(size)) fail("size expects a dict {table name: size}, e.g. {\"GGX_E\": (64, 64)}");
+    for (const auto& [k, v] : size.cast<py::dict>()) {
+      const std::string name = py::str(k).cast<std::string>();
+      if (!is_lut_table_name(name)) fail("size: unknown table '" + name + "'");
+      opt.sizes[name] = dims_of(v, name);
+    }
+  }
+  if (grid == "cell") opt.grid = GridKind::CellCentred;
+  else if (grid == "endpoint") opt.grid = GridKind::Endpoint;
+  else fail("grid: '" + grid + "' is not cell or endpoint");
+  if (integrator == "qmc") opt.integrator = Integrator::Qmc;
+  else if (integrator == "mc") opt.integrator = Integrator::Mc;
+  else fail("integrator: '" + integrator + "' is not qmc or mc");
+  if (samples < 0 || samples > std::numeric_limits<int>::max())
+    fail("samples must be a non-negative integer, got " + std::to_string(samples));
+  opt.samples = int(samples);
+  opt.target_error = target_error;
+  opt.randomizations = randomizations;
+  if (py::int_(0) > seed || seed >= py::int_(py::module_::import("builtins").attr("pow")(2, 64)))
+    fail("seed must be a non-negative integer below 2^64, got " + py::repr(seed).cast<std::string>());
+  opt.seed = seed.cast<uint64_t>();
+  if (threads < 0 || threads > kMaxThreads)
+    fail("threads must be a thread count from 0 (all cores) to " + std::to_string(kMaxThreads) + ", got " +
+         std::to_string(threads));
+  opt.threads = threads;
+  try {
+    validate_lut_options(opt);
+  } catch (const std::invalid_argument& e) {
+    fail(e.what());
+  }
+  return opt;
+}
+
+template <class T>
+py::array_t<double> array_of(const std::vector<double>& values, const std::vector<T>& axes) {
+  std::vector<py::ssize_t> shape;
+  for (const auto& a : axes) shape.push_back(a.size);
+  py::array_t<double> out(shape);
+  if (size_t(out.size()) != values.size()) throw std::runtime_error("table size does not match its axes");
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+py::dict lut_generate(const py::object& tables, const py::object& size, const std::string& integrator,
+                      long long samples, double target_error, int randomizations, const py::int_& seed, int threads,
+                      const std::string& grid, bool errors) {
+  const LutOptions opt =
+      lut_options(tables, size, integrator, samples, target_error, randomizations, seed, threads, grid);
+  std::vector<Table> out;
+  {
+    py::gil_scoped_release release;
+    out = generate_luts(opt);
+  }
+  py::dict d;
+  for (const Table& t : out) {
+    if (errors) {
+      py::dict e;
+      e["values"] = array_of(t.values, t.axes);
+      e["errors"] = array_of(t.errors, t.axes);
+      d[py::str(t.name)] = e;
+    } else {
+      d[py::str(t.name)] = array_of(t.values, t.axes);
+    }
+  }
+  return d;
+}
+
+py::list lut_axes_of(const std::string& name, const py::object& size, const std::string& grid) {
+  py::dict sizes;
+  if (!size.is_none()) sizes[py::str(name)] = size;
+  const LutOptions opt =
+      lut_options(py::str(name), sizes, "qmc", 0, kLutDefaultTargetError, 8, py::int_(1), 0, grid);
+  py::list out;
+  for (const Axis& a : lut_axes(name, opt)) {
+    py::array_t<double> x(std::vector<py::ssize_t>{a.size});
+    for (int i = 0; i < a.size; ++i) x.mutable_at(i) = a.coord(i);
+    out.append(py::make_tuple(a.name, x));
+  }
+  return out;
+}
+
+py::dict lut_load(const py::object& path_obj) {
+  if (!is_path(path_obj)) fail("path expects a file path, got " + py::repr(path_obj).cast<std::string>());
+  const std::string path = path_string(path_obj);
+  LutSet set;
+  try {
+    py::gil_scoped_release release;
+    set = LutSet::load(path);
+  } catch (const std::exception& e) {
+    fail(e.what());
+  }
+  py::dict d;
+  if (set.layout == LutLayout::Renderer) {
+    for (const char* name : RendererLuts::names()) {
+      const WarpedTable& t = *set.renderer.table(name);
+      d[py::str(name)] = array_of(t.values, t.axes);
+    }
+  } else {
+    for (const Table* t : {&set.ggx_e, &set.ggx_e_avg, &set.base_e, &set.base_e_avg, &set.sheen_e, &set.sheen_ash_e})
+      if (!t->values.empty()) d[py::str(t->name)] = array_of(t->values, t->axes);
+  }
+  return d;
+}
+
+// ---- dspbr.scene -----------------------------------------------------------------------------
+
+py::object scene_analyze(const py::object& path_obj, bool parameters) {
+  if (!is_path(path_obj)) fail("path expects a file path, got " + py::repr(path_obj).cast<std::string>());
+  const std::string path = path_string(path_obj);
+  nlohmann::ordered_json j;
+  try {
+    py::gil_scoped_release release;
+    j = scene_analysis_json(analyze_scene(path), parameters);
+  } catch (const std::exception& e) {
+    fail(e.what());
+  }
+  return to_python(j);
+}
+
+}  // namespace
+
+}  // namespace dspbr::python
+
+PYBIND11_MODULE(_dspbr, m) {
+  using namespace dspbr;
+  using namespace dspbr::python;
+  namespace py = pybind11;
+  m.doc() = "DSPBR 2025x reference toolchain: reference BSDF, energy-compensation tables, scene analysis";
+  m.attr("__version__") = version_string();
+  m.attr("REFLECTION") = uint32_t(kLobeReflection);
+  m.attr("TRANSMISSION") = uint32_t(kLobeTransmission);
+  m.attr("DELTA") = uint32_t(kLobeDelta);
+  m.attr("GLOSSY") = uint32_t(kLobeGlossy);
+  m.attr("DIFFUSE") = uint32_t(kLobeDiffuse);
+  m.def("parameter_ids", &material_parameter_ids, "The 38 parameter ids of the generic material (uiOrder).");
+  m.def("component_names", [] { return component_names(kAllComponents); },
+        "The component names a Bsdf(components=[...]) accepts.");
+
+  py::class_<PyBsdf>(m, "Bsdf", R"doc(
+The DSPBR 2025x reference BSDF of one material (src/dspbr/bsdf/material_bsdf.h, docs/bsdf.md).
+
+material: None (generic defaults), a dict {parameter id: value} of params-2025x.json applied to the
+generic defaults (colours and vectors as 3 numbers, float('inf') for an infinite
+attenuationDistance), an instance dict {"material": TYPE, "values": {...}}, or the path of a
+material instance file. Checked as `dspbr eval` checks it; a bad value raises ValueError.
+components: list of component names (default: the material's active ones); sheen: "main" | "ash";
+tables: "renderer" (default) | "published"; position, object_normal, wavelength, area: as the CLI's
+--position, --object-normal, --wavelength (nm), --area (m^2).
+
+Directions are (3,) or (N, 3) arrays in the local shading frame (normal +z), both pointing away
+from the surface, normalized here; a (3,) argument broadcasts against an (N, 3) one.
+)doc")
+      .def(py::init<const py::object&, const py::object&, const std::string&, const std::string&, const py::object&,
+                    const py::object&, double, double>(),
+           py::arg("material") = py::none(), py::kw_only(), py::arg("components") = py::none(),
+           py::arg("sheen") = "main", py::arg("tables") = "renderer", py::arg("position") = py::make_tuple(0, 0, 0),
+           py::arg("object_normal") = py::make_tuple(0, 0, 1), py::arg("wavelength") = 0.0, py::arg("area") = 1.0)
+      .def("eval", &PyBsdf::eval, py::arg("v"), py::arg("l"),
+           "f(v, l) without the cosine: (N, 3) RGB for (N, 3) directions, (3,) for (3,).")
+      .def("pdf", &PyBsdf::pdf, py::arg("v"), py::arg("l"),
+           "Solid-angle density with which sample(v, .) gives l: (N,) (a float for (3,) arguments).")
+      .def("sample", &PyBsdf::sample, py::arg("v"), py::arg("u"),
+           "Samples l for v with uniform numbers u in [0, 1)^3 per row: dict of arrays l, weight (= f |cos| / pdf; "
+           "for a delta lobe reflectance / probability), pdf, flags (REFLECTION | TRANSMISSION | DELTA | GLOSSY | "
+           "DIFFUSE), valid; failed samples have valid False and zeros. For (3,) arguments: l and weight (3,), pdf, "
+           "flags and valid scalars.")
+      .def("emission", &PyBsdf::emission, py::arg("v"), "Emitted radiance L_e(v), (N, 3) or (3,).")
+      .def("delta_probability", &PyBsdf::delta_probability, py::arg("v"),
+           "Total probability of the delta lobes for v, (N,) or a float.")
+      .def_property_readonly("components", &PyBsdf::components, "The components included (names).")
+      .def_property_readonly("ior", &PyBsdf::ior, "The IOR used (ior, or eta(wavelength) with dispersion).")
+      .def_property_readonly("flags", &PyBsdf::flags, "Union of the lobe flags the BSDF can produce.")
+      .def_property_readonly("material", &PyBsdf::material,
+                             "Every parameter of the material as validated, {id: value} (JSON spelling).")
+      .def("__repr__", &PyBsdf::repr);
+
+  auto lut = m.def_submodule("lut", "Energy-compensation tables (docs/luts.md)");
+  lut.def("names", &lut_table_names, "Table names in canonical order.");
+  lut.def("generate", &lut_generate, py::arg("tables") = py::none(), py::arg("size") = py::none(), py::kw_only(),
+          py::arg("integrator") = "qmc", py::arg("samples") = 0, py::arg("target_error") = kLutDefaultTargetError,
+          py::arg("randomizations") = 8, py::arg("seed") = py::int_(1), py::arg("threads") = 0,
+          py::arg("grid") = "cell", py::arg("errors") = false,
+          R"doc(
+Generates tables of the published layout as `dspbr lut` does with the same settings (bit-identical
+values for the same seed, whatever the thread count). tables: list of names (default: all six);
+size: {name: int or tuple of ints, slowest axis first}; integrator "qmc" | "mc"; samples (0: the
+table's default maximum); target_error (0: fixed budget); randomizations; seed; threads (0: all
+cores); grid "cell" | "endpoint". Returns {name: array of the table's shape}, or with errors=True
+{name: {"values": array, "errors": per-cell standard errors}}.
+)doc");
+  lut.def("axes", &lut_axes_of, py::arg("name"), py::arg("size") = py::none(), py::arg("grid") = "cell",
+          "The axes of a table, slowest first: list of (axis name, sample coordinates).");
+  lut.def("load", &lut_load, py::arg("path"),
+          "Reads dspbr_luts.json (published layout: {name: values}) or dspbr_renderer_luts.json (renderer layout: "
+          "{name: stored values}, encoded as the file says).");
+
+  auto scene = m.def_submodule("scene", "glTF scenes and material instances (docs/gltf_mapping.md)");
+  scene.def("analyze", &scene_analyze, py::arg("path"), py::kw_only(), py::arg("parameters") = false,
+            "Per material the active components and the tables needed: the dict `dspbr scene analyze --json` prints "
+            "(with parameters=True also each material's DSPBR parameters).");
+}
