@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "../fits/dspbr_fits.hpp"
+#include "../luts/dspbr_lookup.h"
 #include "dspbr/lut/lut_set.h"
 #include "dspbr/rng.h"
 
@@ -78,7 +79,7 @@ BENCHMARK(BM_FitSheenLambda);
 
 void BM_FitLutBilinearFloat(benchmark::State& state) {
   const Inputs& in = inputs();
-  const dspbr::Table& t = dspbr::LutSet::builtin().ggx_e;
+  const dspbr::Table& t = dspbr::LutSet::published().ggx_e;
   BilinearTable b;
   b.n = t.axes[1].size;
   for (double x : t.values) b.v.push_back(float(x));
@@ -88,13 +89,24 @@ void BM_FitLutBilinearFloat(benchmark::State& state) {
 }
 BENCHMARK(BM_FitLutBilinearFloat);
 
+// LutSet lookups (double) of the published and the renderer layout, and the generated C lookup
+// (float, luts/dspbr_lookup.h) that a renderer compiles.
 void BM_FitLutTableLookup(benchmark::State& state) {
   const Inputs& in = inputs();
-  const dspbr::LutSet& lut = dspbr::LutSet::builtin();
+  const dspbr::LutSet& lut = state.range(0) ? dspbr::LutSet::builtin() : dspbr::LutSet::published();
   for (auto _ : state)
     for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(lut.E_m(in.mu[i], in.r[i]));
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+  state.SetLabel(state.range(0) ? "renderer" : "published");
 }
-BENCHMARK(BM_FitLutTableLookup);
+BENCHMARK(BM_FitLutTableLookup)->Arg(0)->Arg(1);
+
+void BM_LookupGeneratedC(benchmark::State& state) {
+  const Inputs& in = inputs();
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(dspbr_ggx_E(in.mu[i], in.r[i]));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_LookupGeneratedC);
 
 }  // namespace

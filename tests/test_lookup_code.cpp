@@ -96,36 +96,22 @@ TEST(LookupCode, CompensationTermsFollowTheSpecFormulas) {
 
 TEST(LookupCode, GlslAndHlslComputeWhatTheCHeaderComputes) {
   for (const Args& a : random_args(2000)) {
-    const float c[] = {dspbr_ggx_E(a.mu, a.r),
-                       dspbr_ggx_E_avg(a.r),
-                       dspbr_base_E(a.mu, a.r, a.f0),
-                       dspbr_base_E_avg(a.r, a.f0),
-                       dspbr_sheen_E(a.mu, a.ab),
-                       dspbr_sheen_ash_E(a.mu, a.ab),
-                       dspbr_ms_lobe(a.mu, a.mu2, a.r),
-                       dspbr_diffuse_bc(a.mu, a.mu2, a.r, a.f0),
-                       dspbr_sheen_layer_scale(a.mu, a.mu2, a.ab, a.rho),
-                       dspbr_sheen_ash_layer_scale(a.mu, a.mu2, a.ab, a.rho)};
-    const float g[] = {glsl::dspbr_ggx_E(a.mu, a.r),
-                       glsl::dspbr_ggx_E_avg(a.r),
-                       glsl::dspbr_base_E(a.mu, a.r, a.f0),
-                       glsl::dspbr_base_E_avg(a.r, a.f0),
-                       glsl::dspbr_sheen_E(a.mu, a.ab),
-                       glsl::dspbr_sheen_ash_E(a.mu, a.ab),
-                       glsl::dspbr_ms_lobe(a.mu, a.mu2, a.r),
-                       glsl::dspbr_diffuse_bc(a.mu, a.mu2, a.r, a.f0),
-                       glsl::dspbr_sheen_layer_scale(a.mu, a.mu2, a.ab, a.rho),
-                       glsl::dspbr_sheen_ash_layer_scale(a.mu, a.mu2, a.ab, a.rho)};
-    const float h[] = {hlsl::dspbr_ggx_E(a.mu, a.r),
-                       hlsl::dspbr_ggx_E_avg(a.r),
-                       hlsl::dspbr_base_E(a.mu, a.r, a.f0),
-                       hlsl::dspbr_base_E_avg(a.r, a.f0),
-                       hlsl::dspbr_sheen_E(a.mu, a.ab),
-                       hlsl::dspbr_sheen_ash_E(a.mu, a.ab),
-                       hlsl::dspbr_ms_lobe(a.mu, a.mu2, a.r),
-                       hlsl::dspbr_diffuse_bc(a.mu, a.mu2, a.r, a.f0),
-                       hlsl::dspbr_sheen_layer_scale(a.mu, a.mu2, a.ab, a.rho),
-                       hlsl::dspbr_sheen_ash_layer_scale(a.mu, a.mu2, a.ab, a.rho)};
+    // The same ten calls in each dialect's namespace.
+#define DSPBR_ALL_CALLS(ns)                                                                            \
+  {ns dspbr_ggx_E(a.mu, a.r),                                                                          \
+   ns dspbr_ggx_E_avg(a.r),                                                                            \
+   ns dspbr_base_E(a.mu, a.r, a.f0),                                                                   \
+   ns dspbr_base_E_avg(a.r, a.f0),                                                                     \
+   ns dspbr_sheen_E(a.mu, a.ab),                                                                       \
+   ns dspbr_sheen_ash_E(a.mu, a.ab),                                                                   \
+   ns dspbr_ms_lobe(a.mu, a.mu2, a.r),                                                                 \
+   ns dspbr_diffuse_bc(a.mu, a.mu2, a.r, a.f0),                                                        \
+   ns dspbr_sheen_layer_scale(a.mu, a.mu2, a.ab, a.rho),                                               \
+   ns dspbr_sheen_ash_layer_scale(a.mu, a.mu2, a.ab, a.rho)}
+    const float c[] = DSPBR_ALL_CALLS(::);
+    const float g[] = DSPBR_ALL_CALLS(glsl::);
+    const float h[] = DSPBR_ALL_CALLS(hlsl::);
+#undef DSPBR_ALL_CALLS
     for (int i = 0; i < 10; ++i) {
       expect_float_close(g[i], c[i], "glsl");
       expect_float_close(h[i], c[i], "hlsl");

@@ -284,7 +284,7 @@ TEST(LutCli, BadArgumentsFailAndLeaveNoFiles) {
   const char* cases[] = {"--tables GGX_E,Nope", "--tables ''",           "--samples -3",
                          "--samples abc",       "--samples 4",           "--size GGX_E=0x4",
                          "--size GGX_E=4",      "--size Foo=4x4",        "--size GGX_E=4xq",
-                         "--grid middle",       "--formats exr,png",     "--integrator simpson",
+                         "--grid middle",       "--formats exr,gif",     "--integrator simpson",
                          "--threads -1",        "--randomizations 1",    "--target-error -1",
                          "--grid endpoint --size GGX_E=1x4",             "--scene /nonexistent.gltf"};
   for (const char* c : cases) {

@@ -3,7 +3,7 @@
 // deterministic Gauss-Legendre over the microfacet normal, no sampling, not the generator) on
 // random points of the whole domain that are not table samples; the white furnace of a white
 // metal and a white opaque dielectric built from the lookups, with the cosine averages of the
-// lookups integrated here by an independent rule.
+// lookups integrated by the geometric-panel rule of quadrature.h (not the generator's per-cell rule).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -142,16 +142,6 @@ TEST(LutRenderer, AveragesMatchQuadrature) {
   }
 }
 
-// 2 Integral_0^1 g(mu) mu dmu with geometric panels towards mu = 0 (decades 1e-9 .. 1, 8 panels
-// of 8 Gauss-Legendre nodes each): resolves the grazing features at any roughness.
-template <class G>
-double cosine_average(G&& g) {
-  static const QuadratureRule rule = gauss_legendre(8);
-  double sum = integrate_gl([&](double mu) { return 2.0 * mu * g(mu); }, 0.0, 1e-9, 1, rule);
-  for (double a = 1e-9; a < 1.0; a *= 10)
-    sum += integrate_gl([&](double mu) { return 2.0 * mu * g(mu); }, a, a * 10, 8, rule);
-  return sum;
-}
 
 // White metal (F = 1): M_r integrates to the exact E_m; the spec's M_r,ms lobe built from the
 // lookups integrates to (1 - E^(mu)) (1 - avg(E^)) / (1 - E^_avg).

@@ -26,4 +26,16 @@ double integrate_gl(F&& f, double a, double b, int panels, const QuadratureRule&
   return sum;
 }
 
+// Cosine-weighted hemispherical average 2 Integral_0^1 g(mu) mu dmu of a function of cos theta,
+// with geometric panels towards mu = 0 (decades 1e-9 .. 1, 8 panels of 8 Gauss-Legendre nodes
+// each, one panel on [0, 1e-9]): resolves grazing features of any width down to 1e-9.
+template <class G>
+double cosine_average(G&& g) {
+  static const QuadratureRule rule = gauss_legendre(8);
+  auto f = [&](double mu) { return 2.0 * mu * g(mu); };
+  double sum = integrate_gl(f, 0.0, 1e-9, 1, rule);
+  for (double a = 1e-9; a < 1.0; a *= 10) sum += integrate_gl(f, a, a * 10, 8, rule);
+  return sum;
+}
+
 }  // namespace dspbr

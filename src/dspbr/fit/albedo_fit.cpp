@@ -183,8 +183,9 @@ nlohmann::json albedo_report(const AlbedoFitSettings& s, const AlbedoFitParams& 
   std::vector<double> map_em, map_sb;  // signed errors on the fresh grid (plots)
   const std::vector<double> furnace_edges = {0.05, 0.25, 0.5, 1.0 + 1e-9};
   std::vector<ErrorStats> furnace_band(furnace_edges.size() - 1), furnace_lut_band(furnace_edges.size() - 1);
-  // Baseline: the same furnace with the committed tables (bilinear GGX_E, linear GGX_E_avg).
-  const LutSet& lut = LutSet::builtin();
+  // Baseline: the same furnace with the committed published-layout tables (bilinear GGX_E,
+  // linear GGX_E_avg).
+  const LutSet& lut = LutSet::published();
   for (size_t ir = 0; ir < rs.size(); ++ir) {
     const double r = rs[ir];
     ea.add(fit_ggx_E_avg(r, p) - avg[ir].e_avg);

@@ -145,10 +145,10 @@ RendererLuts read_renderer_json_text(std::string_view text, const std::string& p
         cells *= size_t(a.size);
         t.axes.push_back(a);
       }
+      // GGX_E_avg stores ln(1 - E_m,avg) (the lookups decode it so), every other table the value.
       const std::string enc = e.at("encoding").get<std::string>();
-      if (enc != encoding_name(expected_axes.table(name)->encoding) &&
-          !(std::string(name) == "GGX_E_avg" && enc == "log_one_minus"))
-        throw std::runtime_error(std::string(name) + ": unexpected encoding '" + enc + "'");
+      const std::string want = std::string(name) == "GGX_E_avg" ? "log_one_minus" : "value";
+      if (enc != want) throw std::runtime_error(std::string(name) + ": encoding must be '" + want + "', not '" + enc + "'");
       t.encoding = enc == "log_one_minus" ? Encoding::LogOneMinus : Encoding::Value;
       const auto& jv = e.at("values");
       if (!jv.is_array() || jv.size() != cells)

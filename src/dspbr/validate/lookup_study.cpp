@@ -49,15 +49,6 @@ LookupErrorRow measure(const std::string& table, const std::string& layout, size
   return row;
 }
 
-// 2 Integral_0^1 g(mu) mu dmu, geometric panels towards 0 (decades 1e-9 .. 1).
-template <class G>
-double cosine_average(G&& g) {
-  static const QuadratureRule rule = gauss_legendre(8);
-  double sum = integrate_gl([&](double mu) { return 2.0 * mu * g(mu); }, 0.0, 1e-9, 1, rule);
-  for (double a = 1e-9; a < 1.0; a *= 10)
-    sum += integrate_gl([&](double mu) { return 2.0 * mu * g(mu); }, a, a * 10, 8, rule);
-  return sum;
-}
 
 size_t published_values(const LutSet& s, const std::string& t) {
   if (t == "GGX_E") return s.ggx_e.size();
