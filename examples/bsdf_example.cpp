@@ -1,6 +1,6 @@
 // Using the DSPBR reference BSDF as a library: build a material by its JSON parameter ids,
 // evaluate f(v, l) and pdf(v, l), draw a few samples, and read the emission.
-// Built by CMake as `example_bsdf_example`; run it from the build directory.
+// Built by CMake as `example_bsdf_example`, or against an installed dspbr with examples/CMakeLists.txt.
 #include <cstdio>
 
 #include "dspbr/bsdf/material_bsdf.h"
@@ -23,7 +23,7 @@ int main() {
 
   BsdfOptions opt;
   opt.position = {0.0123, 0.0456, 0.0};                  // object-space point (m): picks the flake
-  const MaterialBsdf bsdf(m, LutSet::builtin(), opt);    // luts/dspbr_luts.json
+  const MaterialBsdf bsdf(m, LutSet::builtin(), opt);    // the built-in renderer-layout tables
 
   // Directions in the local frame (tangent +x, bitangent +y, normal +z), pointing away.
   const Vec3 v = normalize(Vec3{0.3, 0.0, 1.0});

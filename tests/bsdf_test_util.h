@@ -2,40 +2,17 @@
 // computed by Gauss-Legendre quadrature over the sphere (independent of the BSDF's sampling).
 #pragma once
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <string>
 
 #include "dspbr/bsdf/bsdf.h"
-#include "dspbr/lut/generate.h"
 #include "dspbr/lut/lut_set.h"
 #include "dspbr/quadrature.h"
 
 namespace dspbr::test {
 
-// The committed renderer tables (luts/dspbr_renderer_luts.json) when present, else a coarse in-memory set generated
-// with the project's integrator (few samples: good to ~1e-3, enough for the tolerances used).
-inline const LutSet& bsdf_luts() {
-  static const LutSet set = [] {
-    if (std::ifstream(DSPBR_SOURCE_DIR "/luts/dspbr_renderer_luts.json").good()) return LutSet::builtin();
-    LutOptions o;
-    o.samples = 2048;
-    o.progress = false;
-    o.sizes = {{"GGX_E", {32, 32}}, {"GGX_E_avg", {32}}, {"Base_E", {16, 16, 16}},
-               {"Base_E_avg", {16, 16}}, {"Sheen_E", {16, 16}}, {"Sheen_ash_E", {16, 16}}};
-    LutSet s;
-    for (Table& t : generate_luts(o)) {
-      if (t.name == "GGX_E") s.ggx_e = t;
-      else if (t.name == "GGX_E_avg") s.ggx_e_avg = t;
-      else if (t.name == "Base_E") s.base_e = t;
-      else if (t.name == "Base_E_avg") s.base_e_avg = t;
-      else if (t.name == "Sheen_E") s.sheen_e = t;
-      else if (t.name == "Sheen_ash_E") s.sheen_ash_e = t;
-    }
-    return s;
-  }();
-  return set;
-}
+// The built-in renderer tables (compiled in from luts/dspbr_renderer_luts.json).
+inline const LutSet& bsdf_luts() { return LutSet::builtin(); }
 
 inline Vec3 dir_from_angles(double theta_deg, double phi_deg) {
   const double t = theta_deg * M_PI / 180, p = phi_deg * M_PI / 180;

@@ -174,6 +174,34 @@ TEST(LutIo, CommittedHeaderMatchesJson) {
   EXPECT_EQ(lut_header_text(tables, LutOptions{}), slurp(kLuts + "/pbrlut.hpp"));
 }
 
+// The library's default tables are the committed files, compiled in (no run-time read of luts/),
+// and the text readers give what the file readers give, with the given name in their messages.
+TEST(LutIo, BuiltinTablesAreTheCommittedFiles) {
+  EXPECT_EQ(std::string(LutSet::builtin_text(LutLayout::Published)), slurp(kLuts + "/dspbr_luts.json"));
+  EXPECT_EQ(std::string(LutSet::builtin_text(LutLayout::Renderer)), slurp(kLuts + "/dspbr_renderer_luts.json"));
+  EXPECT_STREQ(LutSet::builtin_name(LutLayout::Renderer), "built-in luts/dspbr_renderer_luts.json");
+  EXPECT_TRUE(LutSet::builtin().layout == LutLayout::Renderer);
+  EXPECT_TRUE(LutSet::published().layout == LutLayout::Published);
+  const LutSet file = LutSet::load(kLuts + "/dspbr_luts.json");
+  EXPECT_EQ(file.ggx_e.values, LutSet::published().ggx_e.values);
+  EXPECT_EQ(file.base_e.values, LutSet::published().base_e.values);
+  const LutSet renderer = LutSet::load(kLuts + "/dspbr_renderer_luts.json");
+  EXPECT_EQ(renderer.E_m(0.3, 0.4), LutSet::builtin().E_m(0.3, 0.4));
+  try {
+    read_lut_json_text("{\"format\": \"other\"}", "built-in x.json");
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("'built-in x.json': not a dspbr_luts file", 0), 0u) << e.what();
+  }
+  EXPECT_THROW(LutSet::from_text("not json", "x"), std::runtime_error);
+  try {
+    LutSet::load(kLuts);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+  }
+}
+
 // The Base_E atlas holds the slices stacked vertically; every PNG decodes (offset + scale * pixel /
 // 65535 from its own attribute) to the JSON values within 16-bit rounding; the attributes name the
 // table and its axes.

@@ -3,7 +3,8 @@
 //   dspbr validate --out DIR           full run (minutes)
 //   dspbr validate --quick --out DIR   reduced sample counts and cases (seconds; run by CTest)
 // Writes DIR/data/report.json and DIR/images/ (C++), then DIR/index.html and DIR/plots/ through
-// scripts/report/make_report.py (matplotlib + jinja2).
+// scripts/report/make_report.py (matplotlib + jinja2), found relative to the running binary
+// (installed in <prefix>/share/dspbr/report; the build copies it next to build/dspbr).
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -41,6 +42,23 @@ std::string shell_quote(const std::string& s) {
   return q + "'";
 }
 
+// scripts/report/ as installed next to the running binary: <prefix>/share/dspbr/report beside
+// <prefix>/bin/dspbr, or the copy the build makes in share/dspbr/report of the binary's folder.
+std::string report_script() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) throw std::runtime_error("cannot locate the dspbr executable (/proc/self/exe): " + ec.message());
+  std::string tried;
+  for (const fs::path& dir : {exe.parent_path().parent_path() / "share/dspbr/report",
+                              exe.parent_path() / "share/dspbr/report"}) {
+    const fs::path script = dir / "make_report.py";
+    if (fs::is_regular_file(script, ec)) return script.string();
+    tried += (tried.empty() ? "" : ", ") + script.string();
+  }
+  throw std::runtime_error("report script not found (looked for " + tried + "); --no-html writes only the data");
+}
+
 void run_validate(const ValidateArgs& a) {
   namespace fs = std::filesystem;
   if (a.out.empty()) throw UsageError("--out must name a folder");
@@ -48,8 +66,7 @@ void run_validate(const ValidateArgs& a) {
   fs::create_directories(a.out, ec);
   if (ec || !fs::is_directory(a.out))
     throw UsageError("cannot create the output folder '" + a.out + "': " + (ec ? ec.message() : "not a folder"));
-  const std::string script = std::string(DSPBR_SOURCE_DIR) + "/scripts/report/make_report.py";
-  if (a.html && !fs::exists(script)) throw std::runtime_error("report script not found: " + script);
+  const std::string script = a.html ? report_script() : std::string();
 
   validate::SuiteSettings s = validate::SuiteSettings::defaults(a.quick);
   s.seed = a.seed;
@@ -85,9 +102,7 @@ void run_validate(const ValidateArgs& a) {
     }
     try {
       bsdf_tables = &LutSet::of_layout(layout);
-      s.table_file = validate::table_file_settings(std::string(DSPBR_SOURCE_DIR) + "/luts/" +
-                                                   (layout == LutLayout::Renderer ? "dspbr_renderer_luts.json"
-                                                                                  : "dspbr_luts.json"));
+      s.table_file = validate::table_text_settings(LutSet::builtin_text(layout), LutSet::builtin_name(layout));
       checked = &LutSet::published();
     } catch (const std::exception& e) {
       std::fprintf(stderr, "dspbr validate: tables skipped: %s\n", e.what());

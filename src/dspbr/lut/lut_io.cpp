@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -244,12 +245,20 @@ std::string lut_json_text(const std::vector<Table>& tables, const LutOptions& op
   return j.dump(1) + "\n";
 }
 
-std::vector<Table> read_lut_json(const std::string& path) {
-  std::ifstream in(path);
+std::string read_table_file(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw std::runtime_error("'" + path + "' is a directory, not a table file");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open '" + path + "'");
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::vector<Table> read_lut_json(const std::string& path) { return read_lut_json_text(read_table_file(path), path); }
+
+std::vector<Table> read_lut_json_text(std::string_view text, const std::string& path) {
   nlohmann::json j;
   try {
-    in >> j;
+    j = nlohmann::json::parse(text.begin(), text.end());
   } catch (const std::exception& e) {
     throw std::runtime_error("'" + path + "' is not valid JSON: " + e.what());
   }

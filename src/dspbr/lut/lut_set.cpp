@@ -1,6 +1,5 @@
 #include "dspbr/lut/lut_set.h"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -8,6 +7,11 @@
 #include "dspbr/lut/renderer_io.h"
 
 namespace dspbr {
+
+// Defined in the sources CMake generates from luts/dspbr_luts.json and
+// luts/dspbr_renderer_luts.json (cmake/generated_sources.cmake).
+std::string_view dspbr_luts_json();
+std::string_view dspbr_renderer_luts_json();
 
 namespace {
 bool is_renderer(const LutSet& s) { return s.layout == LutLayout::Renderer; }
@@ -31,21 +35,22 @@ double LutSet::E_sheen_ash(double c, double ab) const {
   return is_renderer(*this) ? this->renderer.E_sheen_ash(c, ab) : sheen_ash_e.lookup({ab, c});
 }
 
-LutSet LutSet::load(const std::string& json_path) {
+LutSet LutSet::load(const std::string& json_path) { return from_text(read_table_file(json_path), json_path); }
+
+LutSet LutSet::from_text(std::string_view text, const std::string& name) {
   std::string format;
   {
-    std::ifstream in(json_path);
-    nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    const nlohmann::json j = nlohmann::json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
     if (j.is_object() && j.contains("format") && j["format"].is_string()) format = j["format"].get<std::string>();
   }
   LutSet set;
   if (format == "dspbr_renderer_luts") {
     set.layout = LutLayout::Renderer;
-    set.renderer = read_renderer_json(json_path);
+    set.renderer = read_renderer_json_text(text, name);
     return set;
   }
   set.layout = LutLayout::Published;
-  const std::vector<Table> tables = read_lut_json(json_path);
+  const std::vector<Table> tables = read_lut_json_text(text, name);
   for (const Table& t : tables) {
     if (t.name == "GGX_E") set.ggx_e = t;
     else if (t.name == "GGX_E_avg") set.ggx_e_avg = t;
@@ -57,14 +62,22 @@ LutSet LutSet::load(const std::string& json_path) {
   return set;
 }
 
+const char* LutSet::builtin_name(LutLayout layout) {
+  return layout == LutLayout::Renderer ? "built-in luts/dspbr_renderer_luts.json" : "built-in luts/dspbr_luts.json";
+}
+
+std::string_view LutSet::builtin_text(LutLayout layout) {
+  return layout == LutLayout::Renderer ? dspbr_renderer_luts_json() : dspbr_luts_json();
+}
+
 const LutSet& LutSet::builtin() {
   // Function-local static: initialised once, thread-safe (C++11 magic statics).
-  static const LutSet set = load(DSPBR_SOURCE_DIR "/luts/dspbr_renderer_luts.json");
+  static const LutSet set = from_text(builtin_text(LutLayout::Renderer), builtin_name(LutLayout::Renderer));
   return set;
 }
 
 const LutSet& LutSet::published() {
-  static const LutSet set = load(DSPBR_SOURCE_DIR "/luts/dspbr_luts.json");
+  static const LutSet set = from_text(builtin_text(LutLayout::Published), builtin_name(LutLayout::Published));
   return set;
 }
 

@@ -6,6 +6,7 @@
 //    domain; the default of the reference BSDF).
 #pragma once
 #include <string>
+#include <string_view>
 
 #include "dspbr/lut/renderer_luts.h"
 #include "dspbr/lut/table.h"
@@ -40,10 +41,17 @@ struct LutSet {
   // dspbr_renderer_luts.json (renderer layout), told apart by its "format". Throws
   // std::runtime_error with a message naming the file and the problem.
   static LutSet load(const std::string& json_path);
-  // The committed default sets (loaded once, cached): builtin() is the renderer layout the
+  // The same from the text of such a file; `name` stands for the file in the messages.
+  static LutSet from_text(std::string_view text, const std::string& name);
+  // The default sets, compiled into the library from the committed luts/dspbr_renderer_luts.json
+  // and luts/dspbr_luts.json (parsed once, cached): builtin() is the renderer layout the
   // reference BSDF uses by default, published() the published layout.
   static const LutSet& builtin();
   static const LutSet& published();
+  // The embedded text of the default set of a layout and its name in messages and reports
+  // ("built-in luts/dspbr_renderer_luts.json", "built-in luts/dspbr_luts.json").
+  static std::string_view builtin_text(LutLayout layout);
+  static const char* builtin_name(LutLayout layout);
   static const LutSet& of_layout(LutLayout layout);
 };
 

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "dspbr/io/atomic_file.h"
+#include "dspbr/lut/lut_io.h"
 #include "dspbr/lut/table_image.h"
 
 namespace dspbr {
@@ -90,13 +91,13 @@ std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, 
 }
 
 RendererLuts read_renderer_json(const std::string& path) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw std::runtime_error("'" + path + "' is a directory, not a table file");
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open '" + path + "'");
+  return read_renderer_json_text(read_table_file(path), path);
+}
+
+RendererLuts read_renderer_json_text(std::string_view text, const std::string& path) {
   nlohmann::json j;
   try {
-    in >> j;
+    j = nlohmann::json::parse(text.begin(), text.end());
   } catch (const std::exception&) {
     throw std::runtime_error("'" + path + "' is not valid JSON");
   }

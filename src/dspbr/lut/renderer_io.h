@@ -10,6 +10,7 @@
 //    sampled from the renderer lookups.
 #pragma once
 #include <string>
+#include <string_view>
 
 #include "dspbr/lut/generate.h"
 #include "dspbr/lut/renderer_luts.h"
@@ -22,6 +23,8 @@ std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, 
 // (before allocating) and finite values. Throws std::runtime_error naming the file and the
 // problem.
 RendererLuts read_renderer_json(const std::string& path);
+// The same from the file's text; `name` stands for the file in the messages.
+RendererLuts read_renderer_json_text(std::string_view text, const std::string& name);
 
 // Writes NAME.exr (float, or half) and NAME.png per table and the split-sum images into dir
 // (atomically).

@@ -28,9 +28,13 @@ json table_file_settings(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot read the table file");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return table_text_settings(bytes, path);
+}
+
+json table_text_settings(std::string_view bytes, const std::string& path) {
   uint64_t h = 1469598103934665603ULL;
   for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ULL;
-  json j = json::parse(bytes, nullptr, false);
+  json j = json::parse(bytes.begin(), bytes.end(), nullptr, false);
   if (j.is_discarded() || !j.is_object()) throw std::runtime_error(path + ": not a JSON table file");
   json out = {{"file", path}, {"fnv1a64", fmt::format("{:016x}", h)}};
   for (const char* k : {"generator", "model", "grid", "seed", "version"})

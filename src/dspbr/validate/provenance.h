@@ -2,6 +2,7 @@
 // configured the build, dspbr/version.h), and the settings of the table file that was used.
 #pragma once
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +15,9 @@ std::string git_describe();     // `git describe --always --dirty` at configure 
 // integrator, samples, target error, seed) of a `dspbr lut` JSON file. Throws std::runtime_error
 // naming the file when it cannot be read.
 nlohmann::json table_file_settings(const std::string& path);
+// The same from the bytes of such a file; `name` is what the "file" entry says (e.g.
+// "built-in luts/dspbr_renderer_luts.json" for the tables compiled into the library).
+nlohmann::json table_text_settings(std::string_view bytes, const std::string& name);
 
 // The command line of this process (/proc/self/cmdline, arguments joined by spaces; "" if unknown).
 std::string process_command_line();

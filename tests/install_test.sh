@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Installs the build into a temporary prefix, MOVES the prefix elsewhere, and from yet another
+# folder runs the moved bin/dspbr (--version, eval, params list, a tiny lut, validate --quick) and
+# builds examples/ as an outside project with find_package(dspbr CONFIG REQUIRED), then runs it;
+# also compiles the example through the moved dspbr.pc. Proves the install is complete and
+# relocatable and reads nothing from the source or build tree.
+#   install_test.sh BUILD_DIR SOURCE_DIR WORK_DIR CMAKE
+set -euo pipefail
+build=$1 src=$2 work=$3 cmake=${4:-cmake}
+rm -rf "$work"
+mkdir -p "$work/elsewhere"
+step() { echo "== $*"; }
+
+step "install into $work/stage"
+"$cmake" --install "$build" --prefix "$work/stage" > "$work/install.log"
+mv "$work/stage" "$work/moved"
+prefix="$work/moved"
+dspbr="$prefix/bin/dspbr"
+for f in bin/dspbr lib/libdspbr.a lib/cmake/dspbr/dspbrConfig.cmake lib/cmake/dspbr/dspbrConfigVersion.cmake \
+         lib/cmake/dspbr/dspbrTargets.cmake lib/pkgconfig/dspbr.pc include/dspbr/bsdf/material_bsdf.h \
+         include/dspbr/version.h include/dspbr/luts/pbrlut.hpp include/dspbr/luts/dspbr_lookup.h \
+         include/dspbr/luts/dspbr_lookup.glsl include/dspbr/luts/dspbr_lookup.hlsl include/dspbr/fits/dspbr_fits.hpp \
+         share/dspbr/data/params-2025x.json share/dspbr/data/LICENSE.txt share/dspbr/data/gltf_ext/schema \
+         share/dspbr/luts/dspbr_renderer_luts.json share/dspbr/report/make_report.py \
+         share/dspbr/report/templates/index.html.j2; do
+  [ -e "$prefix/$f" ] || { echo "missing in the install: $f"; exit 1; }
+done
+# Nothing installed may name the source or the build tree (the binary, the CMake files, the .pc).
+if grep -rlF -e "$src" -e "$build" "$prefix" ; then echo "the install names the source or build tree (above)"; exit 1; fi
+if grep -rlF "$work/stage" "$prefix"; then echo "the install names its first prefix (above)"; exit 1; fi
+
+cd "$work/elsewhere"
+step "dspbr --version"; "$dspbr" --version
+step "dspbr eval"; "$dspbr" eval --view 0,0,1 --light 0.3,0,1
+step "dspbr params list"; "$dspbr" params list > params.txt; head -3 params.txt
+step "dspbr lut"; "$dspbr" lut --out T --tables GGX_E --size GGX_E=4x4 --samples 1024 > lut.log
+[ -s T/dspbr_luts.json ] || { echo "lut wrote no T/dspbr_luts.json"; exit 1; }
+step "dspbr validate --quick"; "$dspbr" validate --quick --out R > validate.log 2> validate.err || {
+  cat validate.log validate.err; exit 1; }
+[ -s R/index.html ] || { echo "validate wrote no R/index.html"; exit 1; }
+grep -q '"file": "built-in luts/dspbr_renderer_luts.json"' R/data/report.json ||
+  { echo "the report does not name the built-in tables"; exit 1; }
+
+step "examples/ against the moved prefix (CMake package)"
+"$cmake" -S "$src/examples" -B ex -DCMAKE_PREFIX_PATH="$prefix" > ex-configure.log
+"$cmake" --build ex -j2 > ex-build.log
+./ex/bsdf_example
+
+step "examples/bsdf_example.cpp through dspbr.pc"
+export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+pkg-config --modversion dspbr
+[ "$(realpath "$(pkg-config --variable=prefix dspbr)")" = "$(realpath "$prefix")" ] ||
+  { echo "dspbr.pc does not point at the moved prefix"; exit 1; }
+# shellcheck disable=SC2046
+c++ -std=c++17 -O1 "$src/examples/bsdf_example.cpp" -o pc_example $(pkg-config --cflags --libs dspbr)
+./pc_example > /dev/null
+step "ok"
