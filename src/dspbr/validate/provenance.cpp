@@ -39,6 +39,9 @@ json table_text_settings(std::string_view bytes, const std::string& path) {
   json out = {{"file", path}, {"fnv1a64", fmt::format("{:016x}", h)}};
   for (const char* k : {"generator", "model", "grid", "seed", "version"})
     if (j.contains(k)) out[k] = j[k];
+  // The renderer-layout file keeps its seed with its integrator settings.
+  if (!out.contains("seed") && j.contains("integrator") && j["integrator"].is_object() && j["integrator"].contains("seed"))
+    out["seed"] = j["integrator"]["seed"];
   json tables = json::object();
   if (j.contains("tables") && j["tables"].is_object())
     for (const auto& [name, t] : j["tables"].items()) {
