@@ -14,6 +14,7 @@
 #include <string>
 
 #include "commands.h"
+#include "dspbr/io/read_file.h"
 #include "dspbr/lut/lut_set.h"
 #include "dspbr/validate/catalog.h"
 #include "dspbr/validate/provenance.h"
@@ -80,8 +81,9 @@ void run_validate(const ValidateArgs& a) {
   LutSet loaded;
   if (!a.luts.empty()) {
     try {
-      loaded = LutSet::load(a.luts);
-      s.table_file = validate::table_file_settings(a.luts);
+      const std::string bytes = read_file(a.luts);  // read once: the tables and their provenance
+      loaded = LutSet::from_text(bytes, a.luts);
+      s.table_file = validate::table_text_settings(bytes, a.luts);
     } catch (const std::exception& e) {
       throw UsageError(std::string("--luts: ") + e.what());
     }

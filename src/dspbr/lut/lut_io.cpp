@@ -7,13 +7,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "dspbr/io/atomic_file.h"
+#include "dspbr/io/read_file.h"
 #include "dspbr/lut/table_image.h"
 
 namespace dspbr {
@@ -245,23 +245,15 @@ std::string lut_json_text(const std::vector<Table>& tables, const LutOptions& op
   return j.dump(1) + "\n";
 }
 
-std::string read_table_file(const std::string& path) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw std::runtime_error("'" + path + "' is a directory, not a table file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open '" + path + "'");
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+std::vector<Table> read_lut_json(const std::string& path) {
+  return read_lut_json_value(read_json_file(path, "table file"), path);
 }
 
-std::vector<Table> read_lut_json(const std::string& path) { return read_lut_json_text(read_table_file(path), path); }
+std::vector<Table> read_lut_json_text(std::string_view text, const std::string& name) {
+  return read_lut_json_value(parse_json(text, name, "table file"), name);
+}
 
-std::vector<Table> read_lut_json_text(std::string_view text, const std::string& path) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text.begin(), text.end());
-  } catch (const std::exception& e) {
-    throw std::runtime_error("'" + path + "' is not valid JSON: " + e.what());
-  }
+std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::string& path) {
   try {
     if (j.value("format", std::string()) != "dspbr_luts")
       throw std::runtime_error("not a dspbr_luts file (missing \"format\": \"dspbr_luts\")");

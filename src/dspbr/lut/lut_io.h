@@ -6,6 +6,7 @@
 //    definitions under PBRLUT_IMPLEMENTATION, values printed with max_digits10 = 9 digits).
 //  - dspbr_luts.json: axes, values (double), per-cell standard errors, integrator settings.
 #pragma once
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,15 +43,13 @@ std::vector<float> read_lut_exr(const std::string& path, int* width, int* height
 std::string lut_header_text(const std::vector<Table>& tables, const LutOptions& opt);
 std::string lut_json_text(const std::vector<Table>& tables, const LutOptions& opt);
 
-// The bytes of a table file. Throws std::runtime_error "'<path>' is a directory, not a table
-// file" or "cannot open '<path>'".
-std::string read_table_file(const std::string& path);
-
 // Reads the tables of a dspbr_luts.json (any subset of the six). Throws std::runtime_error
-// naming the file and the problem.
+// naming the file and the problem (file errors and malformed JSON: io/read_file.h).
 std::vector<Table> read_lut_json(const std::string& path);
-// The same from the file's text; `name` stands for the file in the messages.
+// The same from the file's text, or from its parsed JSON; `name` stands for the file in the
+// messages.
 std::vector<Table> read_lut_json_text(std::string_view text, const std::string& name);
+std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::string& name);
 
 // Writes every requested format into dir (created when missing). Returns the largest EXR
 // rounding error per table (same order as tables; 0 when no EXR was written).

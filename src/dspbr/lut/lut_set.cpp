@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "dspbr/io/read_file.h"
 #include "dspbr/lut/lut_io.h"
 #include "dspbr/lut/renderer_io.h"
 
@@ -15,6 +16,27 @@ std::string_view dspbr_renderer_luts_json();
 
 namespace {
 bool is_renderer(const LutSet& s) { return s.layout == LutLayout::Renderer; }
+
+// One parse of the file; its "format" tells the layout.
+LutSet from_json(const nlohmann::json& j, const std::string& name) {
+  LutSet set;
+  if (j.is_object() && j.value("format", std::string()) == "dspbr_renderer_luts") {
+    set.layout = LutLayout::Renderer;
+    set.renderer = read_renderer_json_value(j, name);
+    return set;
+  }
+  set.layout = LutLayout::Published;
+  for (Table& t : read_lut_json_value(j, name)) {
+    if (t.name == "GGX_E") set.ggx_e = std::move(t);
+    else if (t.name == "GGX_E_avg") set.ggx_e_avg = std::move(t);
+    else if (t.name == "Base_E") set.base_e = std::move(t);
+    else if (t.name == "Base_E_avg") set.base_e_avg = std::move(t);
+    else if (t.name == "Sheen_E") set.sheen_e = std::move(t);
+    else if (t.name == "Sheen_ash_E") set.sheen_ash_e = std::move(t);
+  }
+  return set;
+}
+
 }  // namespace
 
 double LutSet::E_m(double c, double r) const { return is_renderer(*this) ? this->renderer.E_m(c, r) : ggx_e.lookup({r, c}); }
@@ -35,31 +57,12 @@ double LutSet::E_sheen_ash(double c, double ab) const {
   return is_renderer(*this) ? this->renderer.E_sheen_ash(c, ab) : sheen_ash_e.lookup({ab, c});
 }
 
-LutSet LutSet::load(const std::string& json_path) { return from_text(read_table_file(json_path), json_path); }
+LutSet LutSet::load(const std::string& json_path) {
+  return from_json(read_json_file(json_path, "table file"), json_path);
+}
 
 LutSet LutSet::from_text(std::string_view text, const std::string& name) {
-  std::string format;
-  {
-    const nlohmann::json j = nlohmann::json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
-    if (j.is_object() && j.contains("format") && j["format"].is_string()) format = j["format"].get<std::string>();
-  }
-  LutSet set;
-  if (format == "dspbr_renderer_luts") {
-    set.layout = LutLayout::Renderer;
-    set.renderer = read_renderer_json_text(text, name);
-    return set;
-  }
-  set.layout = LutLayout::Published;
-  const std::vector<Table> tables = read_lut_json_text(text, name);
-  for (const Table& t : tables) {
-    if (t.name == "GGX_E") set.ggx_e = t;
-    else if (t.name == "GGX_E_avg") set.ggx_e_avg = t;
-    else if (t.name == "Base_E") set.base_e = t;
-    else if (t.name == "Base_E_avg") set.base_e_avg = t;
-    else if (t.name == "Sheen_E") set.sheen_e = t;
-    else if (t.name == "Sheen_ash_E") set.sheen_ash_e = t;
-  }
-  return set;
+  return from_json(parse_json(text, name, "table file"), name);
 }
 
 const char* LutSet::builtin_name(LutLayout layout) {

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "dspbr/io/atomic_file.h"
+#include "dspbr/io/read_file.h"
 #include "dspbr/lut/lut_io.h"
 #include "dspbr/lut/table_image.h"
 
@@ -91,16 +92,14 @@ std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, 
 }
 
 RendererLuts read_renderer_json(const std::string& path) {
-  return read_renderer_json_text(read_table_file(path), path);
+  return read_renderer_json_value(read_json_file(path, "table file"), path);
 }
 
-RendererLuts read_renderer_json_text(std::string_view text, const std::string& path) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text.begin(), text.end());
-  } catch (const std::exception&) {
-    throw std::runtime_error("'" + path + "' is not valid JSON");
-  }
+RendererLuts read_renderer_json_text(std::string_view text, const std::string& name) {
+  return read_renderer_json_value(parse_json(text, name, "table file"), name);
+}
+
+RendererLuts read_renderer_json_value(const nlohmann::json& j, const std::string& path) {
   RendererLuts out;
   try {
     if (!j.is_object() || j.value("format", std::string()) != "dspbr_renderer_luts")

@@ -24,13 +24,6 @@ std::string git_describe() {
   return open == std::string::npos ? "unknown" : v.substr(open + 2, v.size() - open - 3);
 }
 
-json table_file_settings(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot read the table file");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return table_text_settings(bytes, path);
-}
-
 json table_text_settings(std::string_view bytes, const std::string& path) {
   uint64_t h = 1469598103934665603ULL;
   for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ULL;

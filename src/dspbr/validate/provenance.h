@@ -12,11 +12,10 @@ std::string project_version();  // CMake PROJECT_VERSION, e.g. "0.1"
 std::string git_describe();     // `git describe --always --dirty` at configure time ("unknown" without git)
 
 // File name, FNV-1a 64-bit hash of its bytes, and the generator settings of each table (sizes,
-// integrator, samples, target error, seed) of a `dspbr lut` JSON file. Throws std::runtime_error
-// naming the file when it cannot be read.
-nlohmann::json table_file_settings(const std::string& path);
-// The same from the bytes of such a file; `name` is what the "file" entry says (e.g.
-// "built-in luts/dspbr_renderer_luts.json" for the tables compiled into the library).
+// integrator, samples, target error, seed) of a `dspbr lut` JSON file, from the file's bytes;
+// `name` is what the "file" entry says (the path, or e.g. "built-in luts/dspbr_renderer_luts.json"
+// for the tables compiled into the library). Throws std::runtime_error naming it when the bytes
+// are not a JSON object.
 nlohmann::json table_text_settings(std::string_view bytes, const std::string& name);
 
 // The command line of this process (/proc/self/cmdline, arguments joined by spaces; "" if unknown).

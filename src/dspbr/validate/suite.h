@@ -52,7 +52,7 @@ struct SuiteSettings {
   // Convergence
   std::vector<std::size_t> convergence_samples;
   std::vector<std::string> convergence_components;  // every case of these with a non-delta part
-  // Provenance (copied into the report): the checked table file (table_file_settings(), null when
+  // Provenance (copied into the report): the table file in use (table_text_settings(), null when
   // the tables did not come from a file) and the command line (goes into the "run" part).
   nlohmann::json table_file;
   std::string command_line;
