@@ -414,12 +414,16 @@ LutOptions lut_options(const py::object& tables, const py::object& size, const s
       opt.sizes[name] = dims_of(v, name);
     }
   }
-  if (grid == "cell") opt.grid = GridKind::CellCentred;
-  else if (grid == "endpoint") opt.grid = GridKind::Endpoint;
-  else fail("grid: '" + grid + "' is not cell or endpoint");
-  if (integrator == "qmc") opt.integrator = Integrator::Qmc;
-  else if (integrator == "mc") opt.integrator = Integrator::Mc;
-  else fail("integrator: '" + integrator + "' is not qmc or mc");
+  try {
+    opt.grid = parse_grid_kind(grid);
+  } catch (const std::invalid_argument& e) {
+    fail(std::string("grid: ") + e.what());
+  }
+  try {
+    opt.integrator = parse_integrator(integrator);
+  } catch (const std::invalid_argument& e) {
+    fail(std::string("integrator: ") + e.what());
+  }
   if (samples < 0 || samples > std::numeric_limits<int>::max())
     fail("samples must be a non-negative integer, got " + std::to_string(samples));
   opt.samples = int(samples);

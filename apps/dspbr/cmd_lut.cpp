@@ -102,12 +102,16 @@ LutOptions to_options(const LutArgs& a) {
     if (!is_lut_table_name(name)) throw UsageError("--size: unknown table '" + name + "'");
     opt.sizes[name] = parse_dims(s.substr(eq + 1), "--size " + name);
   }
-  if (a.grid == "cell") opt.grid = GridKind::CellCentred;
-  else if (a.grid == "endpoint") opt.grid = GridKind::Endpoint;
-  else throw UsageError("--grid: '" + a.grid + "' is not cell or endpoint");
-  if (a.integrator == "qmc") opt.integrator = Integrator::Qmc;
-  else if (a.integrator == "mc") opt.integrator = Integrator::Mc;
-  else throw UsageError("--integrator: '" + a.integrator + "' is not qmc or mc");
+  try {
+    opt.grid = parse_grid_kind(a.grid);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--grid: ") + e.what());
+  }
+  try {
+    opt.integrator = parse_integrator(a.integrator);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--integrator: ") + e.what());
+  }
   opt.samples = a.samples;
   opt.target_error = a.target_error;
   opt.randomizations = a.randomizations;

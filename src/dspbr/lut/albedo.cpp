@@ -198,6 +198,12 @@ double fresnel_ms_derivative(double f0, double e_avg) {
 
 const char* integrator_name(Integrator i) { return i == Integrator::Qmc ? "qmc" : "mc"; }
 
+Integrator parse_integrator(const std::string& name) {
+  if (name == "qmc") return Integrator::Qmc;
+  if (name == "mc") return Integrator::Mc;
+  throw std::invalid_argument("'" + name + "' is not qmc or mc");
+}
+
 Estimate ggx_E(double mu, double r, const IntegratorSettings& s, uint64_t stream) {
   return combine<2>(ggx_moments(mu, r, s, stream), [](const std::array<double, 2>& m) { return m[0]; });
 }

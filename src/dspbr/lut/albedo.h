@@ -39,6 +39,8 @@ namespace dspbr {
 
 enum class Integrator { Qmc, Mc };
 const char* integrator_name(Integrator i);  // "qmc" / "mc"
+// "qmc" / "mc" -> Integrator; throws std::invalid_argument "'<name>' is not qmc or mc".
+Integrator parse_integrator(const std::string& name);
 
 struct IntegratorSettings {
   Integrator integrator = Integrator::Qmc;

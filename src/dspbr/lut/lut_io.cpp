@@ -23,8 +23,6 @@ namespace {
 namespace fs = std::filesystem;
 using ojson = nlohmann::ordered_json;
 
-const char* grid_name(GridKind k) { return k == GridKind::CellCentred ? "cell" : "endpoint"; }
-
 std::string sampling_name(const std::string& table, Integrator i) {
   if (i == Integrator::Mc) return "uniform hemisphere (Pcg32)";
   if (table.rfind("Sheen", 0) == 0) return "mixture of uniform hemisphere and Charlie half-vector sampling (Owen-scrambled Sobol')";
@@ -210,7 +208,7 @@ std::string lut_json_text(const std::vector<Table>& tables, const LutOptions& op
   j["version"] = 1;
   j["model"] = "DSPBR 2025x";
   j["generator"] = "dspbr lut";
-  j["grid"] = grid_name(opt.grid);
+  j["grid"] = grid_kind_name(opt.grid);
   j["seed"] = opt.seed;
   j["notes"] = "values: directional/average albedos (docs/luts.md); errors: per-cell standard error (1 sigma)";
   ojson jt = ojson::object();
@@ -218,7 +216,7 @@ std::string lut_json_text(const std::vector<Table>& tables, const LutOptions& op
     ojson e;
     ojson axes = ojson::array();
     for (const Axis& a : t.axes)
-      axes.push_back({{"name", a.name}, {"size", a.size}, {"lo", a.lo}, {"hi", a.hi}, {"grid", grid_name(a.kind)}});
+      axes.push_back({{"name", a.name}, {"size", a.size}, {"lo", a.lo}, {"hi", a.hi}, {"grid", grid_kind_name(a.kind)}});
     e["axes"] = axes;
     const IntegratorSettings s = lut_settings(t.name, opt);
     e["integrator"] = {{"name", integrator_name(s.integrator)},
@@ -272,7 +270,7 @@ std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::strin
         a.hi = ja.at("hi").get<double>();
         const std::string g = ja.at("grid").get<std::string>();
         if (g != "cell" && g != "endpoint") throw std::runtime_error(name + ": unknown grid '" + g + "'");
-        a.kind = g == "cell" ? GridKind::CellCentred : GridKind::Endpoint;
+        a.kind = parse_grid_kind(g);
         if (a.size < 1 || (a.kind == GridKind::Endpoint && a.size < 2))
           throw std::runtime_error(name + ": bad size of axis " + a.name);
         t.axes.push_back(a);

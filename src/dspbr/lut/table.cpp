@@ -6,6 +6,14 @@
 
 namespace dspbr {
 
+const char* grid_kind_name(GridKind k) { return k == GridKind::CellCentred ? "cell" : "endpoint"; }
+
+GridKind parse_grid_kind(const std::string& name) {
+  if (name == "cell") return GridKind::CellCentred;
+  if (name == "endpoint") return GridKind::Endpoint;
+  throw std::invalid_argument("'" + name + "' is not cell or endpoint");
+}
+
 double Axis::coord(int i) const {
   if (kind == GridKind::CellCentred) return lo + (i + 0.5) / size * (hi - lo);
   return size > 1 ? lo + double(i) / (size - 1) * (hi - lo) : 0.5 * (lo + hi);

@@ -7,6 +7,9 @@
 namespace dspbr {
 
 enum class GridKind { CellCentred, Endpoint };
+const char* grid_kind_name(GridKind k);  // "cell" / "endpoint"
+// "cell" / "endpoint" -> GridKind; throws std::invalid_argument "'<name>' is not cell or endpoint".
+GridKind parse_grid_kind(const std::string& name);
 
 struct Axis {
   std::string name;  // e.g. "roughness", "cos_theta", "f0", "alpha_b"
