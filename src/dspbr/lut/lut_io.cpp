@@ -88,6 +88,13 @@ ImageAttributes table_attributes(const Table& t) {
           {"dspbr:encoding", "value"}};
 }
 
+// How a 3D table's slices are stacked in its atlas image (EXR and PNG).
+std::pair<std::string, std::string> atlas_attribute(const Table& t) {
+  return {"dspbr:atlas", fmt::format("{} slices of {}x{} stacked vertically: row = {}_index * {} + {}_index",
+                                     t.axes[0].size, t.axes[2].size, t.axes[1].size, t.axes[0].name,
+                                     t.axes[1].size, t.axes[1].name)};
+}
+
 }  // namespace
 
 std::vector<std::string> lut_exr_names(const Table& t) {
@@ -124,8 +131,7 @@ double write_lut_exrs(const Table& t, const std::string& dir, bool half) {
   if (t.axes.size() == 3) {  // one 3D-ready atlas: the slices stacked vertically
     std::vector<float> px(t.values.begin(), t.values.end());
     ImageAttributes attrs = table_attributes(t);
-    attrs.push_back({"dspbr:atlas", fmt::format("{} slices of {}x{} stacked vertically: row = {}_index * {} + {}_index",
-                                                names.size(), width, height, t.axes[0].name, height, t.axes[1].name)});
+    attrs.push_back(atlas_attribute(t));
     write_table_image((fs::path(dir) / lut_atlas_name(t)).string(), px, width, height * int(names.size()), 1,
                       half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT, attrs);
   }
@@ -140,9 +146,7 @@ double write_lut_png(const Table& t, const std::string& dir) {
   const int width = t.axes.back().size;
   const int height = int(t.size() / size_t(width));
   ImageAttributes attrs = table_attributes(t);
-  if (t.axes.size() == 3)
-    attrs.push_back({"dspbr:atlas", fmt::format("{} slices stacked vertically: row = {}_index * {} + {}_index",
-                                                t.axes[0].size, t.axes[0].name, t.axes[1].size, t.axes[1].name)});
+  if (t.axes.size() == 3) attrs.push_back(atlas_attribute(t));
   return write_table_png((fs::path(dir) / lut_png_names(t)[0]).string(), t.values, width, height, attrs);
 }
 
