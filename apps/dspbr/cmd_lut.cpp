@@ -227,9 +227,6 @@ void run_generate(const LutArgs& a) {
   std::printf("generated in %.2f s, written to %s\n", t_gen, a.out.c_str());
 }
 
-// Speed/accuracy study: for each table and integrator, wall time and max |error| against a
-// high-budget QMC reference (independent seed) over a range of sample budgets. Runs on a small
-// grid per table (override with --size) to keep the reference affordable.
 // Point-of-use study: lookup errors of the committed published and renderer layouts and of the
 // fits against independent quadrature, furnaces built from the lookups (validate/lookup_study.h).
 void run_lookup_bench(const LutArgs& a) {
@@ -240,6 +237,9 @@ void run_lookup_bench(const LutArgs& a) {
   std::fflush(stdout);
 }
 
+// Speed/accuracy study: the point-of-use study, then for each table and integrator, wall time and
+// max |error| against a high-budget QMC reference (independent seed) over a range of sample
+// budgets. Runs on a small grid per table (override with --size) to keep the reference affordable.
 void run_bench(const LutArgs& a) {
   run_lookup_bench(a);
   LutArgs b = a;
