@@ -1,15 +1,20 @@
 // Eval and sample throughput of the reference BSDF (MaterialBsdf) for a plain plastic, a metal,
-// a glass, a car paint (the params-2025x.json subtypes at their defaults) and the full material
-// (every component on), with the component mask derived from the material (active_components)
-// and without it (kAllComponents: every layer evaluated even at zero weight).
-//   dspbr_bench --benchmark_filter=Material
-// Figures: docs/params.md ("Cost of inactive components").
+// a glass, a car paint (the params-2025x.json subtypes at their defaults), a plastic with a thin
+// film and the full material (every component on), against a bare isotropic GGX reflection eval
+// (D, height-correlated G2, Schlick F) in the same run. BM_Eval/<material> and
+// BM_Sample/<material> use the component mask derived from the material (active_components);
+// .../all_components evaluates every layer even at zero weight.
+//   dspbr_bench --benchmark_filter='BM_(Eval|Sample)/'
+// Figures: docs/bsdf.md ("Speed"), docs/params.md ("Cost of inactive components").
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "dspbr/bsdf/material_bsdf.h"
+#include "dspbr/fresnel.h"
+#include "dspbr/ggx.h"
 #include "dspbr/params/material_instance.h"
 #include "dspbr/params/param_defs.h"
 #include "dspbr/rng.h"
@@ -48,17 +53,25 @@ Material full_material() {
   return m;
 }
 
+Material thin_film_material() {
+  Material m = subtype("plastic");
+  m.thinFilm = 1.0;  // thickness 0.4 um, film IOR 1.3: the parameter defaults
+  return m;
+}
+
 Material material(int index) {
   switch (index) {
     case 0: return subtype("plastic");
     case 1: return subtype("metal");
     case 2: return subtype("glass");
     case 3: return subtype("carpaint");
+    case 4: return thin_film_material();
     default: return full_material();
   }
 }
 
-const char* kNames[] = {"plastic", "metal", "glass", "carpaint", "full"};
+const char* kNames[] = {"plastic", "metal", "glass", "carpaint", "thin_film", "full"};
+constexpr int kMaterials = 6;
 
 // Fixed sets of directions / random numbers (upper hemisphere for v, both for l).
 struct Inputs {
@@ -83,45 +96,62 @@ const Inputs& inputs() {
   return in;
 }
 
-MaterialBsdf make(const benchmark::State& state) {
-  const Material m = material(static_cast<int>(state.range(0)));
-  const uint32_t mask = state.range(1) ? active_components(m) : kAllComponents;
-  return MaterialBsdf(m, LutSet::builtin(), BsdfOptions{}, mask);
+MaterialBsdf make(int index, bool masked) {
+  const Material m = material(index);
+  return MaterialBsdf(m, LutSet::builtin(), BsdfOptions{}, masked ? active_components(m) : kAllComponents);
 }
 
-void label(benchmark::State& state) {
-  state.SetLabel(std::string(kNames[state.range(0)]) + (state.range(1) ? " masked" : " all-components"));
-  state.SetItemsProcessed(state.iterations());
-}
-
-void BM_MaterialEval(benchmark::State& state) {
-  const MaterialBsdf bsdf = make(state);
+void eval(benchmark::State& state, int index, bool masked) {
+  const MaterialBsdf bsdf = make(index, masked);
   const Inputs& in = inputs();
   std::size_t i = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(bsdf.eval(in.v[i & 1023], in.l[i & 1023]));
     ++i;
   }
-  label(state);
+  state.SetItemsProcessed(state.iterations());
 }
 
-void BM_MaterialSample(benchmark::State& state) {
-  const MaterialBsdf bsdf = make(state);
+void sample(benchmark::State& state, int index, bool masked) {
+  const MaterialBsdf bsdf = make(index, masked);
   const Inputs& in = inputs();
   std::size_t i = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(bsdf.sample(in.v[i & 1023], in.u[i & 1023]));
     ++i;
   }
-  label(state);
+  state.SetItemsProcessed(state.iterations());
 }
 
-void args(benchmark::internal::Benchmark* b) {
-  for (int m = 0; m < 5; ++m)
-    for (int masked = 1; masked >= 0; --masked) b->Args({m, masked});
+// The yardstick: f = D G2 F / (4 |v.n| |l.n|) of one isotropic GGX lobe with Schlick's F, the
+// plastic's roughness, on the same directions.
+void bare_ggx(benchmark::State& state) {
+  const double alpha = roughness_to_alpha(subtype("plastic").roughness);
+  const Inputs& in = inputs();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Vec3& v = in.v[i & 1023];
+    const Vec3& l = in.l[i & 1023];
+    const Vec3 h = normalize(v + l);
+    benchmark::DoNotOptimize(ggx_microfacet_brdf(v, l, alpha, alpha) * fresnel_schlick(dot(v, h), 0.04, 1.0));
+    ++i;
+  }
+  state.SetItemsProcessed(state.iterations());
 }
 
-BENCHMARK(BM_MaterialEval)->Apply(args);
-BENCHMARK(BM_MaterialSample)->Apply(args);
+[[maybe_unused]] const bool registered = [] {
+  benchmark::RegisterBenchmark("BM_Eval/bare_ggx", bare_ggx);
+  for (int m = 0; m < kMaterials; ++m) {
+    const std::string name = kNames[m];
+    benchmark::RegisterBenchmark(("BM_Eval/" + name).c_str(), eval, m, true);
+    benchmark::RegisterBenchmark(("BM_Sample/" + name).c_str(), sample, m, true);
+  }
+  for (int m = 0; m < kMaterials; ++m) {
+    const std::string name = kNames[m];
+    benchmark::RegisterBenchmark(("BM_Eval/" + name + "/all_components").c_str(), eval, m, false);
+    benchmark::RegisterBenchmark(("BM_Sample/" + name + "/all_components").c_str(), sample, m, false);
+  }
+  return true;
+}();
 
 }  // namespace

@@ -7,9 +7,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "dspbr/bsdf/thin_film_optics.h"
 #include "dspbr/quadrature.h"
 
 namespace dspbr {
+
+using namespace thin_film_detail;
 
 namespace {
 
@@ -19,12 +22,14 @@ constexpr double kPi = 3.14159265358979323846;
 // Spectral range of the CIE 1931 tables (nm); the fitted CMFs are < 1e-3 outside it.
 constexpr double kLambdaMin = 360.0, kLambdaMax = 830.0;
 // Composite Gauss-Legendre with 6 nodes per panel. The panel width is chosen per call from a
-// ladder of precomputed rules (16, 8, 4, 2, 1 nm): the coarsest one on which the Airy phase turns
-// by at most kMaxPanelPhase rad per panel, where a 6-node rule is accurate to ~1e-9 (a legal film,
-// d <= 1 um and eta_film <= 2.5, needs at most 8 nm). Panel edges also sit on the kinks of the
-// piecewise-Gaussian CMF fit.
-constexpr double kPanelWidthsNm[] = {16.0, 8.0, 4.0, 2.0, 1.0};
-constexpr int kRuleLevels = 5;
+// ladder of precomputed rules (16, 8, ..., 1/64 nm): the coarsest one on which the Airy reflectance
+// is resolved, where a 6-node rule is accurate to ~1e-9. The Airy phase must turn by at most
+// kMaxPanelPhase times the width of its resonances, 1 - |r12 r23| (a legal film at moderate angles,
+// d <= 1 um and eta_film <= 2.5, needs at most 8 nm; grazing incidence needs the finer rules, and
+// beyond 1/64 nm accuracy degrades as |r12 r23| -> 1). Panel edges also sit on the kinks of the
+// piecewise-Gaussian CMF fit. The 1 nm rule serves the Fourier-space sensitivity.
+constexpr double kPanelWidthsNm[] = {16.0, 8.0, 4.0, 2.0, 1.0, 0.5, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
+constexpr int kRuleLevels = 11, kOneNmLevel = 4;
 constexpr double kMaxPanelPhase = 2.0;
 constexpr int kNodesPerPanel = 6;
 
@@ -37,11 +42,9 @@ cplx refracted_cos(double s2) { return std::sqrt(cplx(1.0 - s2, 0.0)); }
 cplx fresnel_rs(double ni, cplx ci, double nj, cplx cj) { return (ni * ci - nj * cj) / (ni * ci + nj * cj); }
 cplx fresnel_rp(double ni, cplx ci, double nj, cplx cj) { return (nj * ci - ni * cj) / (nj * ci + ni * cj); }
 
-// Everything of the Airy sum that does not depend on the wavelength (the film is not dispersive).
-struct FilmSetup {
-  cplx r12[2], r23[2];  // [s, p]
-  cplx phase_nm;        // Airy phase times lambda: 4 pi eta_film d cos(theta_film), d in nm
-};
+}  // namespace
+
+namespace thin_film_detail {
 
 FilmSetup film_setup(double c1, double eta_base, double thickness_um, double eta_film) {
   const double s2_1 = 1.0 - c1 * c1;
@@ -79,17 +82,15 @@ double airy_reflectance(const FilmSetup& f, double lambda_nm) {
   return std::clamp(0.5 * sum, 0.0, 1.0);
 }
 
+}  // namespace thin_film_detail
+
+namespace {
+
 // Half-Gaussian lobe of the WSS 2013 fit: exp(-((x - mu) / sigma)^2 / 2), sigma = s1 left of mu, s2 right.
 double wss_lobe(double x, double mu, double s1, double s2) {
   const double t = (x - mu) / (x < mu ? s1 : s2);
   return std::exp(-0.5 * t * t);
 }
-
-// The spectral quadrature: nodes and the weights w_i cmf(lambda_i) / Integral cmf for X, Y, Z.
-struct SpectralRule {
-  std::vector<double> lambda;
-  std::vector<Rgb> w_xyz;
-};
 
 SpectralRule make_spectral_rule(double max_panel_nm) {
   {
@@ -117,19 +118,37 @@ SpectralRule make_spectral_rule(double max_panel_nm) {
   }
 }
 
-// The coarsest rule resolving the Airy oscillation: |d phase / d lambda| = |phase_nm| / lambda^2 is
-// largest at the shortest wavelength.
-const SpectralRule& spectral_rule(double phase_nm_abs) {
+const std::vector<SpectralRule>& spectral_rules() {
   static const std::vector<SpectralRule> rules = [] {
     std::vector<SpectralRule> r;
     for (double w : kPanelWidthsNm) r.push_back(make_spectral_rule(w));
     return r;
   }();
+  return rules;
+}
+
+}  // namespace
+
+namespace thin_film_detail {
+
+// The coarsest rule resolving the Airy oscillation: |d phase / d lambda| = |phase_nm| / lambda^2 is
+// largest at the shortest wavelength.
+const SpectralRule& spectral_rule(double phase_nm_abs, double resonance_width) {
   const double rate = phase_nm_abs / (kLambdaMin * kLambdaMin);  // rad per nm
   for (int level = 0; level < kRuleLevels; ++level)
-    if (rate * kPanelWidthsNm[level] <= kMaxPanelPhase) return rules[level];
-  return rules[kRuleLevels - 1];  // films thicker than ~10 um optical path: accuracy degrades
+    if (rate * kPanelWidthsNm[level] <= kMaxPanelPhase * resonance_width) return spectral_rules()[level];
+  return spectral_rules()[kRuleLevels - 1];
 }
+
+const SpectralRule& one_nm_spectral_rule() { return spectral_rules()[kOneNmLevel]; }
+
+double resonance_width(const FilmSetup& f) {
+  return 1.0 - std::max(std::abs(f.r12[0] * f.r23[0]), std::abs(f.r12[1] * f.r23[1]));
+}
+
+}  // namespace thin_film_detail
+
+namespace {
 
 using Mat3 = std::array<std::array<double, 3>, 3>;
 Mat3 mul(const Mat3& a, const Mat3& b) {
@@ -232,15 +251,17 @@ double thin_film_reflectance_spectral(double cos_theta, double eta_base, double 
   return airy_reflectance(film_setup(c1, eta_base, thickness_um, eta_film), lambda_nm);
 }
 
-Rgb thin_film_reflectance_xyz(double cos_theta, double eta_base, double thickness_um, double eta_film) {
+Rgb thin_film_reflectance_xyz(double cos_theta, double eta_base, double thickness_um, double eta_film,
+                              ThinFilmIntegration how) {
   check_film_arguments(eta_base, thickness_um, eta_film);
   const double c1 = std::min(1.0, std::abs(cos_theta));
   if (std::isinf(eta_base)) return Rgb(1.0);
   if (thickness_um <= 0.0 || eta_film == 1.0) return Rgb(fresnel_dielectric_exact(c1, eta_base));
   if (c1 == 0.0) return Rgb(1.0);
-  const FilmSetup f = film_setup(c1, eta_base, thickness_um, eta_film);
-  const SpectralRule& rule = spectral_rule(std::abs(f.phase_nm.real()));
   Rgb xyz(0.0);
+  if (how == ThinFilmIntegration::Fourier && try_fourier_xyz(c1, eta_base, thickness_um, eta_film, xyz)) return xyz;
+  const FilmSetup f = film_setup(c1, eta_base, thickness_um, eta_film);
+  const SpectralRule& rule = spectral_rule(std::abs(f.phase_nm.real()), resonance_width(f));
   for (std::size_t i = 0; i < rule.lambda.size(); ++i) xyz += rule.w_xyz[i] * airy_reflectance(f, rule.lambda[i]);
   return xyz;
 }
@@ -250,13 +271,14 @@ Rgb thin_film_xyz_to_linear_srgb(const Rgb& xyz) {
   return apply(t.m, xyz) / t.white;
 }
 
-Rgb thin_film_reflectance(double cos_theta, double eta_base, double thickness_um, double eta_film) {
+Rgb thin_film_reflectance(double cos_theta, double eta_base, double thickness_um, double eta_film,
+                          ThinFilmIntegration how) {
   check_film_arguments(eta_base, thickness_um, eta_film);
   const double c1 = std::min(1.0, std::abs(cos_theta));
   // The film vanishes optically: the result is exactly the base Fresnel, grey.
   if (std::isinf(eta_base)) return Rgb(1.0);
   if (thickness_um <= 0.0 || eta_film == 1.0) return Rgb(fresnel_dielectric_exact(c1, eta_base));
-  const Rgb rgb = thin_film_xyz_to_linear_srgb(thin_film_reflectance_xyz(c1, eta_base, thickness_um, eta_film));
+  const Rgb rgb = thin_film_xyz_to_linear_srgb(thin_film_reflectance_xyz(c1, eta_base, thickness_um, eta_film, how));
   // Saturated interference colours fall outside the sRGB gamut (negative channels) and pure
   // spectral peaks can exceed 1 in one channel: clamp each channel to [0, 1] (as BB17 do).
   return {std::clamp(rgb.r, 0.0, 1.0), std::clamp(rgb.g, 0.0, 1.0), std::clamp(rgb.b, 0.0, 1.0)};

@@ -1,0 +1,169 @@
+// Thin-film reflectance integrated over the spectrum in Fourier space (Belcour & Barla 2017, BB17
+// sec. 4): the Airy reflectance is a Fourier series in the round-trip phase, and the spectral
+// integral of each term is the Fourier transform of the colour-matching functions at a multiple
+// of the optical path difference. Decisions and measured accuracy: docs/components.md.
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <vector>
+
+#include "dspbr/bsdf/thin_film.h"
+#include "dspbr/bsdf/thin_film_optics.h"
+#include "dspbr/lut/warped_table.h"
+
+namespace dspbr {
+
+using namespace thin_film_detail;
+
+namespace {
+
+// The sensitivity S_c(x) = Sum_i w_c,i exp(i x / lambda_i) of the normalized X, Y, Z weights of
+// the 1 nm spectral rule (S_c(0) = 1), tabulated as its envelope E_c(x) = S_c(x) exp(-i x nu_c)
+// (nu_c: the channel's mean wavenumber), which varies slowly, on x = k h. Catmull-Rom between the
+// samples; |S_c(x)| < kSensitivityFloor beyond the table. The kinks of the piecewise-Gaussian CMF
+// fit make S decay only like ~x^-3 (|S| ~ 1e-5 at x = 2e5 rad nm), hence the long table
+// (~6000 samples, built once in ~0.1 s).
+constexpr double kSensitivityStep = 64.0;     // rad nm: (phase times lambda) per table step
+constexpr double kSensitivityFloor = 2e-6;
+constexpr int kSensitivityMaxSamples = 1 << 14;
+
+struct Sensitivity {
+  double nu[3];                         // mean wavenumber of X, Y, Z (1/nm)
+  std::vector<double> env[3][2];        // envelope samples, real and imaginary, k = 0..n-1
+  double x_end;                         // S_c(x) treated as 0 for x >= x_end
+};
+
+const Sensitivity& sensitivity() {
+  static const Sensitivity s = [] {
+    const SpectralRule& rule = one_nm_spectral_rule();
+    const std::size_t n_nodes = rule.lambda.size();
+    Sensitivity t;
+    for (int c = 0; c < 3; ++c) {
+      double nu = 0;
+      for (std::size_t i = 0; i < n_nodes; ++i) nu += rule.w_xyz[i][c] / rule.lambda[i];
+      t.nu[c] = nu;
+    }
+    // exp(i k h (1/lambda_i - nu_c)) by a rotation per node and step; the recurrence's rounding
+    // grows like k * 1e-16, below 1e-11 over the table.
+    std::vector<std::complex<double>> rot[3], cur[3];
+    for (int c = 0; c < 3; ++c)
+      for (std::size_t i = 0; i < n_nodes; ++i) {
+        rot[c].push_back(std::polar(1.0, kSensitivityStep * (1.0 / rule.lambda[i] - t.nu[c])));
+        cur[c].push_back(1.0);
+      }
+    int last_significant = 0;
+    for (int k = 0; k < kSensitivityMaxSamples; ++k) {
+      double mag = 0;
+      for (int c = 0; c < 3; ++c) {
+        std::complex<double> e = 0;
+        for (std::size_t i = 0; i < n_nodes; ++i) {
+          e += rule.w_xyz[i][c] * cur[c][i];
+          cur[c][i] *= rot[c][i];
+        }
+        t.env[c][0].push_back(e.real());
+        t.env[c][1].push_back(e.imag());
+        mag = std::max(mag, std::abs(e));
+      }
+      if (mag >= kSensitivityFloor) last_significant = k;
+      if (k > last_significant + 4) break;  // four samples of margin for the Catmull-Rom support
+    }
+    t.x_end = (last_significant + 1) * kSensitivityStep;
+    return t;
+  }();
+  return s;
+}
+
+struct Complex {
+  double re, im;
+};
+
+// The envelope E_c(x) for x >= 0 below x_end, the three channels at once.
+void envelope_at(const Sensitivity& s, double x, Complex out[3]) {
+  const double g = x / kSensitivityStep;
+  const int k = int(g);
+  double w[4];
+  catmull_rom_weights(g - k, w);
+  for (int c = 0; c < 3; ++c) {
+    double re = 0, im = 0;
+    for (int j = 0; j < 4; ++j) {
+      // E_c(-x) = conj(E_c(x)): the ghost sample left of x = 0.
+      const int idx = k - 1 + j, a = std::abs(idx);
+      re += w[j] * s.env[c][0][a];
+      im += w[j] * (idx < 0 ? -s.env[c][1][a] : s.env[c][1][a]);
+    }
+    out[c] = {re, im};
+  }
+}
+
+// The series is summed until the remaining terms are below this bound (absolute, per channel).
+constexpr double kSeriesTolerance = 1e-7;
+// Beyond this many terms (|r12 r23| -> 1: grazing incidence on a strongly reflecting base) the
+// per-wavelength quadrature is used instead.
+constexpr int kMaxTerms = 64;
+
+}  // namespace
+
+namespace thin_film_detail {
+
+bool try_fourier_xyz(double c1, double eta_base, double thickness_um, double eta_film, Rgb& xyz) {
+  const FilmSetup f = film_setup(c1, eta_base, thickness_um, eta_film);
+  // The series needs a real round-trip phase and real air|film amplitudes, i.e. a propagating wave
+  // in the film (always the case for eta_film >= 1).
+  if (f.phase_nm.imag() != 0.0 || f.r12[0].imag() != 0.0 || f.r12[1].imag() != 0.0) return false;
+  const double P = f.phase_nm.real();
+  const Sensitivity& sens = sensitivity();
+  // Per polarization, with a = r12, r23 = b e^{i psi}, q = a b, theta = phi + psi:
+  // |r|^2 = (a^2 + b^2 + 2 q cos theta) / (1 + q^2 + 2 q cos theta)
+  //       = 1 - K (1 + 2 Sum_{m>=1} (-q)^m cos(m theta)),  K = (1 - a^2)(1 - b^2) / (1 - q^2)
+  // (Poisson kernel), and the spectral mean of cos(m theta) is Re(e^{i m psi} S_c(m P)).
+  double K[2], negq[2], psi_re[2], psi_im[2], tail[2];
+  for (int p = 0; p < 2; ++p) {
+    const double a = f.r12[p].real(), b = std::abs(f.r23[p]);
+    const double q = a * b;
+    K[p] = (1 - a * a) * (1 - b * b) / (1 - q * q);
+    negq[p] = -q;
+    psi_re[p] = b > 0 ? f.r23[p].real() / b : 1.0;
+    psi_im[p] = b > 0 ? f.r23[p].imag() / b : 0.0;
+    tail[p] = 2 * K[p] / (1 - std::abs(q));  // bound of the terms from m on, times |q|^m
+  }
+  // S_c(m P) = E_c(m P) z_c^m with z_c = e^{i P nu_c}.
+  double z_re[3], z_im[3], zm_re[3] = {1, 1, 1}, zm_im[3] = {0, 0, 0};
+  for (int c = 0; c < 3; ++c) {
+    z_re[c] = std::cos(P * sens.nu[c]);
+    z_im[c] = std::sin(P * sens.nu[c]);
+  }
+  double acc[2][3] = {{0, 0, 0}, {0, 0, 0}};
+  double qm[2] = {1, 1};                           // (-q)^m
+  double um_re[2] = {1, 1}, um_im[2] = {0, 0};     // e^{i m psi}
+  for (int m = 1;; ++m) {
+    const double x = m * P;
+    bool done = x >= sens.x_end;  // S_c = 0 from here on
+    if (!done) {
+      Complex S[3];
+      envelope_at(sens, x, S);
+      for (int c = 0; c < 3; ++c) {
+        const double r = zm_re[c] * z_re[c] - zm_im[c] * z_im[c];
+        zm_im[c] = zm_re[c] * z_im[c] + zm_im[c] * z_re[c];
+        zm_re[c] = r;
+        S[c] = {S[c].re * zm_re[c] - S[c].im * zm_im[c], S[c].re * zm_im[c] + S[c].im * zm_re[c]};
+      }
+      for (int p = 0; p < 2; ++p) {
+        qm[p] *= negq[p];
+        const double r = um_re[p] * psi_re[p] - um_im[p] * psi_im[p];
+        um_im[p] = um_re[p] * psi_im[p] + um_im[p] * psi_re[p];
+        um_re[p] = r;
+        for (int c = 0; c < 3; ++c) acc[p][c] += qm[p] * (um_re[p] * S[c].re - um_im[p] * S[c].im);
+      }
+      done = std::max(tail[0] * std::abs(qm[0] * negq[0]), tail[1] * std::abs(qm[1] * negq[1])) < kSeriesTolerance;
+    }
+    if (done) break;
+    if (m == kMaxTerms) return false;
+  }
+  auto channel = [&](int c) { return 1.0 - 0.5 * (K[0] * (1 + 2 * acc[0][c]) + K[1] * (1 + 2 * acc[1][c])); };
+  xyz = Rgb(channel(0), channel(1), channel(2));
+  return true;
+}
+
+}  // namespace thin_film_detail
+
+}  // namespace dspbr
