@@ -7,13 +7,14 @@
 
 namespace dspbr {
 
-DiffuseBase::DiffuseBase(const DiffuseParams& p, const LutSet& luts) : p_(p), luts_(luts) {
-  const double missing_avg = 1.0 - luts_.E_base_avg(p_.r_uv, p_.f0_max);
+DiffuseBase::DiffuseBase(const DiffuseParams& p, const LutSet& luts)
+    : p_(p), e_base_(AlbedoSlice::E_base(luts, p.r_uv, p.f0_max)) {
+  const double missing_avg = 1.0 - luts.E_base_avg(p_.r_uv, p_.f0_max);
   inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kBsdfPi * missing_avg) : 0.0;
 }
 
 double DiffuseBase::missing(double cos_theta) const {
-  return std::clamp(1.0 - luts_.E_base(std::abs(cos_theta), p_.r_uv, p_.f0_max), 0.0, 1.0);
+  return std::clamp(1.0 - e_base_(std::abs(cos_theta)), 0.0, 1.0);
 }
 
 Rgb DiffuseBase::eval(const Vec3& v, const Vec3& l) const {

@@ -9,7 +9,7 @@
 // Sampling: cosine-weighted, upper hemisphere with probability 1 - l, lower with probability l.
 #pragma once
 #include "dspbr/bsdf/lobe.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/lut/albedo_slice.h"
 
 namespace dspbr {
 
@@ -35,7 +35,7 @@ class DiffuseBase : public Lobe {
  private:
   double missing(double cos_theta) const;  // 1 - E(|cos|; r_uv, f0_max), clamped to [0, 1]
   DiffuseParams p_;
-  const LutSet& luts_;
+  AlbedoSlice e_base_;  // E(mu; r_uv, f0_max)
   double inv_norm_;  // 1 / (pi (1 - E_avg)); 0 when no energy is left for the base
 };
 

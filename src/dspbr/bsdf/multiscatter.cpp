@@ -7,13 +7,13 @@
 namespace dspbr {
 
 MultiScatterReflection::MultiScatterReflection(double r_uv, const Rgb& f_ms, const LutSet& luts)
-    : r_uv_(r_uv), f_ms_(f_ms), luts_(luts) {
-  const double missing_avg = luts_.missing_E_m_avg(r_uv_);
+    : f_ms_(f_ms), e_m_(AlbedoSlice::E_m(luts, r_uv)) {
+  const double missing_avg = luts.missing_E_m_avg(r_uv);
   inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kBsdfPi * missing_avg) : 0.0;
 }
 
 double MultiScatterReflection::missing(double cos_theta) const {
-  return std::clamp(1.0 - luts_.E_m(std::abs(cos_theta), r_uv_), 0.0, 1.0);
+  return std::clamp(1.0 - e_m_(std::abs(cos_theta)), 0.0, 1.0);
 }
 
 Rgb MultiScatterReflection::eval(const Vec3& v, const Vec3& l) const {

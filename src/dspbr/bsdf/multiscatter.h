@@ -5,7 +5,7 @@
 // Its directional albedo is (1 - E_m(v.n)) F_ms exactly (2 pi Integral (1 - E_m) mu dmu = pi (1 - E_m,avg)).
 #pragma once
 #include "dspbr/bsdf/lobe.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/lut/albedo_slice.h"
 
 namespace dspbr {
 
@@ -26,9 +26,8 @@ class MultiScatterReflection : public Lobe {
   double missing(double cos_theta) const;
 
  private:
-  double r_uv_;
   Rgb f_ms_;
-  const LutSet& luts_;
+  AlbedoSlice e_m_;  // E_m(mu; r_uv)
   double inv_norm_;  // 1 / (pi (1 - E_m,avg)), 0 in the mirror limit
 };
 

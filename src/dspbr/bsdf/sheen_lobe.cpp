@@ -11,7 +11,7 @@ SheenLobe::SheenLobe(const Rgb& color, double sheen_roughness, SheenModel model,
     : color_(color),
       alpha_b_(std::max(sheen_roughness * sheen_roughness, kMinAlphaB)),
       model_(model),
-      luts_(luts) {}
+      e_b_(AlbedoSlice::E_sheen(luts, alpha_b_, model == SheenModel::Ash)) {}
 
 Rgb SheenLobe::eval(const Vec3& v, const Vec3& l) const {
   if (v.z <= 0 || l.z <= 0) return Rgb(0);
@@ -30,8 +30,7 @@ BsdfSample SheenLobe::sample(const Vec3& v, const Vec3& u) const {
 
 double SheenLobe::albedo(double cos_theta) const {
   const double c = std::abs(cos_theta);
-  const double e = model_ == SheenModel::Main ? luts_.E_sheen(c, alpha_b_) : luts_.E_sheen_ash(c, alpha_b_);
-  return std::clamp(e, 0.0, 1.0);
+  return std::clamp(e_b_(c), 0.0, 1.0);
 }
 
 double SheenLobe::layer_scale(double cos_v, double cos_l) const {

@@ -7,7 +7,7 @@
 #pragma once
 #include "dspbr/bsdf/lobe.h"
 #include "dspbr/lut/albedo.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/lut/albedo_slice.h"
 
 namespace dspbr {
 
@@ -31,7 +31,7 @@ class SheenLobe : public Lobe {
   Rgb color_;
   double alpha_b_;
   SheenModel model_;
-  const LutSet& luts_;
+  AlbedoSlice e_b_;  // E_b(mu; alpha_b) of the model
 };
 
 }  // namespace dspbr

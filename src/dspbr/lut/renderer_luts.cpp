@@ -76,13 +76,17 @@ double RendererLuts::E_m(double cos_theta, double roughness) const {
 }
 
 double RendererLuts::B(double cos_theta, double roughness) const {
+  return beta(cos_theta, roughness) * E_m(cos_theta, roughness);
+}
+
+double RendererLuts::beta(double cos_theta, double roughness) const {
   const double r = std::clamp(roughness, 0.0, 1.0);
   const double mu = std::clamp(cos_theta, 0.0, 1.0);
   // stored: beta - (1 - mu)^5 (zero for the mirror, so the r = 0 row of the ggx_cos grid holds it)
-  const double beta = std::pow(1.0 - mu, 5) + ggx_beta.lookup_grid(ggx_beta.axes[0].warp.to_grid(r),
-                                                                    ggx_beta.axes[1].warp.to_grid(mu, r * r));
-  return beta * E_m(mu, r);
+  return decode_beta(mu, ggx_beta.lookup_grid(ggx_beta.axes[0].warp.to_grid(r), ggx_beta.axes[1].warp.to_grid(mu, r * r)));
 }
+
+double RendererLuts::base_fresnel_ms(double f0, double e_m_avg) { return fresnel_ms(f0, 1.0, e_m_avg); }
 
 double RendererLuts::missing_E_m_avg(double roughness) const {
   // Stored: ln(1 - E_m,avg); the decoded 1 - E_m,avg keeps its relative precision as it vanishes.
@@ -96,9 +100,8 @@ double RendererLuts::B_avg(double roughness) const {
 }
 
 double RendererLuts::E_base(double cos_theta, double roughness, double f0) const {
-  const double e = E_m(cos_theta, roughness), b = B(cos_theta, roughness);
-  // spec "Energy Preservation": E = f0 A + (1 - f0) B + F_ms(f0, 1; E_m,avg) (1 - A)
-  return f0 * e + (1.0 - f0) * b + fresnel_ms(f0, 1.0, E_m_avg(roughness)) * (1.0 - e);
+  const double mu = std::clamp(cos_theta, 0.0, 1.0);
+  return compose_E_base(f0, E_m(mu, roughness), beta(mu, roughness), base_fresnel_ms(f0, E_m_avg(roughness)));
 }
 
 double RendererLuts::E_base_avg(double roughness, double f0) const {

@@ -24,6 +24,7 @@
 // < 1e-10 there); sheen alpha_b below 1/256 evaluates at 1/256 and cos below 1e-3 at 1e-3 (the
 // spec's Lambda fit makes the main sheen's albedo diverge like 1/mu at grazing).
 #pragma once
+#include <cmath>
 #include <vector>
 
 #include "dspbr/lut/warped_table.h"
@@ -41,13 +42,24 @@ struct RendererLuts {
 
   // Lookups (arguments: cos theta first, roughness r, alpha_b = r_b^2, f0).
   double E_m(double cos_theta, double roughness) const;
-  double B(double cos_theta, double roughness) const;  // Schlick moment = beta E_m
+  double B(double cos_theta, double roughness) const;     // Schlick moment = beta E_m
+  double beta(double cos_theta, double roughness) const;  // B / E_m
   double E_m_avg(double roughness) const;
   double missing_E_m_avg(double roughness) const;  // 1 - E_m,avg, without cancellation
   double B_avg(double roughness) const;
   double E_base(double cos_theta, double roughness, double f0) const;
   double E_base_avg(double roughness, double f0) const;
   double E_sheen(double cos_theta, double alpha_b) const;
+
+  // The pieces of the Base_E composition (shared with AlbedoSlice):
+  // beta from its stored value, beta = (1 - mu)^5 + stored;
+  static double decode_beta(double mu, double stored) { return std::pow(1.0 - mu, 5) + stored; }
+  // F_ms(f0, 1; E_m,avg), the base's multiple-scattering Fresnel;
+  static double base_fresnel_ms(double f0, double e_m_avg);
+  // E = f0 E_m + (1 - f0) B + F_ms (1 - E_m), B = beta E_m (spec "Energy Preservation").
+  static double compose_E_base(double f0, double e_m, double beta, double f_ms) {
+    return f0 * e_m + (1.0 - f0) * (beta * e_m) + f_ms * (1.0 - e_m);
+  }
   double E_sheen_ash(double cos_theta, double alpha_b) const;
 };
 

@@ -40,7 +40,7 @@ size_t Table::offset(const std::vector<int>& idx) const {
 
 double Table::lookup(const std::vector<double>& x) const {
   const size_t rank = axes.size();
-  if (x.size() != rank) throw std::invalid_argument("Table::lookup: wrong coordinate rank for " + name);
+  if (x.size() != rank || rank > 3) throw std::invalid_argument("Table::lookup: wrong coordinate rank for " + name);
   int i0[3] = {0, 0, 0};
   double f[3] = {0, 0, 0};
   for (size_t d = 0; d < rank; ++d) {
@@ -52,13 +52,13 @@ double Table::lookup(const std::vector<double>& x) const {
   double result = 0;
   for (int corner = 0; corner < (1 << rank); ++corner) {
     double w = 1;
-    std::vector<int> idx(rank);
+    size_t o = 0;
     for (size_t d = 0; d < rank; ++d) {
       const int bit = (corner >> d) & 1;
       w *= bit ? f[d] : 1.0 - f[d];
-      idx[d] = std::min(i0[d] + bit, axes[d].size - 1);
+      o = o * size_t(axes[d].size) + size_t(std::min(i0[d] + bit, axes[d].size - 1));
     }
-    if (w != 0) result += w * at(idx);
+    if (w != 0) result += w * values[o];
   }
   return result;
 }

@@ -116,6 +116,19 @@ double WarpedTable::interpolate(double x0, double x1) const {
   return s;
 }
 
+WarpedTable WarpedTable::slice(double x0) const {
+  if (axes.size() != 2) throw std::invalid_argument("WarpedTable::slice: needs a 2-D table (" + name + ")");
+  WarpedTable s;
+  s.name = name;
+  s.axes = {axes[1]};
+  s.encoding = encoding;
+  const int n1 = axes[1].size;
+  // At the fast axis' samples x1 = k / (n1 - 1) the Catmull-Rom weights are (0, 1, 0, 0) exactly,
+  // so each value is the slow-axis interpolation of one column.
+  for (int k = 0; k < n1; ++k) s.values.push_back(interpolate(x0, double(k) / (n1 - 1)));
+  return s;
+}
+
 double WarpedTable::lookup_grid(double x0, double x1) const {
   const double s = interpolate(x0, x1);
   return encoding == Encoding::LogOneMinus ? 1.0 - std::exp(s) : s;

@@ -56,6 +56,10 @@ struct WarpedTable {
   double interpolate(double x0, double x1 = 0) const;
   // Decoded value at grid coordinates.
   double lookup_grid(double x0, double x1 = 0) const;
+  // A 2-D table at fixed slow-axis grid coordinate x0, as the 1-D table over its fast axis whose
+  // lookups equal lookup_grid(x0, x1) to rounding (the slow axis is interpolated first). Errors
+  // are not carried over.
+  WarpedTable slice(double x0) const;
 };
 
 // Catmull-Rom weights of the four samples around fractional position f in [0, 1].

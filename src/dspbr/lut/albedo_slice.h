@@ -1,0 +1,34 @@
+// A table's dependence on cos theta at one fixed roughness (and f0, or alpha_b): what a lobe reads
+// per evaluation, cut out of a LutSet once when the lobe is built, so that an evaluation does a
+// 1-D lookup instead of a 2-D or 3-D one. Equal to the LutSet lookup to rounding (the same
+// interpolant: multilinear for the published layout, Catmull-Rom per axis for the renderer
+// layout; interpolation across the fixed axes is done first). Owns its samples.
+#pragma once
+#include "dspbr/lut/lut_set.h"
+
+namespace dspbr {
+
+class AlbedoSlice {
+ public:
+  AlbedoSlice() = default;
+  // E_m(mu; r) (GGX_E).
+  static AlbedoSlice E_m(const LutSet& luts, double roughness);
+  // E(mu; r, f0) of the opaque dielectric base (Base_E; renderer layout: from GGX_E and GGX_beta).
+  static AlbedoSlice E_base(const LutSet& luts, double roughness, double f0);
+  // E_b(mu; alpha_b) of the main (Sheen_E) or the alternative (Sheen_ash_E) sheen.
+  static AlbedoSlice E_sheen(const LutSet& luts, double alpha_b, bool alternative);
+
+  double operator()(double cos_theta) const;
+
+ private:
+  enum class Kind { Published, Renderer, RendererBase };
+  Kind kind_ = Kind::Published;
+  Table published_;    // 1-D over cos theta
+  WarpedTable table_;  // 1-D over cos theta: E_m, E_b
+  WarpedTable beta_;   // 1-D over cos theta: GGX_beta (RendererBase)
+  double alpha_ = 0;   // GgxCos warp parameter r^2
+  bool shared_warp_ = false;  // RendererBase: GGX_E and GGX_beta have the same cos theta warp
+  double f0_ = 0, f_ms_ = 0;  // RendererBase: f0 and F_ms(f0, 1; E_m,avg)
+};
+
+}  // namespace dspbr
