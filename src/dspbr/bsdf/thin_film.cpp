@@ -27,9 +27,9 @@ constexpr double kLambdaMin = 360.0, kLambdaMax = 830.0;
 // kMaxPanelPhase times the width of its resonances, 1 - |r12 r23| (a legal film at moderate angles,
 // d <= 1 um and eta_film <= 2.5, needs at most 8 nm; grazing incidence needs the finer rules, and
 // beyond 1/64 nm accuracy degrades as |r12 r23| -> 1). Panel edges also sit on the kinks of the
-// piecewise-Gaussian CMF fit. The 1 nm rule serves the Fourier-space sensitivity.
+// piecewise-Gaussian CMF fit. The Fourier-space sensitivity uses the 2 nm rule.
 constexpr double kPanelWidthsNm[] = {16.0, 8.0, 4.0, 2.0, 1.0, 0.5, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
-constexpr int kRuleLevels = 11, kOneNmLevel = 4;
+constexpr int kRuleLevels = 11;
 constexpr double kMaxPanelPhase = 2.0;
 constexpr int kNodesPerPanel = 6;
 
@@ -140,7 +140,11 @@ const SpectralRule& spectral_rule(double phase_nm_abs, double resonance_width) {
   return spectral_rules()[kRuleLevels - 1];
 }
 
-const SpectralRule& one_nm_spectral_rule() { return spectral_rules()[kOneNmLevel]; }
+const SpectralRule& spectral_rule_of_width(double panel_nm) {
+  for (int level = 0; level < kRuleLevels; ++level)
+    if (kPanelWidthsNm[level] <= panel_nm) return spectral_rules()[level];
+  return spectral_rules()[kRuleLevels - 1];
+}
 
 double resonance_width(const FilmSetup& f) {
   return 1.0 - std::max(std::abs(f.r12[0] * f.r23[0]), std::abs(f.r12[1] * f.r23[1]));

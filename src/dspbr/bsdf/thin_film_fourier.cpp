@@ -18,14 +18,18 @@ using namespace thin_film_detail;
 namespace {
 
 // The sensitivity S_c(x) = Sum_i w_c,i exp(i x / lambda_i) of the normalized X, Y, Z weights of
-// the 1 nm spectral rule (S_c(0) = 1), tabulated as its envelope E_c(x) = S_c(x) exp(-i x nu_c)
+// the 2 nm spectral rule (S_c(0) = 1), tabulated as its envelope E_c(x) = S_c(x) exp(-i x nu_c)
 // (nu_c: the channel's mean wavenumber), which varies slowly, on x = k h. Catmull-Rom between the
 // samples; |S_c(x)| < kSensitivityFloor beyond the table. The kinks of the piecewise-Gaussian CMF
 // fit make S decay only like ~x^-3 (|S| ~ 1e-5 at x = 2e5 rad nm), hence the long table
-// (~6000 samples, built once in ~0.1 s).
-constexpr double kSensitivityStep = 64.0;     // rad nm: (phase times lambda) per table step
+// (~12500 samples per channel, built once on first use; with 64 rad nm steps the interpolation
+// error reached 1e-4 in X).
+constexpr double kSensitivityStep = 32.0;     // rad nm: (phase times lambda) per table step
 constexpr double kSensitivityFloor = 2e-6;
-constexpr int kSensitivityMaxSamples = 1 << 14;
+constexpr double kSensitivityMaxX = 4e5;       // |S_c| < 4e-6 beyond (all three channels)
+// The sensitivity from 6-node panels of 2 nm: 1 nm panels give the same FourierMatchesQuadrature
+// figures (tests/test_thin_film.cpp).
+constexpr double kSensitivityPanelNm = 2.0;
 
 struct Sensitivity {
   double nu[3];                         // mean wavenumber of X, Y, Z (1/nm)
@@ -35,7 +39,7 @@ struct Sensitivity {
 
 const Sensitivity& sensitivity() {
   static const Sensitivity s = [] {
-    const SpectralRule& rule = one_nm_spectral_rule();
+    const SpectralRule& rule = spectral_rule_of_width(kSensitivityPanelNm);
     const std::size_t n_nodes = rule.lambda.size();
     Sensitivity t;
     for (int c = 0; c < 3; ++c) {
@@ -43,30 +47,40 @@ const Sensitivity& sensitivity() {
       for (std::size_t i = 0; i < n_nodes; ++i) nu += rule.w_xyz[i][c] / rule.lambda[i];
       t.nu[c] = nu;
     }
-    // exp(i k h (1/lambda_i - nu_c)) by a rotation per node and step; the recurrence's rounding
-    // grows like k * 1e-16, below 1e-11 over the table.
-    std::vector<std::complex<double>> rot[3], cur[3];
-    for (int c = 0; c < 3; ++c)
-      for (std::size_t i = 0; i < n_nodes; ++i) {
-        rot[c].push_back(std::polar(1.0, kSensitivityStep * (1.0 / rule.lambda[i] - t.nu[c])));
-        cur[c].push_back(1.0);
-      }
+    // S_c(k h) = Sum_i w_c,i z_i^k with z_i = exp(i h / lambda_i) advanced by one rotation per
+    // node and step (rounding grows like k * 1e-16, below 1e-12 over the table), then
+    // demodulated by exp(-i k h nu_c). Complex arithmetic written out (see airy_reflectance).
+    std::vector<double> rot_re(n_nodes), rot_im(n_nodes), cur_re(n_nodes, 1.0), cur_im(n_nodes, 0.0);
+    for (std::size_t i = 0; i < n_nodes; ++i) {
+      rot_re[i] = std::cos(kSensitivityStep / rule.lambda[i]);
+      rot_im[i] = std::sin(kSensitivityStep / rule.lambda[i]);
+    }
     int last_significant = 0;
-    for (int k = 0; k < kSensitivityMaxSamples; ++k) {
+    const int n_samples = int(kSensitivityMaxX / kSensitivityStep) + 1;
+    for (int k = 0; k < n_samples; ++k) {
+      double sr[3] = {0, 0, 0}, si[3] = {0, 0, 0};
+      for (std::size_t i = 0; i < n_nodes; ++i) {
+        const Rgb& w = rule.w_xyz[i];
+        sr[0] += w.r * cur_re[i], si[0] += w.r * cur_im[i];
+        sr[1] += w.g * cur_re[i], si[1] += w.g * cur_im[i];
+        sr[2] += w.b * cur_re[i], si[2] += w.b * cur_im[i];
+        const double re = cur_re[i] * rot_re[i] - cur_im[i] * rot_im[i];
+        cur_im[i] = cur_re[i] * rot_im[i] + cur_im[i] * rot_re[i];
+        cur_re[i] = re;
+      }
       double mag = 0;
       for (int c = 0; c < 3; ++c) {
-        std::complex<double> e = 0;
-        for (std::size_t i = 0; i < n_nodes; ++i) {
-          e += rule.w_xyz[i][c] * cur[c][i];
-          cur[c][i] *= rot[c][i];
-        }
-        t.env[c][0].push_back(e.real());
-        t.env[c][1].push_back(e.imag());
-        mag = std::max(mag, std::abs(e));
+        const double phase = -k * kSensitivityStep * t.nu[c];
+        const double dr = std::cos(phase), di = std::sin(phase);
+        t.env[c][0].push_back(sr[c] * dr - si[c] * di);
+        t.env[c][1].push_back(sr[c] * di + si[c] * dr);
+        mag = std::max(mag, std::hypot(sr[c], si[c]));
       }
       if (mag >= kSensitivityFloor) last_significant = k;
-      if (k > last_significant + 4) break;  // four samples of margin for the Catmull-Rom support
     }
+    // Trimmed after the last significant sample, with margin for the Catmull-Rom support.
+    for (int c = 0; c < 3; ++c)
+      for (auto& part : t.env[c]) part.resize(std::min<std::size_t>(part.size(), last_significant + 4));
     t.x_end = (last_significant + 1) * kSensitivityStep;
     return t;
   }();

@@ -33,8 +33,8 @@ double resonance_width(const FilmSetup& f);
 // The coarsest precomputed rule on which the Airy reflectance is resolved: the phase
 // |phase_nm| / lambda turns by at most 2 resonance widths per 6-node panel.
 const SpectralRule& spectral_rule(double phase_nm_abs, double resonance_width);
-// The rule of 1 nm panels (6 nodes each).
-const SpectralRule& one_nm_spectral_rule();
+// The coarsest precomputed rule whose panels are at most panel_nm wide.
+const SpectralRule& spectral_rule_of_width(double panel_nm);
 
 // The spectral integral in Fourier space (BB17 sec. 4) for c1 in (0, 1], a finite base and a film
 // of positive thickness and eta_film != 1. False (xyz untouched) where the series does not apply or
