@@ -58,14 +58,6 @@ size_t WarpedTable::size() const {
   return n;
 }
 
-void catmull_rom_weights(double f, double w[4]) {
-  const double f2 = f * f, f3 = f2 * f;
-  w[0] = 0.5 * (-f3 + 2.0 * f2 - f);
-  w[1] = 0.5 * (3.0 * f3 - 5.0 * f2 + 2.0);
-  w[2] = 0.5 * (-3.0 * f3 + 4.0 * f2 + f);
-  w[3] = 0.5 * (f3 - f2);
-}
-
 namespace {
 
 // Cell index i in [0, n - 2] and fraction f of grid coordinate x.

@@ -63,6 +63,12 @@ struct WarpedTable {
 };
 
 // Catmull-Rom weights of the four samples around fractional position f in [0, 1].
-void catmull_rom_weights(double f, double w[4]);
+inline void catmull_rom_weights(double f, double w[4]) {
+  const double f2 = f * f, f3 = f2 * f;
+  w[0] = 0.5 * (-f3 + 2.0 * f2 - f);
+  w[1] = 0.5 * (3.0 * f3 - 5.0 * f2 + 2.0);
+  w[2] = 0.5 * (-3.0 * f3 + 4.0 * f2 + f);
+  w[3] = 0.5 * (f3 - f2);
+}
 
 }  // namespace dspbr
