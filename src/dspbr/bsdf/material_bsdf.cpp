@@ -18,7 +18,7 @@
 #include "dspbr/bsdf/volumetric_transmission.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
-#include "dspbr/scene/components.h"
+#include "dspbr/component.h"
 
 namespace dspbr {
 

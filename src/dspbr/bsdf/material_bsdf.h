@@ -43,7 +43,7 @@ struct BsdfOptions {
 
 class MaterialBsdf : public Bsdf {
  public:
-  // mask: the components to include (scene/components.h); a cleared bit removes that component's
+  // mask: the components to include (dspbr/component.h); a cleared bit removes that component's
   // terms and its layering factor. Default: active_components(m).
   explicit MaterialBsdf(const Material& m, const LutSet& luts = LutSet::builtin(), const BsdfOptions& opt = {});
   MaterialBsdf(const Material& m, const LutSet& luts, const BsdfOptions& opt, uint32_t mask);
