@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "interrupt_cleanup.h"
 #include "dspbr/io/atomic_file.h"
 #include "dspbr/lut/generate.h"
 #include "dspbr/lut/lookup_codegen.h"
@@ -206,6 +207,7 @@ void run_generate(const LutArgs& a) {
     else throw UsageError("--layout: unknown layout '" + l + "' (choose from published, renderer)");
   }
   if (a.renderer_scale < 1 || a.renderer_scale > 16) throw UsageError("--renderer-scale must be in [1, 16]");
+  const InterruptCleanup cleanup(a.out);  // SIGINT/SIGTERM from here on: remove what the run created
   prepare_output_folder(a.out);
   if (renderer) run_renderer(a, opt, formats);
   if (!published) return;
