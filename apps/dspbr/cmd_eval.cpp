@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "provenance.h"
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/material_params.h"
 #include "dspbr/params/material_instance.h"
@@ -194,6 +195,15 @@ void add_common_options(CLI::App* cmd, EvalArgs& a) {
                   "Comma-separated components to include (default: the material's active ones)");
 }
 
+// The version, the command line and the settings the result depends on besides the material.
+Json provenance(const EvalArgs& a) {
+  Json p = output_provenance();
+  p["settings"] = {{"tables", a.tables},           {"sheen", a.sheen}, {"position", a.position},
+                   {"object_normal", a.object_normal}, {"wavelength_nm", a.wavelength}, {"area_m2", a.area},
+                   {"components", a.components.empty() ? "active" : a.components}};
+  return p;
+}
+
 // Fields shared by eval and sample.
 Json header(const MaterialBsdf& b, const Vec3& v) {
   Json out;
@@ -223,6 +233,7 @@ void add_eval_commands(CLI::App& app) {
     const MaterialBsdf b(m, table_set(a), build_options(a), parse_components(a, m));
     Json out;
     out["f"] = rgb_json(b.eval(v, l));
+    out["provenance"] = provenance(a);
     out["pdf"] = b.pdf(v, l);
     out["cos_light"] = std::abs(l.z);
     out["light"] = vec_json(l);
@@ -247,6 +258,7 @@ void add_eval_commands(CLI::App& app) {
     const BsdfSample s = b.sample(v, {u[0], u[1], u[2]});
     Json out;
     out["valid"] = s.valid;
+    out["provenance"] = provenance(a);
     if (s.valid) {
       out["l"] = vec_json(s.l);
       out["weight"] = rgb_json(s.weight);

@@ -14,6 +14,7 @@
 
 #include "commands.h"
 #include "interrupt_cleanup.h"
+#include "provenance.h"
 #include "dspbr/io/atomic_file.h"
 #include "dspbr/lut/generate.h"
 #include "dspbr/lut/lookup_codegen.h"
@@ -118,6 +119,7 @@ LutOptions to_options(const LutArgs& a) {
   opt.randomizations = a.randomizations;
   opt.seed = a.seed;
   opt.threads = a.threads;
+  opt.command = reproducible_command();
   try {
     validate_lut_options(opt);
   } catch (const std::invalid_argument& e) {

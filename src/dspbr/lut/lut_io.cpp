@@ -17,6 +17,7 @@
 #include "dspbr/io/read_file.h"
 #include "dspbr/limits.h"
 #include "dspbr/lut/table_image.h"
+#include "dspbr/version.h"
 
 namespace dspbr {
 
@@ -214,6 +215,7 @@ std::string lut_json_text(const std::vector<Table>& tables, const LutOptions& op
   j["version"] = 1;
   j["model"] = "DSPBR 2025x";
   j["generator"] = "dspbr lut";
+  if (!opt.command.empty()) j["dspbr_version"] = project_version(), j["command"] = opt.command;
   j["grid"] = grid_kind_name(opt.grid);
   j["seed"] = opt.seed;
   j["notes"] = "values: directional/average albedos (docs/luts.md); errors: per-cell standard error (1 sigma)";
@@ -285,6 +287,7 @@ std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::strin
         a.size = int(jf::integer_member(axes[d], "size", at, a.kind == GridKind::Endpoint ? 2 : 1, limits::kTableAxisSize));
         a.lo = jf::number_member(axes[d], "lo", at);
         a.hi = jf::number_member(axes[d], "hi", at);
+        if (!(a.lo < a.hi)) throw std::runtime_error(at + ": lo must be below hi");
         cells *= size_t(a.size);
         if (cells > limits::kTableCells)
           throw std::runtime_error(where + ": more than " + std::to_string(limits::kTableCells) + " cells");

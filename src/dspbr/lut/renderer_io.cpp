@@ -16,6 +16,7 @@
 #include "dspbr/limits.h"
 #include "dspbr/lut/lut_io.h"
 #include "dspbr/lut/table_image.h"
+#include "dspbr/version.h"
 
 namespace dspbr {
 
@@ -57,6 +58,7 @@ std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, 
   j["version"] = 1;
   j["model"] = "DSPBR 2025x";
   j["generator"] = "dspbr lut";
+  if (!opt.command.empty()) j["dspbr_version"] = project_version(), j["command"] = opt.command;
   j["layout"] = "renderer";
   j["scale"] = scale;
   j["stored_values"] = luts.stored_values();
