@@ -66,5 +66,6 @@ function(dspbr_version_source output)
 #include \"dspbr/version.h\"
 
 const char* dspbr::version_string() { return \"@version@\"; }
+const char* dspbr::project_version() { return \"@PROJECT_VERSION@\"; }
 ")
 endfunction()

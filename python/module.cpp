@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "dspbr/bsdf/material_bsdf.h"
+#include "dspbr/limits.h"
 #include "dspbr/lut/generate.h"
 #include "dspbr/lut/lut_io.h"
 #include "dspbr/lut/lut_set.h"
@@ -36,13 +37,16 @@ namespace dspbr::python {
 
 namespace {
 
-constexpr int kMaxThreads = 1024;  // as the CLI's --threads
+constexpr int kMaxThreads = limits::kThreads;  // as the CLI's --threads
 
 [[noreturn]] void fail(const std::string& message) { throw py::value_error(message); }
 
 // Python value -> JSON (numbers, bools, strings, sequences, numpy arrays, dicts; +inf as
-// {"infinity": true}, the parameter files' spelling).
-Json to_json(const py::handle& obj, const std::string& what) {
+// {"infinity": true}, the parameter files' spelling); nested at most limits::kJsonDepth deep, as
+// JSON files.
+Json to_json(const py::handle& obj, const std::string& what, int depth = 0) {
+  if (depth > limits::kJsonDepth)
+    fail(what + ": nested deeper than " + std::to_string(limits::kJsonDepth) + " levels");
   if (obj.is_none()) return nullptr;
   if (py::isinstance<py::bool_>(obj)) return obj.cast<bool>();
   if (py::isinstance<py::int_>(obj)) return obj.cast<long long>();
@@ -52,18 +56,18 @@ Json to_json(const py::handle& obj, const std::string& what) {
     return x;
   }
   if (py::isinstance<py::str>(obj)) return obj.cast<std::string>();
-  if (py::hasattr(obj, "tolist") && !py::isinstance<py::list>(obj)) return to_json(obj.attr("tolist")(), what);
+  if (py::hasattr(obj, "tolist") && !py::isinstance<py::list>(obj)) return to_json(obj.attr("tolist")(), what, depth);
   if (py::isinstance<py::dict>(obj)) {
     Json out = Json::object();
     for (const auto& [k, v] : obj.cast<py::dict>()) {
       if (!py::isinstance<py::str>(k)) fail(what + ": keys must be strings, got " + py::repr(k).cast<std::string>());
-      out[k.cast<std::string>()] = to_json(v, what);
+      out[k.cast<std::string>()] = to_json(v, what, depth + 1);
     }
     return out;
   }
   if (py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj)) {
     Json out = Json::array();
-    for (const auto& v : obj) out.push_back(to_json(v, what));
+    for (const auto& v : obj) out.push_back(to_json(v, what, depth + 1));
     return out;
   }
   fail(what + ": unsupported value " + py::repr(obj).cast<std::string>());

@@ -9,7 +9,8 @@ PKGS=(build-essential cmake pkg-config
       nlohmann-json3-dev libcli11-dev libfmt-dev
       libboost-dev glslang-tools libglm-dev
       python3-numpy python3-matplotlib python3-jinja2 python3-openimageio
-      python3-dev pybind11-dev python3-pybind11 python3-pytest)
+      python3-dev pybind11-dev python3-pybind11 python3-pytest
+      clang libclang-rt-14-dev)  # libFuzzer + sanitizers (fuzz/, CTest fuzz_short)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -5,8 +5,10 @@
 // normalized here. The material starts from the generic defaults (or the instance file, any
 // material type of params-2025x.json), then --set values apply in order, then validate_material.
 // Conventions of f, pdf and weight: docs/bsdf.md.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "provenance.h"
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/material_params.h"
 #include "dspbr/params/material_instance.h"
@@ -53,25 +56,50 @@ std::vector<double> parse_numbers(const std::string& option, const std::string& 
   std::stringstream ss(text);
   std::string item;
   while (std::getline(ss, item, ',')) {
-    try {
-      size_t used = 0;
-      const double x = std::stod(item, &used);
-      if (used != item.size() || !std::isfinite(x)) throw std::invalid_argument("");
-      out.push_back(x);
-    } catch (const std::exception&) {
+    // std::strtod, not std::stod: a subnormal such as 1e-320 is a number (stod throws on its ERANGE).
+    char* end = nullptr;
+    const double x = item.empty() ? 0 : std::strtod(item.c_str(), &end);
+    if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(x))
       throw UsageError(option + " expects " + std::to_string(count) + " comma-separated finite numbers, got '" + text + "'");
-    }
+    out.push_back(x);
   }
   if (out.size() != count)
     throw UsageError(option + " expects " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
   return out;
 }
 
+// The unit vector along x,y,z. Scaled by its largest component first, so that finite vectors
+// whose squared length overflows (1e308,1e308,1e308) or underflows (1e-320,0,0) keep their
+// direction.
 Vec3 parse_direction(const std::string& option, const std::string& text) {
   const auto x = parse_numbers(option, text, 3);
-  const Vec3 v{x[0], x[1], x[2]};
-  if (!(length(v) > 0)) throw UsageError(option + " must be a non-zero vector, got '" + text + "'");
-  return normalize(v);
+  const double scale = std::max({std::abs(x[0]), std::abs(x[1]), std::abs(x[2])});
+  if (!(scale > 0)) throw UsageError(option + " must be a non-zero vector, got '" + text + "'");
+  const Vec3 d = normalize(Vec3{x[0] / scale, x[1] / scale, x[2] / scale});
+  if (!(std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z)))
+    throw UsageError(option + " must be a finite non-zero vector, got '" + text + "'");
+  return d;
+}
+
+// Path of the first number of `j` that is not finite (JSON would print it as null), "" if none.
+std::string non_finite_path(const Json& j, const std::string& path) {
+  if (j.is_number_float()) return std::isfinite(j.get<double>()) ? "" : path;
+  if (j.is_object()) {
+    for (const auto& [key, v] : j.items())
+      if (const std::string p = non_finite_path(v, path.empty() ? key : path + "." + key); !p.empty()) return p;
+  } else if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i)
+      if (const std::string p = non_finite_path(j[i], path + "[" + std::to_string(i) + "]"); !p.empty()) return p;
+  }
+  return "";
+}
+
+// Prints the result; a value that overflows double precision (e.g. emission of a luminance near
+// 1e308 times a colour above 1) is an error, never a null in the output.
+void print_result(const Json& out) {
+  if (const std::string p = non_finite_path(out, ""); !p.empty())
+    throw UsageError("the result \"" + p + "\" is not finite: the material values are too large to evaluate in double precision");
+  std::cout << out.dump(2) << "\n";
 }
 
 Material build_material(const EvalArgs& a) {
@@ -167,6 +195,15 @@ void add_common_options(CLI::App* cmd, EvalArgs& a) {
                   "Comma-separated components to include (default: the material's active ones)");
 }
 
+// The version, the command line and the settings the result depends on besides the material.
+Json provenance(const EvalArgs& a) {
+  Json p = output_provenance();
+  p["settings"] = {{"tables", a.tables},           {"sheen", a.sheen}, {"position", a.position},
+                   {"object_normal", a.object_normal}, {"wavelength_nm", a.wavelength}, {"area_m2", a.area},
+                   {"components", a.components.empty() ? "active" : a.components}};
+  return p;
+}
+
 // Fields shared by eval and sample.
 Json header(const MaterialBsdf& b, const Vec3& v) {
   Json out;
@@ -196,11 +233,12 @@ void add_eval_commands(CLI::App& app) {
     const MaterialBsdf b(m, table_set(a), build_options(a), parse_components(a, m));
     Json out;
     out["f"] = rgb_json(b.eval(v, l));
+    out["provenance"] = provenance(a);
     out["pdf"] = b.pdf(v, l);
     out["cos_light"] = std::abs(l.z);
     out["light"] = vec_json(l);
     out.update(header(b, v));
-    std::cout << out.dump(2) << "\n";
+    print_result(out);
   });
 
   auto* sample = app.add_subcommand(
@@ -220,6 +258,7 @@ void add_eval_commands(CLI::App& app) {
     const BsdfSample s = b.sample(v, {u[0], u[1], u[2]});
     Json out;
     out["valid"] = s.valid;
+    out["provenance"] = provenance(a);
     if (s.valid) {
       out["l"] = vec_json(s.l);
       out["weight"] = rgb_json(s.weight);
@@ -228,7 +267,7 @@ void add_eval_commands(CLI::App& app) {
       out["f"] = rgb_json(b.eval(v, s.l));  // 0 for a delta sample (eval has no Dirac part)
     }
     out.update(header(b, v));
-    std::cout << out.dump(2) << "\n";
+    print_result(out);
   });
 }
 

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "commands.h"
+#include "interrupt_cleanup.h"
+#include "provenance.h"
 #include "dspbr/io/atomic_file.h"
 #include "dspbr/lut/generate.h"
 #include "dspbr/lut/lookup_codegen.h"
@@ -117,6 +119,7 @@ LutOptions to_options(const LutArgs& a) {
   opt.randomizations = a.randomizations;
   opt.seed = a.seed;
   opt.threads = a.threads;
+  opt.command = reproducible_command();
   try {
     validate_lut_options(opt);
   } catch (const std::invalid_argument& e) {
@@ -206,6 +209,7 @@ void run_generate(const LutArgs& a) {
     else throw UsageError("--layout: unknown layout '" + l + "' (choose from published, renderer)");
   }
   if (a.renderer_scale < 1 || a.renderer_scale > 16) throw UsageError("--renderer-scale must be in [1, 16]");
+  const InterruptCleanup cleanup(a.out);  // SIGINT/SIGTERM from here on: remove what the run created
   prepare_output_folder(a.out);
   if (renderer) run_renderer(a, opt, formats);
   if (!published) return;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "provenance.h"
 #include "dspbr/io/read_file.h"
 #include "dspbr/params/material_instance.h"
 #include "dspbr/params/param_defs.h"
@@ -84,6 +85,7 @@ void add_params_command(CLI::App& app) {
         const auto& m = defs.material(id);
         out["materials"].push_back({{"id", id}, {"name", m.name}, {"inherits", m.inherits}});
       }
+      out["provenance"] = output_provenance();
       std::cout << out.dump(2) << "\n";
       return;
     }
@@ -108,7 +110,11 @@ void add_params_command(CLI::App& app) {
     } catch (const std::exception& e) {
       throw UsageError(e.what());
     }
-    if (opt->json) std::cout << material_def_to_json(*m).dump(2) << "\n";
+    if (opt->json) {
+      nlohmann::ordered_json out = material_def_to_json(*m);
+      out["provenance"] = output_provenance();
+      std::cout << out.dump(2) << "\n";
+    }
     else print_material(*m);
   });
 

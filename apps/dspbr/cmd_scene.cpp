@@ -6,6 +6,7 @@
 #include <string>
 
 #include "commands.h"
+#include "provenance.h"
 #include "dspbr/material_params.h"
 #include "dspbr/scene/components.h"
 #include "dspbr/scene/scene_analysis.h"
@@ -43,7 +44,9 @@ void add_scene_command(CLI::App& app) {
       throw UsageError(e.what());
     }
     if (opt->json) {
-      std::cout << scene_analysis_json(s, opt->parameters).dump(2) << "\n";
+      auto doc = scene_analysis_json(s, opt->parameters);
+      doc["provenance"] = output_provenance();
+      std::cout << doc.dump(2) << "\n";
       return;
     }
     std::printf("%s: %zu material(s)\n", s.path.c_str(), s.materials.size());

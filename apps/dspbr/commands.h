@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "dspbr/limits.h"
+
 namespace dspbr::cli {
 
 struct UsageError : std::runtime_error {
@@ -18,7 +20,7 @@ struct UsageError : std::runtime_error {
 
 // Checks of integer options, shared by the subcommands (CLI11 validators: a failed check is the
 // usage error "--seed: ...", exit status 2).
-inline constexpr int kMaxThreads = 1024;  // far above the cores of any machine; TBB fails near INT_MAX
+inline constexpr int kMaxThreads = limits::kThreads;
 
 // Digits only, below 2^64: CLI11 would convert "-1" to an unsigned option as 2^64 - 1 and clamp
 // larger numbers to it.

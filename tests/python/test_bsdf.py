@@ -198,3 +198,14 @@ def test_gil_released_during_long_calls():
         time.sleep(0.001)
     worker.join()
     assert ticks >= 5
+
+
+def test_deeply_nested_values_are_refused():
+    # docs/limits.md: the JSON nesting limit holds for Python values given as materials too.
+    deep = 0.5
+    for _ in range(100000):
+        deep = [deep]
+    with pytest.raises(ValueError, match="nested deeper than 256 levels"):
+        dspbr.Bsdf({"roughness": deep})
+    with pytest.raises(ValueError, match="nested deeper than 256 levels"):
+        dspbr.Bsdf({"material": "generic", "values": {"roughness": deep}})

@@ -62,12 +62,12 @@ bool is_lfs_pointer(const std::string& file, std::uint64_t file_size, std::uint6
   if (!std::getline(in, line) || line.rfind("version https://git-lfs.github.com/spec/", 0) != 0) return false;
   while (std::getline(in, line))
     if (line.rfind("size ", 0) == 0) {
-      try {
-        announced = std::stoull(line.substr(5));
-        return true;
-      } catch (const std::exception&) {
+      // Digits only (std::stoull would take "-5" as 2^64 - 5), below 2^64.
+      const std::string digits = line.substr(5);
+      if (digits.empty() || digits.size() > 19 || digits.find_first_not_of("0123456789") != std::string::npos)
         return false;
-      }
+      announced = std::stoull(digits);
+      return true;
     }
   return false;
 }
@@ -165,7 +165,7 @@ void check_buffers(GltfFile& f, std::uint64_t bin_chunk_size, bool has_bin) {
     const std::uint64_t b = count(views[i], "buffer", path, where, 0, true);
     const std::uint64_t off = count(views[i], "byteOffset", path, where, 0, false);
     const std::uint64_t len = count(views[i], "byteLength", path, where, 0, true);
-    if (off + len > f.buffer_sizes[b])
+    if (off > f.buffer_sizes[b] || len > f.buffer_sizes[b] - off)  // off + len may wrap around 2^64
       fail(path, where + " (bytes " + std::to_string(off) + ".." + std::to_string(off + len) + ") lies outside buffer " +
                      std::to_string(b) + " (" + std::to_string(f.buffer_sizes[b]) + " bytes)");
     view_sizes[i] = len;

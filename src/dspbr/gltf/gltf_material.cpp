@@ -70,6 +70,7 @@ class Mapper {
     for (std::size_t i = 0; i < N; ++i) {
       if (!v[i].is_number()) fail(prefix + key + " must be an array of " + std::to_string(N) + " numbers, got " + v.dump());
       out[i] = v[i].get<double>();
+      if (!std::isfinite(out[i])) fail(prefix + key + " must hold finite numbers");
     }
     return out;
   }
@@ -102,6 +103,8 @@ class Mapper {
     texture(pbr, "baseColorTexture", pp, {"albedo"});
     texture(pbr, "metallicRoughnessTexture", pp, {"metallic", "roughness"});
     // Alpha: BLEND uses alpha as coverage, MASK thresholds it at alphaCutoff, OPAQUE ignores it.
+    if (mat_.contains("alphaMode") && !mat_["alphaMode"].is_string())
+      fail("alphaMode must be a string (OPAQUE, MASK or BLEND), got " + mat_["alphaMode"].dump());
     const std::string alpha_mode = mat_.value("alphaMode", std::string("OPAQUE"));
     if (alpha_mode == "BLEND") {
       m.cutoutOpacity = base[3];

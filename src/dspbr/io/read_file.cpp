@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "dspbr/limits.h"
+
 namespace dspbr {
 
 namespace fs = std::filesystem;
@@ -64,16 +66,42 @@ std::string printable(std::string_view s) {
   return out;
 }
 
+// Throws when arrays and objects nest deeper than limits::kJsonDepth (before parsing: the parser
+// itself is iterative, but copies, merges and dumps of the document recurse per level). Brackets
+// inside strings do not count.
+void check_nesting(std::string_view text, const std::string& path) {
+  int depth = 0;
+  long line = 1;
+  bool in_string = false, escaped = false;
+  for (const char c : text) {
+    if (c == '\n') ++line;
+    if (in_string) {
+      if (escaped) escaped = false;
+      else if (c == '\\') escaped = true;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limits::kJsonDepth)
+        throw std::runtime_error(path + ": JSON nested deeper than " + std::to_string(limits::kJsonDepth) +
+                                 " levels (line " + std::to_string(line) + ")");
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+}
+
 }  // namespace
 
 template <class Json>
 Json parse_json(std::string_view text, const std::string& path, const std::string& what) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) throw std::runtime_error(path + " is empty");
+  if (const std::string format = sniff_format(text); !format.empty())
+    throw std::runtime_error(path + " is not a " + what + " (it starts like " + format + ")");
+  check_nesting(text, path);
   try {
     return Json::parse(text.begin(), text.end());
   } catch (const nlohmann::json::parse_error& e) {
-    if (const std::string format = sniff_format(text); !format.empty())
-      throw std::runtime_error(path + " is not a " + what + " (it starts like " + format + ")");
     // nlohmann's message: "[json.exception.parse_error.101] parse error at line L, column C: ...".
     std::string detail = e.what();
     const std::string marker = "parse error at ";

@@ -19,10 +19,11 @@ std::string read_file(const std::string& path);
 std::string sniff_format(std::string_view bytes);
 
 // Parses `text`, the JSON content of `path` (a `what`, e.g. "glTF file"). Throws "<path> is empty"
-// for blank text; on malformed JSON throws
-// "<path> is not a <what> (it starts like a PNG image)" when sniff_format recognizes the bytes,
-// else "<path>: malformed JSON at line L, column C: <reason>"; bytes outside printable ASCII in
-// the parser's excerpt are written \xNN, so the message stays one line.
+// for blank text, "<path> is not a <what> (it starts like a PNG image)" when sniff_format
+// recognizes the bytes, "<path>: JSON nested deeper than N levels (line L)" past
+// limits::kJsonDepth, and on malformed JSON "<path>: malformed JSON at line L, column C: <reason>";
+// bytes outside printable ASCII in the parser's excerpt are written \xNN, so the message stays
+// one line.
 template <class Json = nlohmann::json>
 Json parse_json(std::string_view text, const std::string& path, const std::string& what);
 

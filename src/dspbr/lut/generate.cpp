@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "dspbr/limits.h"
 #include "dspbr/lut/parallel_cells.h"
 
 namespace dspbr {
@@ -18,8 +19,8 @@ enum TableId : uint64_t { kGgxE = 0, kGgxEAvg = 1, kBaseE = 2, kBaseEAvg = 3, kS
 uint64_t stream_of(uint64_t table, uint64_t cell) { return (table << 32) | cell; }
 
 // Largest size per axis and total cells accepted (keeps memory and run time sane).
-constexpr int kMaxAxisSize = 4096;
-constexpr size_t kMaxCells = size_t(1) << 24;
+constexpr int kMaxAxisSize = limits::kTableAxisSize;
+constexpr size_t kMaxCells = limits::kTableCells;
 
 std::vector<double> coords(const Axis& a) {
   std::vector<double> x(size_t(a.size));
@@ -132,7 +133,8 @@ void validate_lut_options(const LutOptions& opt) {
   if (opt.samples > 0 && opt.samples / opt.randomizations > (1 << 24))
     throw std::invalid_argument("samples / randomizations must be at most 2^24");
   if (!(opt.target_error >= 0) || opt.target_error > 1) throw std::invalid_argument("target error must be in [0, 1]");
-  if (opt.threads < 0) throw std::invalid_argument("threads must be >= 0 (0: all cores)");
+  if (opt.threads < 0 || opt.threads > limits::kThreads)
+    throw std::invalid_argument("threads must be from 0 (all cores) to " + std::to_string(limits::kThreads));
   // Endpoint grids need two samples per axis for the default sizes too (all defaults are >= 16).
 }
 

@@ -39,6 +39,7 @@ struct LutOptions {
   uint64_t seed = 1;
   int threads = 0;         // 0: all hardware threads
   bool progress = true;    // report progress on stderr (only when it is a terminal)
+  std::string command;     // recorded with project_version() in the files written ("": neither)
 };
 
 // The integrator settings used for `table` under `opt`.

@@ -13,8 +13,11 @@
 #include <stdexcept>
 
 #include "dspbr/io/atomic_file.h"
+#include "dspbr/io/json_fields.h"
 #include "dspbr/io/read_file.h"
+#include "dspbr/limits.h"
 #include "dspbr/lut/table_image.h"
+#include "dspbr/version.h"
 
 namespace dspbr {
 
@@ -212,6 +215,7 @@ std::string lut_json_text(const std::vector<Table>& tables, const LutOptions& op
   j["version"] = 1;
   j["model"] = "DSPBR 2025x";
   j["generator"] = "dspbr lut";
+  if (!opt.command.empty()) j["dspbr_version"] = project_version(), j["command"] = opt.command;
   j["grid"] = grid_kind_name(opt.grid);
   j["seed"] = opt.seed;
   j["notes"] = "values: directional/average albedos (docs/luts.md); errors: per-cell standard error (1 sigma)";
@@ -256,37 +260,44 @@ std::vector<Table> read_lut_json_text(std::string_view text, const std::string& 
 }
 
 std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::string& path) {
+  namespace jf = json_fields;
   try {
-    if (j.value("format", std::string()) != "dspbr_luts")
+    if (!j.is_object() || j.value("format", nlohmann::json()) != "dspbr_luts")
       throw std::runtime_error("not a dspbr_luts file (missing \"format\": \"dspbr_luts\")");
     std::vector<Table> out;
-    const auto& jt = j.at("tables");
+    const auto& jt = jf::object_member(j, "tables", "");
     for (const std::string& name : lut_table_names()) {
       if (!jt.contains(name)) continue;
-      const auto& e = jt.at(name);
+      const std::string where = "tables." + name;
+      const auto& e = jf::object_member(jt, name, "tables");
       Table t;
       t.name = name;
-      for (const auto& ja : e.at("axes")) {
+      const auto& axes = jf::array_member(e, "axes", where);
+      if (axes.size() != lut_axis_names(name).size())
+        throw std::runtime_error(where + ".axes must hold " + std::to_string(lut_axis_names(name).size()) + " axes");
+      // Sizes within limits.h, so that their product (the number of values) cannot overflow.
+      size_t cells = 1;
+      for (size_t d = 0; d < axes.size(); ++d) {
+        const std::string at = jf::index_path(where + ".axes", d);
         Axis a;
-        a.name = ja.at("name").get<std::string>();
-        a.size = ja.at("size").get<int>();
-        a.lo = ja.at("lo").get<double>();
-        a.hi = ja.at("hi").get<double>();
-        const std::string g = ja.at("grid").get<std::string>();
-        if (g != "cell" && g != "endpoint") throw std::runtime_error(name + ": unknown grid '" + g + "'");
+        a.name = jf::string_member(axes[d], "name", at);
+        const std::string g = jf::string_member(axes[d], "grid", at);
+        if (g != "cell" && g != "endpoint") throw std::runtime_error(at + ".grid: unknown grid '" + g + "'");
         a.kind = parse_grid_kind(g);
-        if (a.size < 1 || (a.kind == GridKind::Endpoint && a.size < 2))
-          throw std::runtime_error(name + ": bad size of axis " + a.name);
+        a.size = int(jf::integer_member(axes[d], "size", at, a.kind == GridKind::Endpoint ? 2 : 1, limits::kTableAxisSize));
+        a.lo = jf::number_member(axes[d], "lo", at);
+        a.hi = jf::number_member(axes[d], "hi", at);
+        if (!(a.lo < a.hi)) throw std::runtime_error(at + ": lo must be below hi");
+        cells *= size_t(a.size);
+        if (cells > limits::kTableCells)
+          throw std::runtime_error(where + ": more than " + std::to_string(limits::kTableCells) + " cells");
         t.axes.push_back(a);
       }
-      if (t.axes.size() != lut_axis_names(name).size()) throw std::runtime_error(name + ": wrong number of axes");
-      t.values = e.at("values").get<std::vector<double>>();
-      if (e.contains("errors")) t.errors = e.at("errors").get<std::vector<double>>();
-      if (t.values.size() != t.size()) throw std::runtime_error(name + ": number of values does not match the axes");
-      if (!t.errors.empty() && t.errors.size() != t.size())
-        throw std::runtime_error(name + ": number of errors does not match the axes");
+      t.values = jf::numbers_member(e, "values", where, cells);
+      if (e.contains("errors")) t.errors = jf::numbers_member(e, "errors", where, cells);
       out.push_back(std::move(t));
     }
+    if (out.empty()) throw std::runtime_error("\"tables\" holds none of GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E");
     return out;
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error("'" + path + "': " + e.what());

@@ -20,7 +20,7 @@ bool is_renderer(const LutSet& s) { return s.layout == LutLayout::Renderer; }
 // One parse of the file; its "format" tells the layout.
 LutSet from_json(const nlohmann::json& j, const std::string& name) {
   LutSet set;
-  if (j.is_object() && j.value("format", std::string()) == "dspbr_renderer_luts") {
+  if (j.is_object() && j.value("format", nlohmann::json()) == "dspbr_renderer_luts") {
     set.layout = LutLayout::Renderer;
     set.renderer = read_renderer_json_value(j, name);
     return set;

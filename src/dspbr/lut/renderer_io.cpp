@@ -11,9 +11,12 @@
 #include <stdexcept>
 
 #include "dspbr/io/atomic_file.h"
+#include "dspbr/io/json_fields.h"
 #include "dspbr/io/read_file.h"
+#include "dspbr/limits.h"
 #include "dspbr/lut/lut_io.h"
 #include "dspbr/lut/table_image.h"
+#include "dspbr/version.h"
 
 namespace dspbr {
 
@@ -21,8 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using ojson = nlohmann::ordered_json;
-
-constexpr int kMaxRendererAxis = 4096;  // samples per axis accepted when reading
 
 const char* warp_kind_name(WarpKind k) {
   switch (k) {
@@ -57,6 +58,7 @@ std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, 
   j["version"] = 1;
   j["model"] = "DSPBR 2025x";
   j["generator"] = "dspbr lut";
+  if (!opt.command.empty()) j["dspbr_version"] = project_version(), j["command"] = opt.command;
   j["layout"] = "renderer";
   j["scale"] = scale;
   j["stored_values"] = luts.stored_values();
@@ -100,11 +102,12 @@ RendererLuts read_renderer_json_text(std::string_view text, const std::string& n
 }
 
 RendererLuts read_renderer_json_value(const nlohmann::json& j, const std::string& path) {
+  namespace jf = json_fields;
   RendererLuts out;
   try {
-    if (!j.is_object() || j.value("format", std::string()) != "dspbr_renderer_luts")
+    if (!j.is_object() || j.value("format", nlohmann::json()) != "dspbr_renderer_luts")
       throw std::runtime_error("not a renderer table file (missing \"format\": \"dspbr_renderer_luts\")");
-    const auto& jt = j.at("tables");
+    const auto& jt = jf::object_member(j, "tables", "");
     const RendererLuts expected_axes = [] {
       RendererLuts r;
       for (const char* n : RendererLuts::names()) r.table(n)->axes = renderer_default_axes(n);
@@ -112,55 +115,46 @@ RendererLuts read_renderer_json_value(const nlohmann::json& j, const std::string
     }();
     for (const char* name : RendererLuts::names()) {
       if (!jt.contains(name)) throw std::runtime_error(std::string("table ") + name + " is missing");
-      const auto& e = jt.at(name);
+      const std::string where = std::string("tables.") + name;
+      const auto& e = jf::object_member(jt, name, "tables");
       WarpedTable& t = *out.table(name);
       t.name = name;
       const auto& ref = expected_axes.table(name)->axes;
-      const auto& ja = e.at("axes");
-      if (!ja.is_array() || ja.size() != ref.size())
-        throw std::runtime_error(std::string(name) + ": needs " + std::to_string(ref.size()) + " axes");
-      size_t cells = 1;
+      const auto& ja = jf::array_member(e, "axes", where);
+      if (ja.size() != ref.size())
+        throw std::runtime_error(where + ".axes must hold " + std::to_string(ref.size()) + " axes");
+      size_t cells = 1;  // axis sizes within limits.h: the product cannot overflow
       for (size_t d = 0; d < ref.size(); ++d) {
+        const std::string at = jf::index_path(where + ".axes", d);
         WarpedAxis a;
-        a.name = ja[d].at("name").get<std::string>();
-        a.size = ja[d].at("size").get<int>();
-        if (a.name != ref[d].name)
-          throw std::runtime_error(std::string(name) + ": axis " + std::to_string(d) + " must be " + ref[d].name);
-        if (a.size < 2 || a.size > kMaxRendererAxis)
-          throw std::runtime_error(std::string(name) + ": axis " + a.name + " size must be in [2, 4096]");
-        const auto& jw = ja[d].at("warp");
-        const std::string kind = jw.at("kind").get<std::string>();
-        a.warp.p = jw.at("p").get<double>();
-        a.warp.lo = jw.at("lo").get<double>();
+        a.name = jf::string_member(ja[d], "name", at);
+        if (a.name != ref[d].name) throw std::runtime_error(at + ".name must be " + ref[d].name);
+        a.size = int(jf::integer_member(ja[d], "size", at, 2, limits::kTableAxisSize));
+        const auto& jw = jf::object_member(ja[d], "warp", at);
+        const std::string kind = jf::string_member(jw, "kind", at + ".warp");
+        a.warp.p = jf::number_member(jw, "p", at + ".warp");
+        a.warp.lo = jf::number_member(jw, "lo", at + ".warp");
         if (kind == "power") a.warp.kind = WarpKind::Power;
         else if (kind == "ggx_cos") a.warp.kind = WarpKind::GgxCos;
         else if (kind == "log") a.warp.kind = WarpKind::LogRoughness;
-        else throw std::runtime_error(std::string(name) + ": axis " + a.name + ": unknown warp '" + kind + "'");
+        else throw std::runtime_error(at + ".warp.kind: unknown warp '" + kind + "'");
         if (a.warp.kind == WarpKind::GgxCos && !(d == 1 && ref[0].name == "roughness"))
           throw std::runtime_error(std::string(name) + ": the ggx_cos warp needs a roughness axis before it");
         if (!(a.warp.p > 0 && a.warp.p <= 16) || !(a.warp.lo >= 0 && a.warp.lo < 1) ||
             (a.warp.kind == WarpKind::LogRoughness && !(a.warp.lo > 0)))
-          throw std::runtime_error(std::string(name) + ": axis " + a.name + " has a bad warp");
+          throw std::runtime_error(at + " has a bad warp");
         cells *= size_t(a.size);
+        if (cells > limits::kTableCells)
+          throw std::runtime_error(where + ": more than " + std::to_string(limits::kTableCells) + " cells");
         t.axes.push_back(a);
       }
       // GGX_E_avg stores ln(1 - E_m,avg) (the lookups decode it so), every other table the value.
-      const std::string enc = e.at("encoding").get<std::string>();
+      const std::string enc = jf::string_member(e, "encoding", where);
       const std::string want = std::string(name) == "GGX_E_avg" ? "log_one_minus" : "value";
-      if (enc != want) throw std::runtime_error(std::string(name) + ": encoding must be '" + want + "', not '" + enc + "'");
+      if (enc != want) throw std::runtime_error(where + ".encoding must be '" + want + "', not '" + enc + "'");
       t.encoding = enc == "log_one_minus" ? Encoding::LogOneMinus : Encoding::Value;
-      const auto& jv = e.at("values");
-      if (!jv.is_array() || jv.size() != cells)
-        throw std::runtime_error(std::string(name) + ": number of values does not match the axes");
-      t.values = jv.get<std::vector<double>>();
-      for (double v : t.values)
-        if (!std::isfinite(v)) throw std::runtime_error(std::string(name) + ": values must be finite");
-      if (e.contains("errors")) {
-        const auto& je = e.at("errors");
-        if (!je.is_array() || je.size() != cells)
-          throw std::runtime_error(std::string(name) + ": number of errors does not match the axes");
-        t.errors = je.get<std::vector<double>>();
-      }
+      t.values = jf::numbers_member(e, "values", where, cells);
+      if (e.contains("errors")) t.errors = jf::numbers_member(e, "errors", where, cells);
     }
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error("'" + path + "': malformed table file (" + std::string(e.what()) + ")");

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "dspbr/io/atomic_file.h"
+#include "dspbr/version.h"
 
 namespace dspbr {
 
@@ -22,7 +23,8 @@ void write_table_image(const std::string& path, const std::vector<float>& px, in
     if (exr) spec.attribute("compression", "zip");
     // OIIO stamps the current time unless DateTime is set; an empty one is not written.
     spec.attribute("DateTime", "");
-    spec.attribute("Software", "dspbr lut");
+    // The project version alone (version.h): committed tables stay byte-identical across commits.
+    spec.attribute("Software", std::string("dspbr lut ") + project_version());
     spec.attribute("oiio:ColorSpace", "Linear");  // data, not colour: no gamma tag
     for (const auto& [k, v] : attrs) spec.attribute(k, v);
     if (!out->open(tmp, spec)) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());

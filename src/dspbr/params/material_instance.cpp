@@ -114,7 +114,12 @@ std::vector<std::string> check_material_instance(const ParamDefs& defs, const Js
   for (const auto& [key, _] : instance.items())
     if (key != "material" && key != "values")
       problems.push_back("unknown key '" + key + "' (an instance has only \"material\" and \"values\")");
-  if (!instance.contains("material") || !instance["material"].is_string()) {
+  if (instance.contains("material") && !instance["material"].is_string()) {
+    problems.push_back("\"material\" must be a string (the material type, e.g. \"glass\"), got " +
+                       instance["material"].dump());
+    return problems;
+  }
+  if (!instance.contains("material")) {
     problems.push_back("missing \"material\": the material type as a string, e.g. \"glass\"");
     return problems;
   }

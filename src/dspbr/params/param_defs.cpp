@@ -1,9 +1,12 @@
 #include "dspbr/params/param_defs.h"
 
 #include "dspbr/io/read_file.h"
+#include "dspbr/limits.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -59,27 +62,41 @@ void merge_into(Json& base, const Json& derived) {
 }
 
 // Replaces every {"$ref": "#/json/pointer"} (as used by params-2025x.json's plastic
-// translucencyColor default) by its target in the resolved document.
-void resolve_refs(Json& node, const Json& doc, const std::string& source, int depth = 0) {
-  if (depth > 32) fail(source, "circular or too deep \"$ref\" chain");
-  if (node.is_object() && node.size() == 1 && node.contains("$ref")) {
-    const Json& ref = node["$ref"];
-    if (!ref.is_string() || ref.get<std::string>().rfind("#/", 0) != 0)
-      fail(source, "\"$ref\" must be a string \"#/...\" pointing into the same file, got " + ref.dump());
-    const std::string pointer = ref.get<std::string>().substr(1);
-    Json target;
-    try {
-      target = doc.at(Json::json_pointer(pointer));
-    } catch (const std::exception&) {
-      fail(source, "\"$ref\" " + ref.dump() + " points to nothing");
+// translucencyColor default) by its target in the resolved document. Bounded (limits.h): nested
+// references, the nesting depth of the result and the number of values it holds.
+struct RefResolver {
+  const Json& doc;
+  const std::string& source;
+  std::size_t values = 0;
+
+  void resolve(Json& node, int ref_depth = 0, int level = 0) {
+    if (level > limits::kJsonDepth)
+      fail(source, "nested deeper than " + std::to_string(limits::kJsonDepth) + " levels once \"$ref\"s are resolved");
+    if (++values > limits::kResolvedJsonValues)
+      fail(source, "more than " + std::to_string(limits::kResolvedJsonValues) +
+                       " JSON values once inheritance and \"$ref\"s are resolved (references or bases that multiply)");
+    if (node.is_object() && node.size() == 1 && node.contains("$ref")) {
+      if (ref_depth >= limits::kRefDepth)
+        fail(source, "circular or too deep \"$ref\" chain (more than " + std::to_string(limits::kRefDepth) + " nested)");
+      const Json& ref = node["$ref"];
+      if (!ref.is_string() || ref.get<std::string>().rfind("#/", 0) != 0)
+        fail(source, "\"$ref\" must be a string \"#/...\" pointing into the same file, got " + ref.dump());
+      const std::string pointer = ref.get<std::string>().substr(1);
+      Json target;
+      try {
+        target = doc.at(Json::json_pointer(pointer));
+      } catch (const std::exception&) {
+        fail(source, "\"$ref\" " + ref.dump() + " points to nothing");
+      }
+      --values;  // the reference itself is replaced
+      resolve(target, ref_depth + 1, level);
+      node = std::move(target);
+      return;
     }
-    resolve_refs(target, doc, source, depth + 1);
-    node = target;
-    return;
+    if (node.is_structured())
+      for (auto& child : node) resolve(child, ref_depth, level + 1);
   }
-  if (node.is_structured())
-    for (auto& child : node) resolve_refs(child, doc, source, depth);
-}
+};
 
 struct Resolver {
   const Json& materials;
@@ -96,6 +113,12 @@ struct Resolver {
     }
     const Json& own = materials.at(id);
     if (!own.is_object()) fail(source, "material '" + id + "' must be a JSON object");
+    auto too_long = [&](std::size_t bases) {
+      if (bases >= std::size_t(limits::kInheritanceDepth))
+        fail(source, "material '" + (stack.empty() ? id : stack.front()) + "': inheritance chain longer than " +
+                         std::to_string(limits::kInheritanceDepth) + " materials");
+    };
+    too_long(stack.size());  // bounds the recursion
     Json merged = Json::object();
     std::vector<std::string> chain;
     if (own.contains("inherits")) {
@@ -110,6 +133,7 @@ struct Resolver {
       chain.push_back(base_id);
       const auto& base_chain = chains.at(base_id);
       chain.insert(chain.end(), base_chain.begin(), base_chain.end());
+      too_long(chain.size());  // bases resolved earlier are not on the stack
     }
     merge_into(merged, own);
     chains[id] = chain;
@@ -170,9 +194,12 @@ ParamDef make_param(const std::string& mat, const std::string& id, const Json& p
   d.hidden = flag("hidden");
   d.ui_order = -1;
   if (p.contains("uiOrder")) {
-    if (!p["uiOrder"].is_number_integer()) fail(source, where + ": \"uiOrder\" must be an integer");
-    d.ui_order = p["uiOrder"].get<int>();
-    if (d.ui_order < 0) fail(source, where + ": \"uiOrder\" must not be negative");
+    const Json& order = p["uiOrder"];
+    if (!order.is_number_integer() || (order.is_number_unsigned() ? order.get<std::uint64_t>() > INT_MAX
+                                                                  : order.get<std::int64_t>() < 0))
+      fail(source, where + ": \"uiOrder\" must be an integer from 0 to " + std::to_string(INT_MAX) + ", got " +
+                       order.dump());
+    d.ui_order = order.get<int>();
   }
   if (p.contains("group")) {
     if (!p["group"].is_string()) fail(source, where + ": \"group\" must be a string");
@@ -301,7 +328,7 @@ ParamDefs ParamDefs::from_json(const nlohmann::ordered_json& ordered, const std:
     resolved_doc["materials"][id] = resolver.resolve(id, stack);
   }
   const Json lookup = resolved_doc;
-  resolve_refs(resolved_doc, lookup, source);
+  RefResolver{lookup, source}.resolve(resolved_doc);
   // nlohmann::json orders object keys alphabetically; `ordered` keeps the file's order.
   for (const auto& [id, _] : ordered["materials"].items()) {
     const Json& m = resolved_doc["materials"][id];

@@ -14,10 +14,7 @@ namespace dspbr::validate {
 using nlohmann::json;
 
 // Both from dspbr::version_string() (version.h): "<version>" or "<version> (<git describe>)".
-std::string project_version() {
-  const std::string v = version_string();
-  return v.substr(0, v.find(" ("));
-}
+std::string project_version() { return dspbr::project_version(); }
 std::string git_describe() {
   const std::string v = version_string();
   const size_t open = v.find(" (");
@@ -50,12 +47,16 @@ json table_text_settings(std::string_view bytes, const std::string& path) {
   return out;
 }
 
-std::string process_command_line() {
+std::vector<std::string> process_arguments() {
   std::ifstream in("/proc/self/cmdline", std::ios::binary);
-  std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  while (!s.empty() && s.back() == '\0') s.pop_back();
-  for (char& c : s)
-    if (c == '\0') c = ' ';
+  std::vector<std::string> out;
+  for (std::string arg; std::getline(in, arg, '\0');) out.push_back(arg);
+  return out;
+}
+
+std::string process_command_line() {
+  std::string s;
+  for (const std::string& a : process_arguments()) s += (s.empty() ? "" : " ") + a;
   return s;
 }
 

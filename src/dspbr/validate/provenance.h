@@ -3,6 +3,7 @@
 #pragma once
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -18,7 +19,9 @@ std::string git_describe();     // `git describe --always --dirty` at configure 
 // are not a JSON object.
 nlohmann::json table_text_settings(std::string_view bytes, const std::string& name);
 
-// The command line of this process (/proc/self/cmdline, arguments joined by spaces; "" if unknown).
+// The arguments of this process, program first (/proc/self/cmdline; empty if unknown).
+std::vector<std::string> process_arguments();
+// The command line of this process (process_arguments joined by spaces; "" if unknown).
 std::string process_command_line();
 
 }  // namespace dspbr::validate

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Builds and runs the libFuzzer targets of fuzz/ (docs/limits.md, "Fuzzing"): clang++,
+# AddressSanitizer + UndefinedBehaviorSanitizer, a seed corpus from the project's own JSON and
+# glTF files, the dictionary fuzz/json.dict.
+#   bash scripts/fuzz.sh [SECONDS]        build, then run each target SECONDS (default 150: 10 min in all)
+#   bash scripts/fuzz.sh --build-only     configure and build only (the main build's dspbr_fuzz target)
+#   bash scripts/fuzz.sh --no-build SECONDS   run only (CTest fuzz_short)
+# Work folder: ${FUZZ_DIR:-${BUILD_DIR:-build}/fuzz} (build, corpora, artifacts, logs).
+# Exit status: 0 when no target crashed, hung (10 s per input), leaked past 2 GB or got a
+# sanitizer report; else 1, with the reproducer in <work folder>/artifacts/.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+work="${FUZZ_DIR:-${BUILD_DIR:-$here/build}/fuzz}"
+build=1 run=1 seconds=150
+case "${1:-}" in
+  --build-only) run=0 ;;
+  --no-build) build=0; seconds="${2:-3}" ;;
+  "") ;;
+  *) seconds="$1" ;;
+esac
+targets=(params instance gltf luts)
+
+if ((build)); then
+  cxx="${FUZZ_CXX:-$(command -v clang++ || true)}"
+  [ -n "$cxx" ] || { echo "fuzz: clang++ not found (Debian: clang, libclang-rt-14-dev)" >&2; exit 1; }
+  cmake -S "$here/fuzz" -B "$work/build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+  cmake --build "$work/build" -j "${FUZZ_JOBS:-2}"
+fi
+((run)) || exit 0
+
+# Seed corpora (rebuilt each run from the sources; what the fuzzer adds goes to corpus/<target>).
+seeds="$work/seeds"
+rm -rf "$seeds"
+mkdir -p "$seeds"/{params,instance,gltf,luts}
+cp "$here/data/dspbr/params-2025x.json" "$seeds/params/"
+for f in "$here"/tests/data/params/*.json; do
+  if grep -q '"materials"' "$f"; then cp "$f" "$seeds/params/"; else cp "$f" "$seeds/instance/"; fi
+done
+find "$here/data/dspbr/scenes" "$here/tests/data" -name '*.json' -size -8k \
+  -exec grep -l '"material"' {} + 2>/dev/null | while read -r f; do cp "$f" "$seeds/instance/$(echo "${f#$here/}" | tr / _)"; done
+find "$here/data/dspbr/scenes" "$here/tests/data/gltf" \( -name '*.gltf' -o -name '*.glb' \) -size -64k |
+  while read -r f; do cp "$f" "$seeds/gltf/$(echo "${f#$here/}" | tr / _)"; done
+# The committed tables with every table cut to 2 samples per axis (same structure, small inputs).
+/usr/bin/python3 - "$here/luts" "$seeds/luts" <<'PY'
+import json, sys
+src, dst = sys.argv[1], sys.argv[2]
+for name in ("dspbr_luts.json", "dspbr_renderer_luts.json"):
+    doc = json.load(open(f"{src}/{name}"))
+    for t in doc["tables"].values():
+        n = 1
+        for a in t["axes"]:
+            a["size"] = 2
+            n *= 2
+        t["values"] = t["values"][:n]
+        t["errors"] = t["errors"][:n]
+    json.dump(doc, open(f"{dst}/{name}", "w"), indent=1)
+PY
+
+mkdir -p "$work/artifacts" "$work/logs"
+status=0
+for t in "${targets[@]}"; do
+  mkdir -p "$work/corpus/$t"
+  log="$work/logs/fuzz_$t.log"
+  if "$work/build/fuzz_$t" "$work/corpus/$t" "$seeds/$t" -dict="$here/fuzz/json.dict" -max_total_time="$seconds" \
+       -timeout=10 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
+       -artifact_prefix="$work/artifacts/$t-" >"$log" 2>&1; then
+    echo "fuzz_$t: $(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}') runs in ${seconds} s, no crash, hang or sanitizer report"
+  else
+    status=1
+    echo "fuzz_$t: FAILED, see $log and $work/artifacts/" >&2
+    grep -E 'ERROR|SUMMARY|runtime error|deadly signal|timeout' "$log" | head -5 >&2
+  fi
+done
+exit $status

@@ -1,0 +1,37 @@
+// The limits on input the project accepts, one constant per concept, each stated in docs/limits.md.
+// They keep every reader and command within seconds and bounded memory on hostile input
+// (deep nesting, long inheritance chains, expanding references, huge sizes); legal DSPBR
+// material, scenes and tables stay far inside them.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+namespace dspbr::limits {
+
+// Nesting depth of any JSON document read (parameter definitions, material instances, glTF/GLB,
+// table files): arrays and objects inside each other. params-2025x.json nests 6 deep, glTF
+// assets a dozen; recursive code (merge, $ref resolution, dump) then stays far from the stack's end.
+inline constexpr int kJsonDepth = 256;
+
+// Materials in one inheritance chain of a parameter definition file ("inherits", spec appendix
+// "Inheritance"): params-2025x.json has 3.
+inline constexpr int kInheritanceDepth = 64;
+
+// Nested "$ref" resolutions inside one reference (a reference whose target holds references...).
+inline constexpr int kRefDepth = 32;
+
+// JSON values (numbers, strings, arrays, objects...) of a parameter definition file once
+// inheritance is merged and every "$ref" is replaced by its target: bounds the memory and output
+// of files whose references or bases double at each step. params-2025x.json resolves to ~6000.
+inline constexpr std::size_t kResolvedJsonValues = std::size_t(1) << 20;
+
+// Samples along one axis of a table, generated (--size) or read (table files of either layout).
+inline constexpr int kTableAxisSize = 4096;
+// Cells of one table (the product of its axis sizes), generated or read.
+inline constexpr std::size_t kTableCells = std::size_t(1) << 24;
+
+// Worker threads (--threads, Python threads=): 0 means all cores; far above the cores of any
+// machine (TBB fails near INT_MAX).
+inline constexpr int kThreads = 1024;
+
+}  // namespace dspbr::limits

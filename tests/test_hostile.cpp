@@ -1,0 +1,243 @@
+// Hostile input (limits in src/dspbr/limits.h, stated in docs/limits.md): each class gives its
+// one-line error and exit status 2, or, for legal input at the edge, the answer computed another
+// way (the same direction written with small numbers).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "dspbr/io/read_file.h"
+#include "dspbr/limits.h"
+#include "dspbr/lut/lut_io.h"
+#include "dspbr/lut/lut_set.h"
+#include "dspbr/params/param_defs.h"
+#include "test_params_run.h"
+
+namespace {
+
+using Json = nlohmann::json;
+
+std::string temp_file(const std::string& name, const std::string& content) {
+  const std::string path = ::testing::TempDir() + "/hostile_" + name;
+  std::ofstream(path, std::ios::binary) << content;
+  return path;
+}
+
+// A usage error: exit status 2, one line "dspbr: error: ..." containing `needle`.
+void expect_usage_error(const std::string& args, const std::string& needle) {
+  const ToolRun r = run_dspbr(args);
+  EXPECT_EQ(r.status, 2) << args << "\n" << r.output.substr(0, 2000);
+  EXPECT_EQ(r.output.rfind("dspbr: error: ", 0), 0u) << args << "\n" << r.output.substr(0, 2000);
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << "\n" << r.output.substr(0, 2000);
+  EXPECT_NE(r.output.find(needle), std::string::npos) << args << "\n" << r.output.substr(0, 2000);
+}
+
+// `n` arrays nested inside each other.
+std::string nested(int n) { return std::string(std::size_t(n), '[') + std::string(std::size_t(n), ']'); }
+
+// A GLB container (glTF 2.0, "GLB File Format Specification") holding `json` as its JSON chunk.
+std::string glb(std::string json) {
+  while (json.size() % 4) json += ' ';
+  auto le32 = [](std::uint32_t v) {
+    return std::string{char(v & 0xff), char((v >> 8) & 0xff), char((v >> 16) & 0xff), char((v >> 24) & 0xff)};
+  };
+  return le32(0x46546C67) + le32(2) + le32(std::uint32_t(20 + json.size())) + le32(std::uint32_t(json.size())) +
+         le32(0x4E4F534A) + json;
+}
+
+const std::string kDeepMessage = "JSON nested deeper than " + std::to_string(dspbr::limits::kJsonDepth) + " levels";
+
+}  // namespace
+
+TEST(Hostile, JsonNested1e5DeepIsRefusedByEveryReader) {
+  const std::string deep = nested(100000);
+  const std::string out = " --out " + ::testing::TempDir() + "/hostile_out";
+  const std::string params = temp_file("deep_params.json", R"({"materials": {"m": {"parameters": {"p": {"type": "float", "x": )" + deep + "}}}}}");
+  expect_usage_error("params list " + params, params + ": " + kDeepMessage);
+  const std::string instance = temp_file("deep_instance.json", R"({"material": "generic", "values": {"roughness": )" + deep + "}}");
+  expect_usage_error("eval --material " + instance + " --view 0,0,1 --light 0,0,1", instance + ": " + kDeepMessage);
+  const ToolRun check = run_dspbr("params check " + instance);
+  EXPECT_EQ(check.status, 2) << check.output;
+  EXPECT_EQ(count_lines_with(check.output, instance + ": " + kDeepMessage), 1) << check.output;
+  const std::string gltf = R"({"asset": {"version": "2.0"}, "materials": [{"extras": )" + deep + "}]}";
+  const std::string gltf_path = temp_file("deep.gltf", gltf), glb_path = temp_file("deep.glb", glb(gltf));
+  expect_usage_error("scene analyze " + gltf_path, gltf_path + ": " + kDeepMessage);
+  expect_usage_error("scene analyze " + glb_path, glb_path + ": " + kDeepMessage);
+  expect_usage_error("lut --scene " + glb_path + out, glb_path + ": " + kDeepMessage);
+  const std::string published = temp_file("deep_luts.json", R"({"format": "dspbr_luts", "tables": )" + deep + "}");
+  const std::string renderer =
+      temp_file("deep_renderer.json", R"({"format": "dspbr_renderer_luts", "tables": {"GGX_E": {"axes": )" + deep + "}}}");
+  expect_usage_error("validate --quick --no-html --luts " + published + out, published + ": " + kDeepMessage);
+  expect_usage_error("validate --quick --no-html --luts " + renderer + out, renderer + ": " + kDeepMessage);
+  // Just inside the limit the nesting is legal JSON: the reader gets to the document's content.
+  const std::string at_limit = temp_file("limit.gltf", R"({"asset": {"version": "2.0"}, "extras": )" +
+                                                           nested(dspbr::limits::kJsonDepth - 1) + "}");
+  const ToolRun ok = run_dspbr("scene analyze " + at_limit);
+  EXPECT_EQ(ok.status, 0) << ok.output;
+  // Brackets inside strings are text, not nesting.
+  EXPECT_NO_THROW(dspbr::parse_json(R"({"s": ")" + std::string(1000, '[') + R"("})", "strings.json", "test"));
+}
+
+TEST(Hostile, TableAxisSizesWhoseProductWrapsAreRefused) {
+  // 2^22 * 2^21 * 2^21 = 2^64 wraps to 0 cells in 64 bits: an empty "values" would match.
+  Json axes = Json::array();
+  const int sizes[] = {1 << 22, 1 << 21, 1 << 21};
+  const char* names[] = {"f0", "roughness", "cos_theta"};
+  for (int d = 0; d < 3; ++d) axes.push_back({{"name", names[d]}, {"size", sizes[d]}, {"lo", 0}, {"hi", 1}, {"grid", "cell"}});
+  const Json doc = {{"format", "dspbr_luts"}, {"tables", {{"Base_E", {{"axes", axes}, {"values", Json::array()}}}}}};
+  const std::string path = temp_file("wrap_luts.json", doc.dump());
+  const std::string message = "tables.Base_E.axes[0].size must be an integer from 1 to " +
+                              std::to_string(dspbr::limits::kTableAxisSize) + ", got 4194304";
+  expect_usage_error("validate --quick --no-html --luts " + path + " --out " + ::testing::TempDir() + "/hostile_out", message);
+  try {
+    dspbr::read_lut_json(path);
+    ADD_FAILURE() << "accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+  }
+  // Within the per-axis limit the product is bounded by limits::kTableCells.
+  Json big = doc;
+  for (auto& a : big["tables"]["Base_E"]["axes"]) a["size"] = 4096;
+  try {
+    dspbr::read_lut_json_text(big.dump(), "big.json");
+    ADD_FAILURE() << "accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("tables.Base_E: more than 16777216 cells"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Hostile, EmptyTablesObjectDoesNotValidate) {
+  const std::string path = temp_file("empty_tables.json", R"({"format": "dspbr_luts", "tables": {}})");
+  expect_usage_error("validate --quick --no-html --luts " + path + " --out " + ::testing::TempDir() + "/hostile_out",
+                     path);
+  EXPECT_THROW(dspbr::read_lut_json(path), std::runtime_error);
+}
+
+TEST(Hostile, LongInheritanceChainIsRefused) {
+  // 30000 materials, each inheriting from the previous one: resolving copies each material's
+  // ancestors (quadratic memory) and `params list --json` prints every chain (quadratic output).
+  Json mats = Json::object();
+  mats["m0"] = {{"parameters", {{"p0", {{"type", "float"}}}}}};
+  for (int i = 1; i < 30000; ++i)
+    mats["m" + std::to_string(i)] = {{"inherits", "m" + std::to_string(i - 1)},
+                                     {"parameters", {{"p" + std::to_string(i), {{"type", "float"}}}}}};
+  const std::string path = temp_file("chain.json", Json{{"materials", mats}}.dump());
+  const std::string message = "inheritance chain longer than " + std::to_string(dspbr::limits::kInheritanceDepth) + " materials";
+  expect_usage_error("params list " + path, message);
+  expect_usage_error("params list --json " + path, message);
+  // A chain at the limit resolves: the last material has every parameter of its bases.
+  Json ok = Json::object();
+  ok["m0"] = {{"parameters", {{"p0", {{"type", "float"}}}}}};
+  for (int i = 1; i < dspbr::limits::kInheritanceDepth; ++i)
+    ok["m" + std::to_string(i)] = {{"inherits", "m" + std::to_string(i - 1)},
+                                   {"parameters", {{"p" + std::to_string(i), {{"type", "float"}}}}}};
+  const dspbr::ParamDefs defs = dspbr::ParamDefs::from_json(Json{{"materials", ok}}, "ok.json");
+  const auto& last = defs.material("m" + std::to_string(dspbr::limits::kInheritanceDepth - 1));
+  EXPECT_EQ(last.parameters.size(), std::size_t(dspbr::limits::kInheritanceDepth));
+  EXPECT_EQ(last.inherits.size(), std::size_t(dspbr::limits::kInheritanceDepth - 1));
+}
+
+TEST(Hostile, DoublingReferencesAreRefused) {
+  // a_i = [a_(i-1), a_(i-1)]: 3 KB that expand to 2^60 values.
+  Json d = {{"a0", {1, 2}}};
+  for (int i = 1; i < 60; ++i) {
+    const Json ref = {{"$ref", "#/materials/d/a" + std::to_string(i - 1)}};
+    d["a" + std::to_string(i)] = Json::array({ref, ref});
+  }
+  const Json doc = {{"materials", {{"d", d}, {"m", {{"parameters", {{"p", {{"type", "float"}}}}}}}}}};
+  const std::string path = temp_file("refs.json", doc.dump());
+  expect_usage_error("params list " + path, "more than " + std::to_string(dspbr::limits::kResolvedJsonValues) + " JSON values");
+  // A reference to a reference to ... deeper than the limit.
+  Json chain = {{"r0", 1.0}};
+  for (int i = 1; i <= dspbr::limits::kRefDepth + 1; ++i) chain["r" + std::to_string(i)] = {{"$ref", "#/materials/c/r" + std::to_string(i - 1)}};
+  const std::string chain_path = temp_file("ref_chain.json", Json{{"materials", {{"c", chain}}}}.dump());
+  expect_usage_error("params list " + chain_path, "too deep \"$ref\" chain");
+}
+
+TEST(Hostile, UiOrderOutsideIntIsRefused) {
+  for (const char* order : {"1099511627776", "-1", "2147483648"}) {
+    const std::string path = temp_file("uiorder.json", std::string(R"({"materials": {"m": {"parameters": {"p": {"type": "float", "uiOrder": )") +
+                                                           order + "}}}}}");
+    expect_usage_error("params show " + path + " m", std::string("\"uiOrder\" must be an integer from 0 to 2147483647, got ") + order);
+  }
+}
+
+TEST(Hostile, NumberWhereAStringBelongsNamesTheFileAndThePath) {
+  const std::string out = " --out " + ::testing::TempDir() + "/hostile_out";
+  const std::string luts = temp_file(
+      "name_number.json",
+      R"({"format": "dspbr_luts", "tables": {"GGX_E_avg": {"axes": [{"name": 5, "size": 2, "lo": 0, "hi": 1, "grid": "cell"}], "values": [1, 1]}}})");
+  expect_usage_error("validate --quick --no-html --luts " + luts + out, luts + "': tables.GGX_E_avg.axes[0].name must be a string, got 5");
+  const std::string format = temp_file("format_number.json", R"({"format": 5, "tables": {}})");
+  expect_usage_error("validate --quick --no-html --luts " + format + out, format + "': not a dspbr_luts file");
+  const std::string gltf = temp_file("alpha_number.gltf", R"({"asset": {"version": "2.0"}, "materials": [{"alphaMode": 5}]})");
+  expect_usage_error("scene analyze " + gltf, gltf + ": materials[0] 'material 0': alphaMode must be a string");
+  const std::string instance = temp_file("material_number.json", R"({"material": 5})");
+  expect_usage_error("eval --material " + instance + " --view 0,0,1 --light 0,0,1",
+                     instance + ": \"material\" must be a string (the material type, e.g. \"glass\"), got 5");
+}
+
+TEST(Hostile, BufferViewWhoseEndWrapsIsRefused) {
+  // byteOffset 2^64 - 2 plus byteLength 4 wraps to 2, inside the 4-byte buffer.
+  const std::string path = temp_file(
+      "wrap.gltf",
+      R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 4, "uri": "data:application/octet-stream;base64,AAAAAA=="}],
+          "bufferViews": [{"buffer": 0, "byteOffset": 18446744073709551614, "byteLength": 4}]})");
+  expect_usage_error("scene analyze " + path, "bufferViews[0] (bytes 18446744073709551614..");
+}
+
+TEST(Hostile, LfsPointerWithNegativeSizeIsNotAPointer) {
+  // std::stoull reads "-5" as 2^64 - 5: the pointer would announce an enormous buffer.
+  temp_file("negative.bin", "version https://git-lfs.github.com/spec/v1\noid sha256:00\nsize -5\n");
+  const std::string path = temp_file(
+      "lfs.gltf",
+      R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 100, "uri": "hostile_negative.bin"}], "bufferViews": [{"buffer": 0, "byteLength": 100}]})");
+  expect_usage_error("scene analyze " + path, "buffers[0] declares 100 bytes but only 65 are available");
+}
+
+TEST(Hostile, HugeButFiniteDirectionsGiveTheSameAnswerAsSmallOnes) {
+  // The same direction written with components near the double maximum and near the smallest
+  // subnormal: its squared length overflows or underflows, its direction does not.
+  // The result without its provenance (which holds the command line).
+  auto result = [](const std::string& args) {
+    const ToolRun r = run_dspbr(args);
+    EXPECT_EQ(r.status, 0) << args << "\n" << r.output;
+    Json j = Json::parse(r.output, nullptr, false);
+    if (j.is_object()) j.erase("provenance");
+    return j;
+  };
+  const Json unit = result("eval --view 1,1,1 --light 0,1,1");
+  ASSERT_TRUE(unit.is_object());
+  EXPECT_EQ(result("eval --view 1e308,1e308,1e308 --light 0,1e308,1e308"), unit);
+  EXPECT_EQ(result("eval --view 1e-320,1e-320,1e-320 --light 0,1e-320,1e-320"), unit);
+  expect_usage_error("eval --view 1e309,0,1 --light 0,0,1", "--view expects 3 comma-separated finite numbers");
+}
+
+TEST(Hostile, ResultsThatOverflowAreErrorsNotNull) {
+  // Legal values (emissionValue and emissionColor have no maximum) whose product exceeds the
+  // largest double: the emission would print as null.
+  expect_usage_error("eval --set emissionValue=1e308 --set emissionColor=10,10,10 --view 0,0,1 --light 0,0,1",
+                     "the result \"emission[0]\" is not finite");
+  expect_usage_error("sample --set emissionValue=1e308 --set emissionColor=10,10,10 --view 0,0,1 --u 0.5,0.5,0.5",
+                     "is not finite");
+  // Large but representable: printed as numbers.
+  const ToolRun r = run_dspbr("eval --set emissionValue=1e300 --view 0,0,1 --light 0,0,1");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_GT(Json::parse(r.output)["emission"][0].get<double>(), 1e299);
+}
+
+TEST(Hostile, TableAxisWithAnEmptyRangeIsRefused) {
+  // Found by fuzz_luts: lo == hi made the lookup's cell index 0/0 (UBSan: NaN converted to int).
+  const std::string text =
+      R"({"format": "dspbr_luts", "tables": {"GGX_E_avg": {"axes": [{"name": "roughness", "size": 2, "lo": 0.5, "hi": 0.5, "grid": "cell"}], "values": [1, 1]}}})";
+  try {
+    dspbr::read_lut_json_text(text, "range.json");
+    ADD_FAILURE() << "accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "'range.json': tables.GGX_E_avg.axes[0]: lo must be below hi");
+  }
+}

@@ -1,0 +1,124 @@
+// An interrupted `dspbr lut` removes what it created and says so (apps/dspbr/interrupt_cleanup.h):
+// the tool is started on a long run, interrupted once its handlers are installed, and the output
+// folder is compared with what was there before.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A run far longer than the test: a 2048x2048 GGX_E table at the full fixed budget.
+const std::vector<std::string> kLongRun = {"lut", "--tables", "GGX_E", "--size", "GGX_E=2048x2048", "--target-error",
+                                           "0", "--formats", "json", "--threads", "1"};
+
+struct LutRun {
+  pid_t pid = -1;
+  std::string log;
+};
+
+LutRun start(const std::string& out, const std::string& log) {
+  std::vector<std::string> args = {DSPBR_EXE};
+  args.insert(args.end(), kLongRun.begin(), kLongRun.end());
+  args.push_back("--out");
+  args.push_back(out);
+  LutRun r;
+  r.log = log;
+  r.pid = fork();
+  if (r.pid == 0) {
+    FILE* f = std::fopen(log.c_str(), "w");
+    if (f) dup2(fileno(f), 2);
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return r;
+}
+
+// Whether the process catches `sig` (bit sig - 1 of SigCgt in /proc/PID/status): the tool has
+// installed its handlers.
+bool catches(pid_t pid, int sig) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("SigCgt:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) >> (sig - 1)) & 1;
+  return false;
+}
+
+// Waits (polling, up to a minute: the condition, not the time, is what is tested) for `ready`.
+template <class F>
+bool wait_for(F ready) {
+  for (int i = 0; i < 6000; ++i) {
+    if (ready()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return false;
+}
+
+std::string read_all(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::set<std::string> listing(const fs::path& dir) {
+  std::set<std::string> out;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) out.insert(fs::relative(e.path(), dir).string());
+  return out;
+}
+
+// Interrupts the run with `sig` once it catches it and its output folder exists; returns the
+// exit status (-1 when it did not exit normally).
+int interrupt(const LutRun& r, const fs::path& out, int sig) {
+  EXPECT_TRUE(wait_for([&] { return catches(r.pid, sig) && fs::exists(out); })) << read_all(r.log);
+  kill(r.pid, sig);
+  int status = 0;
+  waitpid(r.pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace
+
+TEST(Interrupt, LutRemovesTheFolderItCreated) {
+  for (int sig : {SIGINT, SIGTERM}) {
+    const fs::path out = fs::path(::testing::TempDir()) / ("interrupt_new_" + std::to_string(sig));
+    fs::remove_all(out);
+    const LutRun r = start(out.string(), out.string() + ".log");
+    const int status = interrupt(r, out, sig);
+    EXPECT_EQ(status, 128 + sig) << read_all(r.log);
+    EXPECT_FALSE(fs::exists(out)) << "left behind: " << out;
+    const std::string log = read_all(r.log);
+    EXPECT_NE(log.find(std::string("dspbr: interrupted (") + (sig == SIGINT ? "SIGINT" : "SIGTERM") +
+                       "): removed the output folder '" + out.string() + "' it created"),
+              std::string::npos)
+        << log;
+  }
+}
+
+TEST(Interrupt, LutKeepsWhatWasThereBefore) {
+  const fs::path out = fs::path(::testing::TempDir()) / "interrupt_existing";
+  fs::remove_all(out);
+  fs::create_directories(out / "sub");
+  std::ofstream(out / "keep.txt") << "kept";
+  std::ofstream(out / "sub" / "dspbr_luts.json") << "an older file";
+  const std::set<std::string> before = listing(out);
+  const LutRun r = start(out.string(), out.string() + ".log");
+  const int status = interrupt(r, out, SIGINT);
+  EXPECT_EQ(status, 128 + SIGINT) << read_all(r.log);
+  EXPECT_EQ(listing(out), before);
+  EXPECT_EQ(read_all((out / "keep.txt").string()), "kept");
+  EXPECT_NE(read_all(r.log).find("dspbr: interrupted (SIGINT): removed "), std::string::npos) << read_all(r.log);
+}
