@@ -110,7 +110,7 @@ float dspbr_fit_sheen_lambda(float cos_theta, float alpha_b) {
   float x = f1 * f1 * ((1.0f - m * m) / (m * m));
   return f0 * x / (sqrt(1.0f + x) + 1.0f) * exp(f2 * m / (1.0f + f3 * m));
 }
-float dspbr_fit_detail_dual_dspbr_fit_ggx_E_q(float x_, float y1_, float y2_) {
+float dspbr_fit_detail_dual_ggx_E(float x_, float y1_, float y2_) {
   float x = 2.0f * x_ - 1.0f, y1 = 2.0f * y1_ - 1.0f, y2 = 2.0f * y2_ - 1.0f;
   float acc = 0.0f;
   for (int i = 6; i >= 0; --i) {
@@ -123,7 +123,7 @@ float dspbr_fit_detail_dual_dspbr_fit_ggx_E_q(float x_, float y1_, float y2_) {
   }
   return acc;
 }
-float dspbr_fit_detail_dual_dspbr_fit_ggx_E5_q(float x_, float y1_, float y2_) {
+float dspbr_fit_detail_dual_ggx_E5(float x_, float y1_, float y2_) {
   float x = 2.0f * x_ - 1.0f, y1 = 2.0f * y1_ - 1.0f, y2 = 2.0f * y2_ - 1.0f;
   float acc = 0.0f;
   for (int i = 6; i >= 0; --i) {
@@ -136,7 +136,7 @@ float dspbr_fit_detail_dual_dspbr_fit_ggx_E5_q(float x_, float y1_, float y2_) {
   }
   return acc;
 }
-float dspbr_fit_detail_dual_dspbr_fit_sheen_E_q(float x_, float y1_, float y2_) {
+float dspbr_fit_detail_dual_sheen_E(float x_, float y1_, float y2_) {
   float x = 2.0f * x_ - 1.0f, y1 = 2.0f * y1_ - 1.0f, y2 = 2.0f * y2_ - 1.0f;
   float acc = 0.0f;
   for (int i = 6; i >= 0; --i) {
@@ -149,7 +149,7 @@ float dspbr_fit_detail_dual_dspbr_fit_sheen_E_q(float x_, float y1_, float y2_) 
   }
   return acc;
 }
-float dspbr_fit_detail_dual_dspbr_fit_sheen_ash_E_q(float x_, float y1_, float y2_) {
+float dspbr_fit_detail_dual_sheen_ash_E(float x_, float y1_, float y2_) {
   float x = 2.0f * x_ - 1.0f, y1 = 2.0f * y1_ - 1.0f, y2 = 2.0f * y2_ - 1.0f;
   float acc = 0.0f;
   for (int i = 6; i >= 0; --i) {
@@ -166,7 +166,7 @@ float dspbr_fit_detail_clamp01(float x) { return clamp(x, 0.0f, 1.0f); }
 float dspbr_fit_ggx_E_loss(float cos_theta, float roughness) {
   float a = roughness * roughness, d = cos_theta + a;
   float u = d > 0.0f ? cos_theta / d : 1.0f, w = d > 0.0f ? a / d : 0.0f;
-  return dspbr_fit_detail_clamp01(w * w * dspbr_fit_detail_dual_dspbr_fit_ggx_E_q(roughness, u, cos_theta));
+  return dspbr_fit_detail_clamp01(w * w * dspbr_fit_detail_dual_ggx_E(roughness, u, cos_theta));
 }
 float dspbr_fit_ggx_E(float cos_theta, float roughness) { return 1.0f - dspbr_fit_ggx_E_loss(cos_theta, roughness); }
 float dspbr_fit_ggx_E_avg_loss(float roughness) {
@@ -185,7 +185,7 @@ float dspbr_fit_ggx_E_avg(float roughness) { return 1.0f - dspbr_fit_ggx_E_avg_l
 float dspbr_fit_detail_ggx_E5(float cos_theta, float roughness) {
   float d = cos_theta + roughness * roughness;
   float u = d > 0.0f ? cos_theta / d : 1.0f;
-  return dspbr_fit_detail_clamp01(dspbr_fit_detail_dual_dspbr_fit_ggx_E5_q(roughness, cos_theta, u));
+  return dspbr_fit_detail_clamp01(dspbr_fit_detail_dual_ggx_E5(roughness, cos_theta, u));
 }
 float dspbr_fit_detail_ggx_E5_avg(float roughness) {
   float x = 2.0f * roughness - 1.0f;
@@ -211,13 +211,13 @@ float dspbr_fit_sheen_E(float cos_theta, float alpha_b) {
   float mu = clamp(cos_theta, 1e-3f, 1.0f);
   float l = -log2(a) / 8.0f;
   float u = cos_theta / (cos_theta + 0.5f * sqrt(a));
-  return max(dspbr_fit_detail_dual_dspbr_fit_sheen_E_q(l, 1.0f + log2(mu) * 0.100343331f, u), 0.0f);
+  return max(dspbr_fit_detail_dual_sheen_E(l, 1.0f + log2(mu) * 0.100343331f, u), 0.0f);
 }
 float dspbr_fit_sheen_ash_E(float cos_theta, float alpha_b) {
   float a = clamp(alpha_b, 0.00390625f, 1.0f);
   float l = -log2(a) / 8.0f;
   float u = cos_theta / (cos_theta + 0.5f * sqrt(a));
-  return max(dspbr_fit_detail_dual_dspbr_fit_sheen_ash_E_q(l, sqrt(cos_theta), u), 0.0f);
+  return max(dspbr_fit_detail_dual_sheen_ash_E(l, sqrt(cos_theta), u), 0.0f);
 }
 float dspbr_fit_flake_roughness(float flake_roughness) {
   return sqrt(flake_roughness) * (1.11513841f + 0.548054814f * flake_roughness) / (1.0f + 1.00590086f * flake_roughness);

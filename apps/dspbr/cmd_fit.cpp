@@ -98,6 +98,7 @@ json sheen_lambda_doc(const FitArgs& a, const fit::FitContext& ctx) {
                           {"start", "the spec's coefficients"},
                           {"converged", r.spec_form_summary.converged}};
   d["domain"] = {{"alpha_b", {s.alpha_min, 1.0}}, {"cos_theta", {s.mu_min, s.mu_max}}};
+  d["cost"] = "2 sqrt, 1 exp, 6 div, ~30 mul/add per call (measured ns: docs/fits.md, bench/bench_fits.cpp)";
   d["fit"] = {{"metric", "ln Lambda (relative error), minimax by Lawson reweighting"},
               {"grid", {{"alpha_b", {{"kind", "geometric"}, {"n", s.n_alpha}}},
                         {"cos_theta", {{"kind", "geometric below 0.1, uniform above"}, {"n", s.n_mu}}}}},

@@ -29,10 +29,11 @@ std::string table(const std::string& name, const nlohmann::json& a) {
   return o.str();
 }
 
-// S(x; y1, y2) of albedo_forms.h over the array `q` (dual_poly2).
-std::string dual_function(const std::string& q) {
+// S(x; y1, y2) of albedo_forms.h over the array dspbr_fit_<name>_q (dual_poly2).
+std::string dual_function(const std::string& name) {
   const int n = kPoly2Degree;
-  return fmt::format(R"(float dspbr_fit_detail_dual_{0}(float x_, float y1_, float y2_) {{
+  const std::string q = "dspbr_fit_" + name + "_q";
+  return fmt::format(R"(float dspbr_fit_detail_dual_{6}(float x_, float y1_, float y2_) {{
   float x = 2.0f * x_ - 1.0f, y1 = 2.0f * y1_ - 1.0f, y2 = 2.0f * y2_ - 1.0f;
   float acc = 0.0f;
   for (int i = {1}; i >= 0; --i) {{
@@ -46,7 +47,7 @@ std::string dual_function(const std::string& q) {
   return acc;
 }}
 )",
-                     q, n, n + 1, kPoly2Params, n - 1, n - 2);
+                     q, n, n + 1, kPoly2Params, n - 1, n - 2, name);
 }
 
 }  // namespace
@@ -87,13 +88,13 @@ float dspbr_fit_sheen_lambda(float cos_theta, float alpha_b) {
     const auto& c = al["coefficients"];
     for (const char* k : {"ggx_E", "ggx_E_avg", "ggx_E5", "ggx_E5_avg", "sheen_E", "sheen_ash_E"})
       o << table(std::string("dspbr_fit_") + k + "_q", c[k]);
-    for (const char* k : {"ggx_E", "ggx_E5", "sheen_E", "sheen_ash_E"}) body += dual_function(std::string("dspbr_fit_") + k + "_q");
+    for (const char* k : {"ggx_E", "ggx_E5", "sheen_E", "sheen_ash_E"}) body += dual_function(k);
     const int d = kAvgDegree;
     body += fmt::format(R"(float dspbr_fit_detail_clamp01(float x) {{ return clamp(x, 0.0f, 1.0f); }}
 float dspbr_fit_ggx_E_loss(float cos_theta, float roughness) {{
   float a = roughness * roughness, d = cos_theta + a;
   float u = d > 0.0f ? cos_theta / d : 1.0f, w = d > 0.0f ? a / d : 0.0f;
-  return dspbr_fit_detail_clamp01(w * w * dspbr_fit_detail_dual_dspbr_fit_ggx_E_q(roughness, u, cos_theta));
+  return dspbr_fit_detail_clamp01(w * w * dspbr_fit_detail_dual_ggx_E(roughness, u, cos_theta));
 }}
 float dspbr_fit_ggx_E(float cos_theta, float roughness) {{ return 1.0f - dspbr_fit_ggx_E_loss(cos_theta, roughness); }}
 float dspbr_fit_ggx_E_avg_loss(float roughness) {{
@@ -112,7 +113,7 @@ float dspbr_fit_ggx_E_avg(float roughness) {{ return 1.0f - dspbr_fit_ggx_E_avg_
 float dspbr_fit_detail_ggx_E5(float cos_theta, float roughness) {{
   float d = cos_theta + roughness * roughness;
   float u = d > 0.0f ? cos_theta / d : 1.0f;
-  return dspbr_fit_detail_clamp01(dspbr_fit_detail_dual_dspbr_fit_ggx_E5_q(roughness, cos_theta, u));
+  return dspbr_fit_detail_clamp01(dspbr_fit_detail_dual_ggx_E5(roughness, cos_theta, u));
 }}
 float dspbr_fit_detail_ggx_E5_avg(float roughness) {{
   float x = 2.0f * roughness - 1.0f;
@@ -138,13 +139,13 @@ float dspbr_fit_sheen_E(float cos_theta, float alpha_b) {{
   float mu = clamp(cos_theta, 1e-3f, 1.0f);
   float l = -log2(a) / 8.0f;
   float u = cos_theta / (cos_theta + 0.5f * sqrt(a));
-  return max(dspbr_fit_detail_dual_dspbr_fit_sheen_E_q(l, 1.0f + log2(mu) * 0.100343331f, u), 0.0f);
+  return max(dspbr_fit_detail_dual_sheen_E(l, 1.0f + log2(mu) * 0.100343331f, u), 0.0f);
 }}
 float dspbr_fit_sheen_ash_E(float cos_theta, float alpha_b) {{
   float a = clamp(alpha_b, 0.00390625f, 1.0f);
   float l = -log2(a) / 8.0f;
   float u = cos_theta / (cos_theta + 0.5f * sqrt(a));
-  return max(dspbr_fit_detail_dual_dspbr_fit_sheen_ash_E_q(l, sqrt(cos_theta), u), 0.0f);
+  return max(dspbr_fit_detail_dual_sheen_ash_E(l, sqrt(cos_theta), u), 0.0f);
 }}
 )",
                         d, d + 1, d - 1, 0, flit(1.0 / std::log(kAvgBreak1 / kAvgLogLo)));

@@ -1,6 +1,7 @@
 #include "dspbr/fit/flake_fit.h"
 
 #include <ceres/ceres.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -317,6 +318,9 @@ nlohmann::json flake_roughness_fit(const FitContext& ctx) {
   d["lobe_error_max"] = lobe_model;
   d["albedo_error_max"] = albedo_model;
   d["error_domain"] = {{"flake_roughness", {0.05, 1.0}}, {"view_deg", {0, 80}}};
+  d["cost"] = {{"dspbr_fit_flake_roughness", "1 sqrt, 1 div, 2 mul/add"},
+               {"dspbr_fit_flake_lobe", fmt::format("{} rim points x (1 div, ~30 mul/add) + 2 sqrt, 3 div", kFlakeRimPoints)},
+               {"measured", "docs/fits.md, bench/bench_fits.cpp"}};
   d["ggx_lobe_error_max"] = lobe_max;
   d["ggx_albedo_error_max"] = albedo_max;  // |E_ggx(v; r_eq) - E_agg(v)| of the unscaled lobe
   return d;
