@@ -273,7 +273,8 @@ nlohmann::json flake_roughness_fit(const FitContext& ctx) {
                                               : std::vector<double>{0.05, 0.07, 0.1, 0.13, 0.17, 0.25, 0.35, 0.5, 0.7, 0.85, 1.0};
     // the rim quadrature's cost against its error (the trade table of docs/fits.md); the
     // published model uses kFlakeRimPoints
-    for (int k : {8, 16, 32, 64}) {
+    const std::vector<int> rim_counts = ctx.quick ? std::vector<int>{kFlakeRimPoints} : std::vector<int>{8, 16, 32, 64};
+    for (int k : rim_counts) {
       const auto ev = parallel_map<std::vector<FlakeModelView>>(ctx, rfe.size(), [&](size_t i) { return flake_conv_model_error(rfe[i], k, ctx.quick); });
       double lmax = 0, amax = 0;
       nlohmann::json rows = nlohmann::json::array();
