@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "../fits/dspbr_fits.hpp"
@@ -68,6 +69,34 @@ void BM_FitSheenE(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
 }
 BENCHMARK(BM_FitSheenE);
+
+void BM_FitGgxEAvg(benchmark::State& state) {
+  const Inputs& in = inputs();
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(dspbr_fit_ggx_E_avg(in.r[i]));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_FitGgxEAvg);
+
+void BM_FitSheenAshE(benchmark::State& state) {
+  const Inputs& in = inputs();
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(dspbr_fit_sheen_ash_E(in.mu[i], in.r[i]));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_FitSheenAshE);
+
+// The far-field flake lobe: v at the angle acos(mu), l near its mirror direction.
+void BM_FitFlakeLobe(benchmark::State& state) {
+  const Inputs& in = inputs();
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) {
+      const float c = 0.2f + 0.8f * in.mu[i], s = std::sqrt(1.0f - c * c);
+      benchmark::DoNotOptimize(dspbr_fit_flake_lobe(s, 0.0f, c, -s + 0.05f * in.r[i], 0.03f, c, 0.05f + 0.95f * in.r[i]));
+    }
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_FitFlakeLobe);
 
 void BM_FitSheenLambda(benchmark::State& state) {
   const Inputs& in = inputs();

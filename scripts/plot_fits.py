@@ -105,6 +105,29 @@ def plot_flakes(fl, out):
     plt.close(fig)
 
 
+def plot_flake_lobes(fl, out):
+    slices = fl["lobe_slices"]
+    rfs = sorted({s["r_f"] for s in slices})
+    views = sorted({s["view_deg"] for s in slices})
+    fig, axes = plt.subplots(len(rfs), len(views), figsize=(11, 8))
+    for s in slices:
+        ax = axes[rfs.index(s["r_f"])][views.index(s["view_deg"])]
+        t = np.degrees(np.array(s["theta_offset"]))
+        agg, cone, ggx = (np.array(s[k]) for k in ("aggregate", "cone_lobe", "ggx"))
+        scale = np.dot(agg, ggx) / max(np.dot(ggx, ggx), 1e-30)  # best scale of the GGX lobe on the slice
+        ax.plot(t, agg, "k-", lw=2, label="aggregate (quadrature)")
+        ax.plot(t, cone, "r--", label="cone lobe (model)")
+        ax.plot(t, scale * ggx, "b:", label="GGX r_eq, best scale")
+        ax.set_title("r_f = %.2f, view %g deg" % (s["r_f"], s["view_deg"]), fontsize=9)
+        ax.set_xlabel("theta_l - theta_mirror (deg)", fontsize=8)
+        ax.tick_params(labelsize=7)
+    axes[0][0].legend(fontsize=7)
+    fig.suptitle("far-field flake lobe f cos(theta_l) in the plane of incidence")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "fit_flake_lobes.png"), dpi=80)
+    plt.close(fig)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--fits", default="fits")
@@ -115,6 +138,7 @@ def main():
     plot_sheen_albedo(load(a.fits, "sheen_lambda"), a.out)
     plot_maps(load(a.fits, "albedo"), a.out)
     plot_flakes(load(a.fits, "flake_roughness"), a.out)
+    plot_flake_lobes(load(a.fits, "flake_roughness"), a.out)
 
 
 if __name__ == "__main__":

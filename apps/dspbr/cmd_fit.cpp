@@ -15,6 +15,7 @@
 #include "commands.h"
 #include "dspbr/fit/albedo_fit.h"
 #include "dspbr/fit/fits_header.h"
+#include "dspbr/fit/fits_shader.h"
 #include "dspbr/fit/flake_fit.h"
 #include "dspbr/fit/sheen_lambda_fit.h"
 #include "dspbr/io/atomic_file.h"
@@ -44,11 +45,11 @@ std::vector<std::string> parse_only(const std::string& s) {
   auto flush = [&] {
     if (cur.empty()) return;
     // the albedo fits form one group (Base_E is built from the GGX fits): accept their names
-    static const std::set<std::string> albedo = {"ggx_E", "ggx_E_avg", "base_E", "base_E_avg", "sheen_E"};
+    static const std::set<std::string> albedo = {"ggx_E", "ggx_E_avg", "base_E", "base_E_avg", "sheen_E", "sheen_ash_E"};
     const std::string name = albedo.count(cur) ? "albedo" : cur;
     if (std::find(kFitNames.begin(), kFitNames.end(), name) == kFitNames.end())
       throw UsageError("--only: unknown fit '" + cur +
-                       "' (use sheen_lambda, albedo (or ggx_E, ggx_E_avg, base_E, base_E_avg, sheen_E), flake_roughness)");
+                       "' (use sheen_lambda, albedo (or ggx_E, ggx_E_avg, base_E, base_E_avg, sheen_E, sheen_ash_E), flake_roughness)");
     if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
     cur.clear();
   };
@@ -97,6 +98,7 @@ json sheen_lambda_doc(const FitArgs& a, const fit::FitContext& ctx) {
                           {"start", "the spec's coefficients"},
                           {"converged", r.spec_form_summary.converged}};
   d["domain"] = {{"alpha_b", {s.alpha_min, 1.0}}, {"cos_theta", {s.mu_min, s.mu_max}}};
+  d["cost"] = "2 sqrt, 1 exp, 6 div, ~30 mul/add per call (measured ns: docs/fits.md, bench/bench_fits.cpp)";
   d["fit"] = {{"metric", "ln Lambda (relative error), minimax by Lawson reweighting"},
               {"grid", {{"alpha_b", {{"kind", "geometric"}, {"n", s.n_alpha}}},
                         {"cos_theta", {{"kind", "geometric below 0.1, uniform above"}, {"n", s.n_mu}}}}},
@@ -118,43 +120,57 @@ json sheen_lambda_doc(const FitArgs& a, const fit::FitContext& ctx) {
 json albedo_doc(const FitArgs& a, const fit::FitContext& ctx) {
   fit::AlbedoFitSettings s;
   if (ctx.quick) {
-    s.n_r = 10;
+    s.n_r = 8;
     s.n_mu = 12;
-    s.samples = 1024;
+    s.panels = 6;
   }
   const auto r = fit::fit_albedos(s, ctx);
   json d;
   d["name"] = "albedo";
   d["functions"] = {"dspbr_fit_ggx_E(float cos_theta, float roughness)", "dspbr_fit_ggx_E_avg(float roughness)",
                     "dspbr_fit_base_E(float cos_theta, float roughness, float f0)",
-                    "dspbr_fit_base_E_avg(float roughness, float f0)", "dspbr_fit_sheen_E(float cos_theta, float alpha_b)"};
-  d["form"] = {{"ggx_E", "S(r; u, mu), u = mu/(mu + r^2); S(x; y1, y2) = sum_{i,j<=5} q[6i+j] X^i Y1^j + sum_{i<=5, 1<=j<=5} q[36+5i+j-1] X^i Y2^j with X = 2x - 1, Y = 2y - 1"},
-               {"ggx_E_avg", "1 - r^3 sum_k q[k] R^k, k = 0..7, R = 2r - 1"},
+                    "dspbr_fit_base_E_avg(float roughness, float f0)", "dspbr_fit_sheen_E(float cos_theta, float alpha_b)",
+                    "dspbr_fit_sheen_ash_E(float cos_theta, float alpha_b)"};
+  d["form"] = {{"ggx_E", "1 - (1 - u) S(r; u, mu), u = mu/(mu + r^2); S(x; y1, y2) = sum_{i,j<=5} q[6i+j] X^i Y1^j + sum_{i<=5, 1<=j<=5} q[36+5i+j-1] X^i Y2^j with X = 2x - 1, Y = 2y - 1"},
+               {"ggx_E_avg", "1 - r^2 sum_k q[k] R^k, k = 0..7, R = 2r - 1; fitted to 2 Integral E^_m mu dmu of the fitted ggx_E (relative error of 1 - E_avg)"},
                {"ggx_E5", "S(r; mu, u): E_5 = Integral M_r (1 - v.h)^5 mu_l dl"},
-               {"ggx_E5_avg", "sum_k q[k] R^k, k = 0..7, R = 2r - 1"},
+               {"ggx_E5_avg", "sum_k q[k] R^k, k = 0..7, R = 2r - 1; fitted to 2 Integral E^_5 mu dmu of the fitted E_5"},
                {"base_E", "f0 E_m + (1 - f0) E_5 + F_ms(f0, 1; E_m,avg) (1 - E_m) (exact decomposition)"},
                {"base_E_avg", "f0 E_m,avg + (1 - f0) E_5,avg + F_ms (1 - E_m,avg)"},
-               {"sheen_E", "S(l; sqrt(mu), mu/(mu + sqrt(alpha_b)/2)), l = -log2(alpha_b)/8, alpha_b clamped to [1/256, 1]; main sheen model (spec's Lambda fit)"}};
+               {"sheen_E", "S(l; sqrt(mu), mu/(mu + sqrt(alpha_b)/2)), l = -log2(alpha_b)/8, alpha_b clamped to [1/256, 1]; main sheen model (spec's Lambda fit)"},
+               {"sheen_ash_E", "as sheen_E, for the alternative sheen (Ashikhmin-style visibility, [NP13])"}};
   d["coefficients"] = {{"ggx_E", r.params.ggx_E},   {"ggx_E_avg", r.params.ggx_E_avg}, {"ggx_E5", r.params.ggx_E5},
-                       {"ggx_E5_avg", r.params.ggx_E5_avg}, {"sheen_E", r.params.sheen_E}};
-  d["start"] = "constants: P_Em = 1, Q_avg = 0.5 (E_m,avg = 1 - r^3/2), P_E5 = 0.1, Q_5,avg = 0.1, P_b = 0.5 (all other coefficients 0)";
-  d["domain"] = {{"cos_theta", {0.0, 1.0}}, {"roughness", {0.0, 1.0}}, {"f0", {0.0, 1.0}}, {"alpha_b", {s.alpha_b_min, 1.0}}};
-  d["fit"] = {{"metric", "absolute error, minimax by Lawson reweighting"},
-              {"reference", "lut/albedo.h QMC integrals"},
-              {"samples", s.samples},
-              {"grid", {{"roughness", fmt::format("{} cell-centred + 0 and 1", s.n_r)},
-                        {"cos_theta", fmt::format("{} (geometric from 0.002 below 0.1, uniform above) + 1", s.n_mu)},
+                       {"ggx_E5_avg", r.params.ggx_E5_avg}, {"sheen_E", r.params.sheen_E}, {"sheen_ash_E", r.params.sheen_ash_E}};
+  d["start"] = "constants: S_Em = 0.5, Q_avg = 0.5, S_E5 = 0.1, Q_5,avg = 0.1, S_b = 0.5 (all other coefficients 0)";
+  d["domain"] = {{"cos_theta", {s.mu_min, 1.0}}, {"roughness", {0.0, 1.0}}, {"f0", {0.0, 1.0}}, {"alpha_b", {s.alpha_b_min, 1.0}}};
+  // Operation counts per call of the generated float code (the measured ns are in docs/fits.md,
+  // bench/bench_fits.cpp: timings are not reproducible bytes).
+  d["cost"] = {{"ggx_E", "66 FMA (Horner), 1 div"},
+               {"ggx_E_avg", "8 FMA"},
+               {"base_E", "2 x 66 FMA + 8 FMA, 2 div"},
+               {"base_E_avg", "2 x 8 FMA, 1 div"},
+               {"sheen_E", "66 FMA, 2 sqrt, 1 log2, 1 div"},
+               {"sheen_ash_E", "66 FMA, 2 sqrt, 1 log2, 1 div"}};
+  d["fit"] = {{"metric", "absolute error (ggx_E_avg: relative error of 1 - E_avg), minimax by Lawson reweighting"},
+              {"reference", "validate/lut_reference.h: deterministic Gauss-Legendre quadrature over the half vector"},
+              {"panels", s.panels},
+              {"reference_error_max", r.reference_error_max},
+              {"ggx_E_avg_tolerance_units_max", r.ggx_E_avg.max_abs_residual},
+              {"grid", {{"roughness", fmt::format("0, 1, 8 geometric on [0.004, 0.1), {} cell-centred", s.n_r)},
+                        {"cos_theta", fmt::format("{} (geometric from {} below 0.1, uniform above) + both ends", s.n_mu, 0.5 * s.mu_min)},
                         {"alpha_b", fmt::format("{} geometric", s.n_r)}}},
-              {"lawson_rounds", {{"default", s.minimax.lawson_rounds}, {"sheen_E", s.minimax.lawson_rounds + 1}}},
+              {"lawson_rounds", {{"default", s.minimax.lawson_rounds}, {"averages", 8}}},
               {"converged",
                {{"ggx_E", r.ggx_E.converged}, {"ggx_E_avg", r.ggx_E_avg.converged}, {"ggx_E5", r.ggx_E5.converged},
-                {"ggx_E5_avg", r.ggx_E5_avg.converged}, {"sheen_E", r.sheen_E.converged}}}};
+                {"ggx_E5_avg", r.ggx_E5_avg.converged}, {"sheen_E", r.sheen_E.converged},
+                {"sheen_ash_E", r.sheen_ash_E.converged}}}};
   d["error"] = fit::albedo_report(s, r.params, ctx);
   d["command"] = reproduce_command(a, "albedo");
   d["settings"] = {{"seed", a.seed}, {"quick", a.quick}};
-  std::printf("albedo fits: abs error on a fresh grid (max / mean):\n");
-  for (const char* k : {"ggx_E", "ggx_E_avg", "base_E", "base_E_avg", "sheen_E", "white_furnace_metal"})
-    std::printf("  %-20s %.2e / %.2e\n", k, d["error"][k]["max"].get<double>(), d["error"][k]["mean"].get<double>());
+  std::printf("albedo fits: abs error on a fresh whole-domain grid (max / mean):\n");
+  for (const char* k : {"ggx_E", "ggx_E_avg", "base_E", "base_E_avg", "sheen_E", "sheen_ash_E", "white_furnace_metal",
+                        "white_furnace_dielectric"})
+    std::printf("  %-26s %.2e / %.2e\n", k, d["error"][k]["max"].get<double>(), d["error"][k]["mean"].get<double>());
   return d;
 }
 
@@ -195,7 +211,9 @@ void run(const FitArgs& a, const std::string& command_line) {
   const json sl = read_json_if_exists(dir / "sheen_lambda.json"), al = read_json_if_exists(dir / "albedo.json"),
              fl = read_json_if_exists(dir / "flake_roughness.json");
   write_text_atomically((dir / "dspbr_fits.hpp").string(), fit::generate_fits_header(sl, al, fl));
-  std::printf("wrote %s/{%s}.json and dspbr_fits.hpp\n", a.out.c_str(), fmt::format("{}", fmt::join(names, ",")).c_str());
+  write_text_atomically((dir / "dspbr_fits.glsl").string(), fit::generate_fits_shader(sl, al, fl, fit::ShaderDialect::Glsl));
+  write_text_atomically((dir / "dspbr_fits.hlsl").string(), fit::generate_fits_shader(sl, al, fl, fit::ShaderDialect::Hlsl));
+  std::printf("wrote %s/{%s}.json and dspbr_fits.{hpp,glsl,hlsl}\n", a.out.c_str(), fmt::format("{}", fmt::join(names, ",")).c_str());
 }
 
 }  // namespace

@@ -12,4 +12,7 @@ namespace dspbr::fit {
 std::string generate_fits_header(const nlohmann::json& sheen_lambda, const nlohmann::json& albedo,
                                  const nlohmann::json& flake_roughness);
 
+// The C++ text of dspbr_fit_flake_lobe (also turned into the shaders' version, fits_shader.h).
+std::string flake_lobe_code(const nlohmann::json& flake_roughness);
+
 }  // namespace dspbr::fit

@@ -23,6 +23,17 @@ namespace dspbr::fit {
 // Aggregate flake BRDF f_agg(v, l) for flake roughness r_f (v, l in the local frame, z = normal).
 double flake_aggregate_brdf(const Vec3& v, const Vec3& l, double r_f);
 
+// The far-field flake lobe (model): f_agg(v, l) is the mean, over the cap of directions r within
+// theta_cone of l, of the density of mirror directions r = reflect(v, n), and that integral is the
+// mass of the flake-normal density D(n) n.z over the image of the cap under r -> n = normalize(v + r):
+//   f(v, l) = Mass_{D n.z}(image of cap(l)) / Omega_cone      (dr = 4 (v.n) dn)
+// In slope space D n.z dn is the GGX slope density P22(x; a) = a^2 / (pi (a^2 + |x|^2)^2), which is
+// the Laplacian of ln(a^2 + |x|^2) / (4 pi); by the divergence theorem the mass inside a closed
+// curve is (1 / 2 pi) closed integral of (x dy - y dx) / (a^2 + |x|^2) along it: here the image of
+// the cap's rim, integrated by the periodic trapezoidal rule with `rim_points` points.
+// a = alpha_ggx of the flakes, cos_cone = cos theta_cone (spec "Flakes"); v, l local, z = normal.
+double flake_conv_lobe(const Vec3& v, const Vec3& l, double a, double cos_cone, int rim_points);
+
 // Per-r_f fit of r_eq (and the per-view scales) and its errors.
 struct FlakeView {
   double cos_view, scale, albedo_aggregate, albedo_ggx;  // albedo_ggx: unscaled GGX lobe, r_eq
@@ -34,6 +45,17 @@ struct FlakeLobeFit {
   std::vector<FlakeView> views;
 };
 FlakeLobeFit fit_flake_lobe(double r_f, bool quick = false);
+
+// The cone-convolved lobe against the aggregate for one r_f at views 0, 10, .., 80 deg.
+struct FlakeModelView {
+  double view_deg, lobe_rel_l2, albedo_aggregate, albedo_model;
+};
+std::vector<FlakeModelView> flake_conv_model_error(double r_f, int rim_points, bool quick = false);
+// alpha_cone^2 of an unclamped cone: Omega / (4 pi - Omega) = tan^2(theta'/2), theta' = 7 deg
+// (spec eq. alpha-cone; flake_alpha_cone).
+double flake_tan2_half_cone();
+// Rim points of the published model (chosen by the study in flake_roughness_fit: errors vs cost).
+constexpr int kFlakeRimPoints = 16;
 
 // r_eq(r_f) = r_f (a0 + a1 r_f) / (1 + b1 r_f).
 double flake_roughness_formula(double r_f, const std::array<double, 3>& a);

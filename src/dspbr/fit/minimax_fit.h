@@ -23,6 +23,8 @@ struct MinimaxOptions {
   int max_iterations = 200;      // Levenberg-Marquardt iterations per solve
   double weight_floor = 1e-3;    // weights never drop below this fraction of the mean (keeps
                                  // every sample in the fit and the normal equations regular)
+  double ridge = 0;              // > 0: adds ridge * |p|^2 (Tikhonov) to the cost: keeps the
+                                 // coefficients of ill-conditioned bases small (float evaluation)
 };
 
 struct MinimaxSummary {
@@ -45,6 +47,16 @@ struct Weighted {
     return true;
   }
 };
+// sqrt(ridge) * p[k] for all k (Tikhonov regularisation).
+template <int N>
+struct Ridge {
+  double sqrt_ridge;
+  template <class T>
+  bool operator()(const T* p, T* r) const {
+    for (int k = 0; k < N; ++k) r[k] = T(sqrt_ridge) * p[k];
+    return true;
+  }
+};
 }  // namespace detail
 
 // Fits params (size N, in: starting point, out: result) to the samples.
@@ -58,6 +70,9 @@ MinimaxSummary fit_minimax(const std::vector<Functor>& samples, std::array<doubl
     problem.AddResidualBlock(new ceres::AutoDiffCostFunction<W, 1, N>(new W{samples[i], &weights[i]}), nullptr,
                              params.data());
   }
+  if (opt.ridge > 0)
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<detail::Ridge<N>, N, N>(new detail::Ridge<N>{std::sqrt(opt.ridge)}),
+                             nullptr, params.data());
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
   so.max_num_iterations = opt.max_iterations;

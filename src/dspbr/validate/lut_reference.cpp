@@ -158,6 +158,10 @@ RefValue ggx_albedo_ref(double mu, double roughness, const RefQuadrature& q) {
   return with_error([&](int p) { return ggx_h_integral(mu, roughness, -1, p); }, q.panels);
 }
 
+RefValue ggx_fresnel_albedo_ref(double mu, double roughness, double f0, const RefQuadrature& q) {
+  return with_error([&](int p) { return ggx_h_integral(mu, roughness, f0, p); }, q.panels);
+}
+
 RefValue ggx_albedo_avg_ref(double roughness, const RefQuadrature& q) {
   return with_error(
       [&](int p) { return average([&](double m, int pp) { return ggx_h_integral(m, roughness, -1, pp); }, p); },

@@ -29,6 +29,9 @@ struct RefQuadrature {
 RefValue ggx_albedo_ref(double mu, double roughness, const RefQuadrature& q = {});
 RefValue ggx_albedo_avg_ref(double roughness, const RefQuadrature& q = {});
 RefValue base_albedo_ref(double mu, double roughness, double f0, const RefQuadrature& q = {});
+// Integral M_r F(v.h; f0, 1) mu_l dl alone (no multiple-scattering part); f0 = 0 gives the
+// Schlick moment E_5 = Integral M_r (1 - v.h)^5 mu_l dl.
+RefValue ggx_fresnel_albedo_ref(double mu, double roughness, double f0, const RefQuadrature& q = {});
 RefValue base_albedo_avg_ref(double roughness, double f0, const RefQuadrature& q = {});
 RefValue sheen_albedo_ref(double mu, double alpha_b, bool alternative, const RefQuadrature& q = {});
 
