@@ -41,11 +41,13 @@ TEST(Provenance, PrintedDocumentsCarryTheVersionAndTheCommandLine) {
   EXPECT_EQ(eval["provenance"]["settings"]["tables"], "published");
 }
 
-TEST(Provenance, TableFilesRecordTheProjectVersionAndTheSameBytesInAnyFolder) {
+TEST(Provenance, TableFilesRecordTheProjectVersionAndTheSameBytesInAnyFolderWithAnyThreads) {
   const std::string a = ::testing::TempDir() + "/provenance_a", b = ::testing::TempDir() + "/provenance_b/deeper";
   for (const std::string& dir : {a, b}) {
     std::filesystem::remove_all(dir);
-    const ToolRun r = run_dspbr("lut --tables GGX_E_avg --size GGX_E_avg=4 --samples 256 --formats json,png --out " + dir);
+    const std::string threads = dir == a ? "1" : "2";
+    const ToolRun r = run_dspbr("lut --tables GGX_E_avg --size GGX_E_avg=4 --samples 256 --formats json,png --threads " +
+                                threads + " --out " + dir);
     ASSERT_EQ(r.status, 0) << r.output;
   }
   const std::string text = read_all(a + "/dspbr_luts.json");

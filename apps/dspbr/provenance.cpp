@@ -15,6 +15,11 @@ std::string reproducible_command() {
   const std::vector<std::string> args = validate::process_arguments();
   std::string out = "dspbr";
   for (std::size_t i = 1; i < args.size(); ++i) {
+    if (args[i].rfind("--threads=", 0) == 0) continue;
+    if (args[i] == "--threads") {
+      ++i;  // and its value
+      continue;
+    }
     if (args[i].rfind("--out=", 0) == 0) {
       out += " --out=DIR";
       continue;

@@ -23,9 +23,13 @@ def run_cli(*args):
 
 
 def cli_json(*args):
+    """The JSON document a command prints, without its "provenance" (version and command line,
+    which the Python functions do not return)."""
     code, out, err = run_cli(*args)
     assert code == 0, err
-    return json.loads(out)
+    doc = json.loads(out)
+    doc.pop("provenance", None)
+    return doc
 
 
 def cli_error(*args):
