@@ -57,11 +57,15 @@ for name in ("dspbr_luts.json", "dspbr_renderer_luts.json"):
 PY
 
 mkdir -p "$work/artifacts" "$work/logs"
+# The short run (--no-build, CTest) starts from the seeds alone each time, so that it stays a few
+# seconds; longer runs keep growing corpus/<target>.
+corpus="$work/corpus"
+((build)) || { corpus="$work/corpus-short"; rm -rf "$corpus"; }
 status=0
 for t in "${targets[@]}"; do
-  mkdir -p "$work/corpus/$t"
+  mkdir -p "$corpus/$t"
   log="$work/logs/fuzz_$t.log"
-  if "$work/build/fuzz_$t" "$work/corpus/$t" "$seeds/$t" -dict="$here/fuzz/json.dict" -max_total_time="$seconds" \
+  if "$work/build/fuzz_$t" "$corpus/$t" "$seeds/$t" -dict="$here/fuzz/json.dict" -max_total_time="$seconds" \
        -timeout=10 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
        -artifact_prefix="$work/artifacts/$t-" >"$log" 2>&1; then
     echo "fuzz_$t: $(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}') runs in ${seconds} s, no crash, hang or sanitizer report"
