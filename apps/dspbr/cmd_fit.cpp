@@ -20,6 +20,7 @@
 #include "dspbr/fit/sheen_lambda_fit.h"
 #include "dspbr/io/atomic_file.h"
 #include "dspbr/progress.h"
+#include "dspbr/version.h"
 
 namespace dspbr::cli {
 
@@ -72,8 +73,11 @@ json read_json_if_exists(const fs::path& p) {
   }
 }
 
-std::string reproduce_command(const FitArgs& a, const std::string& name) {
-  return fmt::format("dspbr fit --out DIR --only {} --seed {}{}", name, a.seed, a.quick ? " --quick" : "");
+// Provenance of a fit document: the project version alone (version.h, so that regenerating at
+// another commit gives the same bytes) and the command that rewrites it.
+void record_provenance(json& d, const FitArgs& a, const std::string& name) {
+  d["dspbr_version"] = project_version();
+  d["command"] = fmt::format("dspbr fit --out DIR --only {} --seed {}{}", name, a.seed, a.quick ? " --quick" : "");
 }
 
 json sheen_lambda_doc(const FitArgs& a, const fit::FitContext& ctx) {
@@ -106,7 +110,7 @@ json sheen_lambda_doc(const FitArgs& a, const fit::FitContext& ctx) {
               {"converged", r.rich_summary.converged},
               {"max_abs_residual", r.rich_summary.max_abs_residual}};
   d["error"] = fit::sheen_lambda_report(s, r, ctx);
-  d["command"] = reproduce_command(a, "sheen_lambda");
+  record_provenance(d, a, "sheen_lambda");
   d["settings"] = {{"seed", a.seed}, {"quick", a.quick}};
   const auto& m = d["error"]["models"];
   std::printf("sheen_lambda: max relative error of Lambda over alpha_b in [%g, 1], cos in [%g, %g]:\n", s.alpha_min,
@@ -165,7 +169,7 @@ json albedo_doc(const FitArgs& a, const fit::FitContext& ctx) {
                 {"ggx_E5_avg", r.ggx_E5_avg.converged}, {"sheen_E", r.sheen_E.converged},
                 {"sheen_ash_E", r.sheen_ash_E.converged}}}};
   d["error"] = fit::albedo_report(s, r.params, ctx);
-  d["command"] = reproduce_command(a, "albedo");
+  record_provenance(d, a, "albedo");
   d["settings"] = {{"seed", a.seed}, {"quick", a.quick}};
   std::printf("albedo fits: abs error on a fresh whole-domain grid (max / mean):\n");
   for (const char* k : {"ggx_E", "ggx_E_avg", "base_E", "base_E_avg", "sheen_E", "sheen_ash_E", "white_furnace_metal",
@@ -176,7 +180,7 @@ json albedo_doc(const FitArgs& a, const fit::FitContext& ctx) {
 
 json flake_doc(const FitArgs& a, const fit::FitContext& ctx) {
   json d = fit::flake_roughness_fit(ctx);
-  d["command"] = reproduce_command(a, "flake_roughness");
+  record_provenance(d, a, "flake_roughness");
   d["settings"] = {{"seed", a.seed}, {"quick", a.quick}};
   std::printf("flake_roughness: r_eq(r_f) formula max |r_eq - fitted r_eq| %.2e; worst lobe rel. L2 error %.3f\n",
               d["formula_error"]["max"].get<double>(), d["lobe_error_max"].get<double>());
