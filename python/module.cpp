@@ -221,7 +221,7 @@ class PyBsdf {
  public:
   PyBsdf(const py::object& material, const py::object& components, const std::string& sheen,
          const std::string& tables, const py::object& position, const py::object& object_normal, double wavelength,
-         double area) {
+         double area, bool transmission_compensation) {
     material_ = material_of(material);
     BsdfOptions o;
     if (sheen == "main") o.sheen_model = SheenModel::Main;
@@ -235,6 +235,7 @@ class PyBsdf {
     o.wavelength_nm = wavelength;
     if (!std::isfinite(area) || !(area > 0)) fail("area expects a positive area in m^2");
     o.object_area_m2 = area;
+    o.transmission_compensation = transmission_compensation;
     uint32_t mask = active_components(material_);
     if (!components.is_none()) {
       std::vector<std::string> names;
@@ -424,7 +425,7 @@ LutOptions lut_options(const py::object& tables, const py::object& size, const s
     fail(std::string("grid: ") + e.what());
   }
   try {
-    opt.integrator = parse_integrator(integrator);
+    if (!integrator.empty()) opt.integrator = parse_integrator(integrator);
   } catch (const std::invalid_argument& e) {
     fail(std::string("integrator: ") + e.what());
   }
@@ -513,7 +514,8 @@ py::dict lut_load(const py::object& path_obj) {
       d[py::str(name)] = array_of(t.values, t.axes);
     }
   } else {
-    for (const Table* t : {&set.ggx_e, &set.ggx_e_avg, &set.base_e, &set.base_e_avg, &set.sheen_e, &set.sheen_ash_e})
+    for (const Table* t : {&set.ggx_e, &set.ggx_e_avg, &set.base_e, &set.base_e_avg, &set.sheen_e, &set.sheen_ash_e,
+                           &set.glass_e, &set.glass_inv_e, &set.glass_e_avg, &set.glass_inv_e_avg})
       if (!t->values.empty()) d[py::str(t->name)] = array_of(t->values, t->axes);
   }
   return d;
@@ -562,16 +564,19 @@ attenuationDistance), an instance dict {"material": TYPE, "values": {...}}, or t
 material instance file. Checked as `dspbr eval` checks it; a bad value raises ValueError.
 components: list of component names (default: the material's active ones); sheen: "main" | "ash";
 tables: "renderer" (default) | "published"; position, object_normal, wavelength, area: as the CLI's
---position, --object-normal, --wavelength (nm), --area (m^2).
+--position, --object-normal, --wavelength (nm), --area (m^2); transmission_compensation: True adds
+the rough-transmission energy compensation (beyond DSPBR 2025x, as the CLI's
+--transmission-compensation; docs/bsdf.md).
 
 Directions are (3,) or (N, 3) arrays in the local shading frame (normal +z), both pointing away
 from the surface, normalized here; a (3,) argument broadcasts against an (N, 3) one.
 )doc")
       .def(py::init<const py::object&, const py::object&, const std::string&, const std::string&, const py::object&,
-                    const py::object&, double, double>(),
+                    const py::object&, double, double, bool>(),
            py::arg("material") = py::none(), py::kw_only(), py::arg("components") = py::none(),
            py::arg("sheen") = "main", py::arg("tables") = "renderer", py::arg("position") = py::make_tuple(0, 0, 0),
-           py::arg("object_normal") = py::make_tuple(0, 0, 1), py::arg("wavelength") = 0.0, py::arg("area") = 1.0)
+           py::arg("object_normal") = py::make_tuple(0, 0, 1), py::arg("wavelength") = 0.0, py::arg("area") = 1.0,
+           py::arg("transmission_compensation") = false)
       .def("eval", &PyBsdf::eval, py::arg("v"), py::arg("l"),
            "f(v, l) without the cosine: (N, 3) RGB for (N, 3) directions, (3,) for (3,).")
       .def("pdf", &PyBsdf::pdf, py::arg("v"), py::arg("l"),
@@ -594,13 +599,13 @@ from the surface, normalized here; a (3,) argument broadcasts against an (N, 3) 
   auto lut = m.def_submodule("lut", "Energy-compensation tables (docs/luts.md)");
   lut.def("names", &lut_table_names, "Table names in canonical order.");
   lut.def("generate", &lut_generate, py::arg("tables") = py::none(), py::arg("size") = py::none(), py::kw_only(),
-          py::arg("integrator") = "qmc", py::arg("samples") = 0, py::arg("target_error") = kLutDefaultTargetError,
+          py::arg("integrator") = "", py::arg("samples") = 0, py::arg("target_error") = kLutDefaultTargetError,
           py::arg("randomizations") = 8, py::arg("seed") = py::int_(1), py::arg("threads") = 0,
           py::arg("grid") = "cell", py::arg("errors") = false,
           R"doc(
 Generates tables of the published layout as `dspbr lut` does with the same settings (bit-identical
 values for the same seed, whatever the thread count). tables: list of names (default: all six);
-size: {name: int or tuple of ints, slowest axis first}; integrator "qmc" | "mc"; samples (0: the
+size: {name: int or tuple of ints, slowest axis first}; integrator "qmc" | "mc" | "quad" ("": quad for the Glass tables, qmc for the others); samples (0: the
 table's default maximum); target_error (0: fixed budget); randomizations; seed; threads (0: all
 cores); grid "cell" | "endpoint". Returns {name: array of the table's shape}, or with errors=True
 {name: {"values": array, "errors": per-cell standard errors}}.

@@ -98,8 +98,10 @@ TEST(LutIo, ExrRoundTripFloatAndHalf) {
 TEST(LutIo, JsonRoundTrip) {
   const fs::path dir = temp_folder("json");
   LutOptions opt;
-  opt.sizes = {{"GGX_E", {3, 4}}, {"GGX_E_avg", {3}}, {"Base_E", {2, 2, 3}}, {"Base_E_avg", {2, 2}},
-               {"Sheen_E", {2, 3}}, {"Sheen_ash_E", {3, 2}}};
+  opt.sizes = {{"GGX_E", {3, 4}},        {"GGX_E_avg", {3}},          {"Base_E", {2, 2, 3}},
+               {"Base_E_avg", {2, 2}},    {"Sheen_E", {2, 3}},         {"Sheen_ash_E", {3, 2}},
+               {"Glass_E", {2, 2, 3}},    {"Glass_inv_E", {2, 3, 2}},  {"Glass_E_avg", {2, 2}},
+               {"Glass_inv_E_avg", {2, 2}}};
   opt.samples = 8 << 5;
   opt.target_error = 0;
   opt.grid = GridKind::Endpoint;
@@ -245,15 +247,17 @@ TEST(LutIo, CommittedExrsMatchJson) {
 
 TEST(LutGenerate, SameBitsWhateverTheThreadCount) {
   LutOptions opt;
-  opt.sizes = {{"GGX_E", {5, 6}}, {"GGX_E_avg", {3}}, {"Base_E", {2, 3, 4}}, {"Base_E_avg", {2, 3}},
-               {"Sheen_E", {3, 3}}, {"Sheen_ash_E", {3, 3}}};
+  opt.sizes = {{"GGX_E", {5, 6}},        {"GGX_E_avg", {3}},          {"Base_E", {2, 3, 4}},
+               {"Base_E_avg", {2, 3}},    {"Sheen_E", {3, 3}},         {"Sheen_ash_E", {3, 3}},
+               {"Glass_E", {2, 3, 3}},    {"Glass_inv_E", {2, 3, 3}},  {"Glass_E_avg", {2, 3}},
+               {"Glass_inv_E_avg", {2, 3}}};
   opt.samples = 8 << 6;
   opt.progress = false;
   opt.threads = 1;
   const std::vector<Table> a = generate_luts(opt);
   opt.threads = 2;
   const std::vector<Table> b = generate_luts(opt);
-  ASSERT_EQ(a.size(), 6u);
+  ASSERT_EQ(a.size(), 10u);
   for (size_t i = 0; i < a.size(); ++i) {
     EXPECT_EQ(0, std::memcmp(a[i].values.data(), b[i].values.data(), a[i].values.size() * sizeof(double)));
     EXPECT_EQ(0, std::memcmp(a[i].errors.data(), b[i].errors.data(), a[i].errors.size() * sizeof(double)));

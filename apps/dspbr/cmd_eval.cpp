@@ -39,6 +39,7 @@ struct EvalArgs {
   double area = 1;
   std::string components;  // comma-separated component names; empty: active components
   std::string tables = "renderer";  // table layout the BSDF reads
+  bool transmission_compensation = false;
 };
 
 // The table set of --tables (renderer: the default, accurate everywhere; published: what a
@@ -156,6 +157,7 @@ BsdfOptions build_options(const EvalArgs& a) {
   o.wavelength_nm = a.wavelength;
   if (!std::isfinite(a.area) || !(a.area > 0)) throw UsageError("--area expects a positive area in m^2");
   o.object_area_m2 = a.area;
+  o.transmission_compensation = a.transmission_compensation;
   return o;
 }
 
@@ -193,6 +195,8 @@ void add_common_options(CLI::App* cmd, EvalArgs& a) {
       ->capture_default_str();
   cmd->add_option("--components", a.components,
                   "Comma-separated components to include (default: the material's active ones)");
+  cmd->add_flag("--transmission-compensation", a.transmission_compensation,
+                "Add the energy compensation of rough transmission (beyond DSPBR 2025x; docs/bsdf.md)");
 }
 
 // The version, the command line and the settings the result depends on besides the material.

@@ -37,7 +37,7 @@ struct LutArgs {
   std::vector<std::string> sizes;
   std::string grid = "cell";
   std::string formats = "exr,png,hpp,json";
-  std::string integrator = "qmc";
+  std::string integrator;  // empty: each table's default (lut_default_integrator)
   int samples = 0;
   double target_error = kLutDefaultTargetError;
   int randomizations = 8;
@@ -48,6 +48,7 @@ struct LutArgs {
   bool bench_lookups = false;
   int bench_points = 400;
   std::string scene;
+  bool transmission_compensation = false;  // --scene: also the tables of the compensation
   std::string layouts = "published,renderer";
   bool layouts_given = false;
   int renderer_scale = 1;
@@ -84,7 +85,7 @@ LutOptions to_options(const LutArgs& a) {
   if (!a.scene.empty() && a.tables_given) throw UsageError("use either --tables or --scene, not both");
   if (!a.scene.empty()) {
     try {
-      opt.tables = tables_for_scene(a.scene);
+      opt.tables = tables_for_scene(a.scene, a.transmission_compensation);
     } catch (const std::exception& e) {
       throw UsageError(std::string("--scene: ") + e.what());
     }
@@ -110,7 +111,7 @@ LutOptions to_options(const LutArgs& a) {
     throw UsageError(std::string("--grid: ") + e.what());
   }
   try {
-    opt.integrator = parse_integrator(a.integrator);
+    if (!a.integrator.empty()) opt.integrator = parse_integrator(a.integrator);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--integrator: ") + e.what());
   }
@@ -171,7 +172,8 @@ void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& for
   const double t_gen = seconds_since(t0);
   const std::string provenance =
       fmt::format("Settings: integrator {}, target std error {:g}, seed {}, scale {}.",
-                  integrator_name(opt.integrator), opt.target_error, opt.seed, a.renderer_scale);
+                  integrator_name(lut_settings("GGX_E", opt).integrator), opt.target_error, opt.seed,
+                  a.renderer_scale);
   if (formats.json)
     write_text_atomically((fs::path(a.out) / "dspbr_renderer_luts.json").string(),
                           renderer_json_text(luts, opt, a.renderer_scale));
@@ -250,7 +252,9 @@ void run_bench(const LutArgs& a) {
   LutOptions base = to_options(b);
   std::map<std::string, std::vector<int>> bench_sizes{{"GGX_E", {8, 8}},      {"GGX_E_avg", {8}},
                                                       {"Base_E", {4, 8, 8}},  {"Base_E_avg", {4, 8}},
-                                                      {"Sheen_E", {8, 8}},    {"Sheen_ash_E", {8, 8}}};
+                                                      {"Sheen_E", {8, 8}},    {"Sheen_ash_E", {8, 8}},
+                                                      {"Glass_E", {4, 8, 8}}, {"Glass_inv_E", {4, 8, 8}},
+                                                      {"Glass_E_avg", {4, 8}}, {"Glass_inv_E_avg", {4, 8}}};
   for (auto& [name, size] : bench_sizes)
     if (!base.sizes.count(name)) base.sizes[name] = size;
   std::printf("| table | grid | integrator | samples/cell | wall time [s] | ms/cell | max abs error | max est. std error |\n");
@@ -259,7 +263,7 @@ void run_bench(const LutArgs& a) {
     LutOptions ref = base;
     ref.tables = {name};
     ref.integrator = Integrator::Qmc;
-    const bool avg = name == "GGX_E_avg" || name == "Base_E_avg";
+    const bool avg = name.size() > 4 && name.compare(name.size() - 4, 4, "_avg") == 0;
     ref.samples = avg ? (8 << 18) : (8 << 16);
     ref.seed = base.seed + 1000003;  // independent of the runs it checks
     ref.target_error = 0;
@@ -285,8 +289,12 @@ void run_bench(const LutArgs& a) {
                   integrator.c_str(), samples.c_str(), wall, 1e3 * wall / double(cells), max_abs, max_se);
       std::fflush(stdout);
     };
-    for (Integrator integ : {Integrator::Qmc, Integrator::Mc}) {
-      const std::vector<int> budgets = avg ? std::vector<int>{8 << 10, 8 << 12, 8 << 14, 8 << 16}
+    for (Integrator integ : {Integrator::Qmc, Integrator::Mc, Integrator::Quad}) {
+      // Quad: (4P)^dims points for P panels per dimension; these budgets give P = 8 .. 64 (2D) and 8 .. 32 (3D).
+      const std::vector<int> budgets = integ == Integrator::Quad
+                                           ? (avg ? std::vector<int>{8 << 14, 8 << 17, 8 << 20}
+                                                  : std::vector<int>{8 << 8, 8 << 10, 8 << 12, 8 << 14})
+                                       : avg ? std::vector<int>{8 << 10, 8 << 12, 8 << 14, 8 << 16}
                                            : std::vector<int>{8 << 8, 8 << 10, 8 << 12, 8 << 14};
       for (int n : budgets) {
         LutOptions o = base;
@@ -298,11 +306,14 @@ void run_bench(const LutArgs& a) {
         measure(o, integrator_name(integ), std::to_string(n));
       }
     }
-    {  // the default settings: adaptive QMC
+    for (Integrator integ : {Integrator::Qmc, Integrator::Quad}) {  // the adaptive settings
       LutOptions o = base;
       o.tables = {name};
+      o.integrator = integ;
       o.progress = false;
-      measure(o, "qmc adaptive (default)", "<= " + std::to_string(lut_settings(name, o).samples));
+      const bool is_default = integ == lut_default_integrator(name);
+      measure(o, std::string(integrator_name(integ)) + " adaptive" + (is_default ? " (default)" : ""),
+              "<= " + std::to_string(lut_settings(name, o).samples));
     }
     std::printf("| %s | %s | reference (qmc) | %d | | | | %.2e |\n", name.c_str(), dims.c_str(), ref.samples, ref_err);
   }
@@ -317,14 +328,19 @@ void add_lut_command(CLI::App& app) {
       "Generate the DSPBR energy-compensation tables (EXR, pbrlut.hpp, dspbr_luts.json); see docs/luts.md");
   cmd->add_option("--out", args->out, "Output folder (created when missing)");
   auto* tables_opt = cmd->add_option(
-      "--tables", args->tables, "Comma-separated tables: GGX_E,GGX_E_avg,Base_E,Base_E_avg,Sheen_E,Sheen_ash_E (default: all)");
+      "--tables", args->tables, "Comma-separated tables: GGX_E,GGX_E_avg,Base_E,Base_E_avg,Sheen_E,Sheen_ash_E,Glass_E,Glass_inv_E,"
+      "Glass_E_avg,Glass_inv_E_avg (default: all)");
   cmd->add_option("--scene", args->scene, "Generate only the tables the materials of this scene (.gltf/.glb/.json) need");
+  cmd->add_flag("--transmission-compensation", args->transmission_compensation,
+                "With --scene: also the tables of the rough-transmission compensation (beyond DSPBR 2025x)");
   cmd->add_option("--size", args->sizes,
                   "Per-table resolution NAME=SIZE, slowest axis first, e.g. GGX_E=64x64, Base_E=16x32x32 (repeatable)");
   cmd->add_option("--grid", args->grid, "Axis sampling: cell (x_i = (i+0.5)/N, default) or endpoint (x_i = i/(N-1))");
   cmd->add_option("--formats", args->formats, "Comma-separated output formats: exr, png (16-bit), hpp (headers, lookup code), json (default: all)");
   cmd->add_option("--integrator", args->integrator,
-                  "qmc (importance-sampled, Owen-scrambled Sobol', default) or mc (plain Monte Carlo baseline)");
+                  "qmc (importance-sampled, Owen-scrambled Sobol'), mc (plain Monte Carlo baseline) or quad "
+                  "(tensor Gauss-Legendre over the sampler's unit square); default: quad for the Glass tables, "
+                  "qmc for the others");
   cmd->add_option("--samples", args->samples,
                   "Maximum samples per cell, all randomizations together (default: 524288; 2097152 for the "
                   "averages); exactly this many with --target-error 0")

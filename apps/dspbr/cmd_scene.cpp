@@ -28,7 +28,7 @@ void add_scene_command(CLI::App& app) {
   cmd->require_subcommand(1);
   struct Options {
     std::string path;
-    bool json = false, parameters = false;
+    bool json = false, parameters = false, compensation = false;
   };
   auto opt = std::make_shared<Options>();
   auto* analyze = cmd->add_subcommand("analyze", "Per material: active components, needed tables, textured parameters");
@@ -36,10 +36,13 @@ void add_scene_command(CLI::App& app) {
   analyze->add_flag("--json", opt->json,
                     "Print {\"materials\": [{\"name\", \"components\", \"tables\", \"textured\", \"notes\"}], \"tables\", \"warnings\"}");
   analyze->add_flag("--parameters", opt->parameters, "Also print each material's mapped DSPBR parameters");
+  analyze->add_flag("--transmission-compensation", opt->compensation,
+                    "List the tables a renderer with the rough-transmission compensation needs (beyond DSPBR 2025x: "
+                    "the Glass tables for volumetric transparent materials)");
   analyze->callback([opt] {
     SceneAnalysis s;
     try {
-      s = analyze_scene(opt->path);
+      s = analyze_scene(opt->path, opt->compensation);
     } catch (const std::runtime_error& e) {
       throw UsageError(e.what());
     }

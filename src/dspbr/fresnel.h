@@ -20,6 +20,10 @@ inline double f0_from_ior(double eta_i, double eta_o) {
   return r * r;
 }
 
+// Relative IOR difference below which the interface does not bend light: transmission is then a
+// Dirac straight through at any roughness (the half-vector map l -> h_t degenerates at eta = 1).
+constexpr double kIndexMatched = 1e-7;
+
 // sin^2 of the transmitted angle from Snell's law: (eta_i/eta_o)^2 (1 - cos^2) (spec "Fresnel", [Lag13]).
 inline double sin2_transmitted(double cos_theta, double eta_i, double eta_o) {
   const double e = eta_i / eta_o;

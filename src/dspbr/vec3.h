@@ -31,6 +31,17 @@ inline Vec3 normalize(const Vec3& v) {
 // Mirror reflection of v about n (both unit, pointing away from the surface).
 inline Vec3 reflect(const Vec3& v, const Vec3& n) { return 2.0 * dot(v, n) * n - v; }
 
+// Refraction of v (unit, pointing away, v.h > 0) through a facet h with eta = eta_i / eta_o
+// (Snell's law, Walter et al. 2007 eq. 40). Returns false under total internal reflection.
+inline bool refract_dir(const Vec3& v, const Vec3& h, double eta, Vec3& l) {
+  const double cos_i = dot(v, h);
+  const double sin2_t = eta * eta * std::max(0.0, 1.0 - cos_i * cos_i);
+  if (sin2_t >= 1.0) return false;  // total internal reflection
+  const double cos_t = std::sqrt(1.0 - sin2_t);
+  l = normalize(-v * eta + h * (eta * cos_i - cos_t));
+  return true;
+}
+
 // Linear sRGB triple. Component-wise arithmetic.
 struct Rgb {
   double r = 0, g = 0, b = 0;

@@ -209,3 +209,19 @@ def test_deeply_nested_values_are_refused():
         dspbr.Bsdf({"roughness": deep})
     with pytest.raises(ValueError, match="nested deeper than 256 levels"):
         dspbr.Bsdf({"material": "generic", "values": {"roughness": deep}})
+
+
+def test_transmission_compensation_agrees_with_cli_and_only_adds():
+    # Bsdf(transmission_compensation=True) is `dspbr eval --transmission-compensation`; the option
+    # adds non-negative lobes to the spec's BSDF (docs/bsdf.md), so f never decreases.
+    glass = {"transparency": 1, "thinWalled": False, "roughness": 0.8, "ior": 1.5}
+    rng = np.random.default_rng(11)
+    v, l = directions(rng, 6), directions(rng, 6, lower=True)
+    on = dspbr.Bsdf(glass, transmission_compensation=True)
+    off = dspbr.Bsdf(glass)
+    f_on, f_off = on.eval(v, l), off.eval(v, l)
+    assert np.all(f_on >= f_off) and np.any(f_on > f_off * (1 + 1e-6))
+    for i in range(len(v)):
+        ref = cli_eval(glass, v[i], l[i], "--transmission-compensation")
+        np.testing.assert_allclose(f_on[i], ref["f"], rtol=1e-6)
+        np.testing.assert_allclose(on.pdf(v[i], l[i]), ref["pdf"], rtol=1e-6)

@@ -15,6 +15,7 @@
 #include "dspbr/bsdf/shading_frame.h"
 #include "dspbr/bsdf/thin_film.h"
 #include "dspbr/bsdf/thin_transmission.h"
+#include "dspbr/bsdf/transmission_compensation.h"
 #include "dspbr/bsdf/volumetric_transmission.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
@@ -33,6 +34,63 @@ constexpr double kMinSelectionFraction = 1e-3;
 
 
 }  // namespace
+
+void MaterialBsdf::add_transmission_compensation(std::vector<Entry>& out, const LutSet& luts, bool inside,
+                                                 double r_uv, double eta, double w_transp, const Rgb& rho_s,
+                                                 const Rgb& rho) const {
+  // docs/bsdf.md, "Transmission compensation". E: albedo of the white core (specular 1) on one
+  // side, including its M_r,ms F_ms term, whose albedo is F_ms (1 - E_m) (closed form).
+  const double F0 = f0_from_ior(1.0, eta);
+  const double f_ms = fresnel_ms(F0, 1.0, std::clamp(luts.E_m_avg(r_uv), 0.0, 1.0));
+  const double missing_m_avg = luts.missing_E_m_avg(r_uv);
+  // Share of the missing energy that leaves through the other side: the average transmittance of
+  // Schlick's Fresnel, 1 - F_avg (spec eq. fr_avg), on the side of the viewer outside.
+  double x_out = 1.0 - fresnel_avg(F0, 1.0), x_in = x_out;
+  TransmissionCompensation::AlbedoFn e_v, e_other;
+  double avg_v, avg_other;
+  if (thin_walled_) {
+    // Thin-walled: E = E_m + F_ms (1 - E_m) on both sides (reflection F, transmission 1 - F of
+    // the same M_r), so 1 - E = (1 - E_m)(1 - F_ms): no table beyond GGX_E / GGX_E_avg.
+    const LutSet* lp = &luts;  // the caller's set outlives the BSDF (as for the other lobes)
+    e_v = e_other = [lp, r_uv, f_ms](double c) { return 1.0 - (1.0 - f_ms) * (1.0 - lp->E_m(c, r_uv)); };
+    avg_v = avg_other = 1.0 - (1.0 - f_ms) * missing_m_avg;
+  } else {
+    // The glass tables of the set, or the built-in published ones when it has none.
+    const LutSet* gp = luts.has_glass() ? &luts : &LutSet::published();
+    if (!gp->has_glass()) throw std::runtime_error("transmission compensation: no Glass tables (dspbr lut)");
+    const LutSet* lp = &luts;
+    auto side_fn = [gp, lp, r_uv, eta, f_ms](bool in) -> TransmissionCompensation::AlbedoFn {
+      return [gp, lp, r_uv, eta, f_ms, in](double c) {
+        return gp->E_glass(c, r_uv, eta, in) + f_ms * (1.0 - lp->E_m(c, r_uv));
+      };
+    };
+    const double avg_out = gp->E_glass_avg(r_uv, eta, false) + f_ms * missing_m_avg;
+    const double avg_in = gp->E_glass_avg(r_uv, eta, true) + f_ms * missing_m_avg;
+    // Reciprocity of the transmission parts, f(v, l) / eta_o^2 = f(l, v) / eta_i^2 (docs/bsdf.md):
+    // x_in (1 - E_in,avg) eta^2 = x_out (1 - E_out,avg); x_in <= 1 bounds x_out.
+    const double m_out = std::max(1.0 - avg_out, 0.0), m_in = std::max(1.0 - avg_in, 0.0);
+    if (m_in > kMinMissingEnergy) {
+      x_in = x_out * m_out / (eta * eta * m_in);
+      if (x_in > 1.0) {
+        x_in = 1.0;
+        x_out = eta * eta * m_in / std::max(m_out, kMinMissingEnergy);
+      }
+    } else {
+      x_out = x_in = 0.0;
+    }
+    e_v = side_fn(inside);
+    e_other = side_fn(!inside);
+    avg_v = inside ? avg_in : avg_out;
+    avg_other = inside ? avg_out : avg_in;
+  }
+  const double x = inside && !thin_walled_ ? x_in : x_out;
+  const Rgb refl = (1.0 - x) * w_transp * rho_s, trans = x * w_transp * rho;
+  if (refl.max_component() > 0)
+    out.push_back({std::make_unique<TransmissionCompensation>(false, refl, e_v, e_v, avg_v), kCoreLayer, &core_});
+  if (trans.max_component() > 0)
+    out.push_back({std::make_unique<TransmissionCompensation>(true, trans, e_v, e_other, avg_other), kCoreLayer,
+                   &core_});
+}
 
 MaterialBsdf::MaterialBsdf(const Material& m, const LutSet& luts, const BsdfOptions& opt)
     : MaterialBsdf(m, luts, opt, active_components(m)) {}
@@ -53,6 +111,7 @@ bool MaterialBsdf::back_side(const Vec3& v) const {
 void MaterialBsdf::build(const Material& m, const LutSet& luts, const BsdfOptions& opt) {
   core_ = core_frame(m);
   thin_walled_ = m.thinWalled;
+  compensate_transmission_ = opt.transmission_compensation;
   coat_ = clearcoat_frame(m);
   alpha_cut_ = std::clamp(m.cutoutOpacity, 0.0, 1.0);
   clearcoat_ = (mask_ & kClearcoat) ? m.clearcoat : 0.0;
@@ -167,6 +226,9 @@ std::vector<MaterialBsdf::Entry> MaterialBsdf::build_side(const Material& m, con
         };
         out.push_back({std::make_unique<ThinTransmission>(alpha_u, alpha_v, factor), kCoreLayer, &core_});
       }
+      // Not for index-matched volumetric media: the transmission is then a Dirac that loses nothing.
+      const bool matched = volumetric && std::abs(eta - 1.0) < kIndexMatched;
+      if (compensate_transmission_ && !mirror && !matched) add_transmission_compensation(out, luts, inside, r_uv, eta, w_transp, rho_s, rho);
     }
     // Diffuse base rho_d [B_u (1 - s) + s B_c(F_0 rho_s)] (+ film term).
     if (w_opaque > 0 && rho_d.max_component() > 0) {

@@ -39,6 +39,9 @@ struct BsdfOptions {
   Vec3 object_normal{0, 0, 1};                // bumped normal in object space (flakes' triplanar choice)
   double wavelength_nm = 0;                   // > 0: dispersive IOR eta(lambda) (dispersion component)
   double object_area_m2 = 1;                  // object surface area for emission in lm
+  // Energy compensation of the transparent core's rough transmission (beyond DSPBR 2025x; off:
+  // the spec's BSDF). Adds the TransmissionCompensation lobes (docs/bsdf.md).
+  bool transmission_compensation = false;
 };
 
 class MaterialBsdf : public Bsdf {
@@ -74,6 +77,9 @@ class MaterialBsdf : public Bsdf {
   struct Local;  // v, l in the frames of the side
   void build(const Material& m, const LutSet& luts, const BsdfOptions& opt);
   std::vector<Entry> build_side(const Material& m, const LutSet& luts, bool inside) const;
+  // The transmission-compensation lobes of the transparent part (weight w_transp) of one side.
+  void add_transmission_compensation(std::vector<Entry>& out, const LutSet& luts, bool inside, double r_uv,
+                                     double eta, double w_transp, const Rgb& rho_s, const Rgb& rho) const;
   double layer_factor(Layer layer, const Vec3& v, const Vec3& l) const;
   void selection(const std::vector<Entry>& side, const Vec3& v, std::vector<double>& probs) const;
   Rgb eval_side(const std::vector<Entry>& side, const Vec3& v, const Vec3& l) const;
@@ -88,6 +94,7 @@ class MaterialBsdf : public Bsdf {
   double alpha_cut_ = 1;  // cut-out opacity
   double clearcoat_ = 0;  // c (0 when masked out)
   bool flake_opaque_ = false;
+  bool compensate_transmission_ = false;
   std::unique_ptr<SheenLobe> sheen_scaler_;  // ShinyCore factor (null without sheen)
   Rgb rho_e_{0, 0, 0};                       // emitted luminance (0 without emission)
   std::array<std::vector<Entry>, 2> sides_;  // [0] v outside (v.z >= 0), [1] inside

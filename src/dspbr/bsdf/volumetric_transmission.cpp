@@ -8,15 +8,6 @@
 
 namespace dspbr {
 
-bool refract_dir(const Vec3& v, const Vec3& h, double eta, Vec3& l) {
-  const double cos_i = dot(v, h);
-  const double sin2_t = eta * eta * std::max(0.0, 1.0 - cos_i * cos_i);
-  if (sin2_t >= 1.0) return false;  // total internal reflection
-  const double cos_t = std::sqrt(1.0 - sin2_t);
-  l = normalize(-v * eta + h * (eta * cos_i - cos_t));
-  return true;
-}
-
 VolumetricTransmission::VolumetricTransmission(double alpha_u, double alpha_v, double eta_i, double eta_o,
                                                CosineFn factor)
     : au_(std::max(alpha_u, kMinAlpha)),

@@ -12,16 +12,9 @@
 // Under total internal reflection at the sampled microfacet the sample fails (valid = false).
 #pragma once
 #include "dspbr/bsdf/microfacet_reflection.h"
+#include "dspbr/fresnel.h"
 
 namespace dspbr {
-
-// Relative IOR difference below which the interface does not bend light: transmission is then a
-// Dirac straight through at any roughness (the half-vector map l -> h_t degenerates at eta = 1).
-constexpr double kIndexMatched = 1e-7;
-
-// Refraction of v (pointing away, v.h > 0) through a facet h with eta = eta_i / eta_o.
-// Returns false under total internal reflection.
-bool refract_dir(const Vec3& v, const Vec3& h, double eta, Vec3& l);
 
 class VolumetricTransmission : public Lobe {
  public:

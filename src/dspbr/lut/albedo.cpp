@@ -7,7 +7,9 @@
 
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
+#include "dspbr/lut/glass_quadrature.h"
 #include "dspbr/lut/qmc.h"
+#include "dspbr/quadrature.h"
 #include "dspbr/rng.h"
 #include "dspbr/sheen.h"
 
@@ -17,16 +19,94 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// Replicate means of K integrals: `reps` holds one array of K means per replicate (Qmc, Mc), or
+// for the deterministic Quad integrator {fine, coarse}: the rule with P panels per dimension and
+// the one with P / 2.
+template <int K>
+struct Means {
+  std::vector<std::array<double, K>> reps;
+  bool quadrature = false;
+  // The estimate of integral k (mean of the replicates; the fine rule for Quad).
+  double mean(int k) const {
+    if (quadrature) return reps[0][size_t(k)];
+    double m = 0;
+    for (const auto& r : reps) m += r[size_t(k)];
+    return m / double(reps.size());
+  }
+};
+
+// Gauss-Legendre order per panel of the Quad integrator.
+constexpr int kQuadOrder = 4;
+// Panels per dimension of the Quad integrator's first fine rule (its coarse rule has half).
+constexpr int kQuadMinPanels = 8;
+
+// Tensor-product composite Gauss-Legendre rule over [0, 1]^dims with `panels` panels of
+// kQuadOrder nodes per dimension: sum of w(u) f(u) (f adds its K integrand values to acc).
+template <int K, class F>
+std::array<double, K> tensor_gauss_legendre(int dims, int panels, F& f) {
+  static const QuadratureRule rule = gauss_legendre(kQuadOrder);
+  const int n = panels * kQuadOrder;
+  std::vector<double> x(static_cast<size_t>(n)), w(static_cast<size_t>(n));
+  for (int p = 0; p < panels; ++p)
+    for (int i = 0; i < kQuadOrder; ++i) {
+      x[size_t(p * kQuadOrder + i)] = (p + 0.5 + 0.5 * rule.x[size_t(i)]) / panels;
+      w[size_t(p * kQuadOrder + i)] = 0.5 * rule.w[size_t(i)] / panels;
+    }
+  std::array<double, K> sum{};
+  double u[ScrambledSobol::kMaxDims] = {};
+  int idx[ScrambledSobol::kMaxDims] = {};
+  while (true) {
+    double wp = 1;
+    for (int d = 0; d < dims; ++d) {
+      u[d] = x[size_t(idx[d])];
+      wp *= w[size_t(idx[d])];
+    }
+    std::array<double, K> acc{};
+    f(u, acc);
+    for (int k = 0; k < K; ++k) sum[size_t(k)] += wp * acc[size_t(k)];
+    int d = 0;
+    while (d < dims && ++idx[d] == n) idx[d++] = 0;
+    if (d == dims) break;
+  }
+  return sum;
+}
+
+// The Quad integrator: the fine rule with P panels per dimension and the coarse one with P / 2
+// (their difference is the error estimate). P doubles from kQuadMinPanels while the difference
+// exceeds settings.target_error (> 0) and the next rule's (kQuadOrder P)^dims points stay within
+// settings.samples; with target_error = 0, the largest such P.
+template <int K, class F>
+Means<K> quadrature_means(const IntegratorSettings& s, int dims, F& f) {
+  auto points = [&](int panels) { return std::pow(double(panels * kQuadOrder), dims); };
+  Means<K> out;
+  out.quadrature = true;
+  int p = kQuadMinPanels;
+  if (s.target_error <= 0)
+    while (points(2 * p) <= double(s.samples)) p *= 2;
+  std::array<double, K> coarse = tensor_gauss_legendre<K>(dims, p / 2, f);
+  std::array<double, K> fine = tensor_gauss_legendre<K>(dims, p, f);
+  while (s.target_error > 0 && points(2 * p) <= double(s.samples)) {
+    double worst = 0;
+    for (int k = 0; k < K; ++k) worst = std::max(worst, std::abs(fine[size_t(k)] - coarse[size_t(k)]));
+    if (worst <= s.target_error) break;
+    p *= 2;
+    coarse = fine;
+    fine = tensor_gauss_legendre<K>(dims, p, f);
+  }
+  out.reps = {fine, coarse};
+  return out;
+}
+
 // Runs settings.randomizations replicates in lockstep, calling f(u, acc) per point with
 // u[0..dims) uniform on [0,1)^dims (scrambled Sobol' for Qmc, Pcg32 for Mc); f adds the K
 // integrand weights of the point to acc. Points per replicate: samples / randomizations, or
 // fewer when settings.target_error > 0: the count doubles from min_samples / randomizations
 // until the standard error of every one of the K means is at most target_error. The stopping
 // rule depends only on the cell's own numbers, so results stay independent of threads. Returns
-// the K means of every replicate.
-
+// the K means of every replicate. For Quad: quadrature_means (deterministic, no replicates).
 template <int K, class F>
-std::vector<std::array<double, K>> replicate_means(const IntegratorSettings& s, uint64_t stream, int dims, F&& f) {
+Means<K> replicate_means(const IntegratorSettings& s, uint64_t stream, int dims, F&& f) {
+  if (s.integrator == Integrator::Quad) return quadrature_means<K>(s, dims, f);
   const int R = s.randomizations;
   const uint32_t n_max = uint32_t(std::max(1, s.samples / R));
   std::vector<std::array<double, K>> sums(static_cast<size_t>(R), std::array<double, K>{});
@@ -71,15 +151,22 @@ std::vector<std::array<double, K>> replicate_means(const IntegratorSettings& s, 
     if (worst <= s.target_error) break;
     target = uint32_t(std::min<uint64_t>(n_max, uint64_t(target) * 2));
   }
-  std::vector<std::array<double, K>> means(static_cast<size_t>(R));
+  Means<K> means;
+  means.reps.resize(static_cast<size_t>(R));
   for (int r = 0; r < R; ++r)
-    for (int k = 0; k < K; ++k) means[size_t(r)][size_t(k)] = sums[size_t(r)][size_t(k)] / done;
+    for (int k = 0; k < K; ++k) means.reps[size_t(r)][size_t(k)] = sums[size_t(r)][size_t(k)] / done;
   return means;
 }
 
-// Mean and standard error of g(replicate) over the replicates; value = g(mean of replicates).
+// Value g(estimates) and its error: for replicates, the standard error of g over them (value =
+// g(mean of replicates)); for Quad, |g(fine) - g(coarse)|.
 template <int K, class G>
-Estimate combine(const std::vector<std::array<double, K>>& reps, G&& g) {
+Estimate combine(const Means<K>& means, G&& g) {
+  const auto& reps = means.reps;
+  if (means.quadrature) {
+    const double fine = g(reps[0]);
+    return {fine, std::abs(fine - g(reps[1]))};
+  }
   std::array<double, K> mean{};
   for (const auto& r : reps)
     for (int k = 0; k < K; ++k) mean[size_t(k)] += r[size_t(k)];
@@ -95,6 +182,10 @@ Estimate combine(const std::vector<std::array<double, K>>& reps, G&& g) {
 }
 
 void check_settings(const IntegratorSettings& s) {
+  if (s.integrator == Integrator::Quad) {
+    if (s.samples < 1) throw std::invalid_argument("integrator: samples must be >= 1");
+    return;
+  }
   if (s.randomizations < 2) throw std::invalid_argument("integrator: randomizations must be >= 2");
   if (s.samples < s.randomizations) throw std::invalid_argument("integrator: samples must be >= randomizations");
   if (uint64_t(s.samples / s.randomizations) > ScrambledSobol::kMaxPoints)
@@ -139,14 +230,14 @@ void ggx_moments_mc(const Vec3& v, double alpha, double u0, double u1, std::arra
 
 // Replicate means of the two GGX moments at (mu, r). alpha = 0 is the mirror: E_m = 1 and the
 // Schlick moment is (1 - mu)^5 exactly (the Mc baseline cannot sample a delta lobe).
-std::vector<std::array<double, 2>> ggx_moments(double mu, double r, const IntegratorSettings& s, uint64_t stream) {
+Means<2> ggx_moments(double mu, double r, const IntegratorSettings& s, uint64_t stream) {
   check_settings(s);
   mu = clamp_cos(mu);
   const double alpha = roughness_to_alpha(std::clamp(r, 0.0, 1.0));
   const Vec3 v = view_dir(mu);
   if (alpha == 0 && s.integrator == Integrator::Mc)
-    return std::vector<std::array<double, 2>>(size_t(s.randomizations), {1.0, schlick_factor(mu)});
-  if (s.integrator == Integrator::Qmc)
+    return {std::vector<std::array<double, 2>>(size_t(s.randomizations), {1.0, schlick_factor(mu)})};
+  if (s.integrator != Integrator::Mc)
     return replicate_means<2>(s, stream, 2, [&](const double* u, std::array<double, 2>& acc) {
       ggx_moments_qmc(v, alpha, u[0], u[1], acc);
     });
@@ -158,12 +249,12 @@ std::vector<std::array<double, 2>> ggx_moments(double mu, double r, const Integr
 // Replicate means of the cosine-weighted hemispherical averages 2 Integral moment(mu) mu dmu.
 // Qmc: mu = sqrt(u) has density 2 mu, so the weights are the directional ones.
 // Mc: mu uniform, weight 2 mu.
-std::vector<std::array<double, 2>> ggx_avg_moments(double r, const IntegratorSettings& s, uint64_t stream) {
+Means<2> ggx_avg_moments(double r, const IntegratorSettings& s, uint64_t stream) {
   check_settings(s);
   const double alpha = roughness_to_alpha(std::clamp(r, 0.0, 1.0));
   if (alpha == 0 && s.integrator == Integrator::Mc)  // mirror: E_m,avg = 1, 2 Integral (1-mu)^5 mu = 1/21
-    return std::vector<std::array<double, 2>>(size_t(s.randomizations), {1.0, 1.0 / 21.0});
-  if (s.integrator == Integrator::Qmc)
+    return {std::vector<std::array<double, 2>>(size_t(s.randomizations), {1.0, 1.0 / 21.0})};
+  if (s.integrator != Integrator::Mc)
     return replicate_means<2>(s, stream, 3, [&](const double* u, std::array<double, 2>& acc) {
       const double mu = clamp_cos(std::sqrt(u[0]));
       ggx_moments_qmc(view_dir(mu), alpha, u[1], u[2], acc);
@@ -175,6 +266,28 @@ std::vector<std::array<double, 2>> ggx_avg_moments(double r, const IntegratorSet
     acc[0] += 2.0 * mu * a[0];
     acc[1] += 2.0 * mu * a[1];
   });
+}
+
+// Albedo weight of the rough dielectric interface for the visible normal h(u0, u1):
+// F_d G2(v, l_r) / G1(v) for the reflection l_r = reflect(v, h) above the surface, plus
+// (1 - F_d) G2(v, l_t) / G1(v) for the refraction l_t below it (the VNDF weight of
+// M_t |l.n| / pdf: Walter et al. 2007 with the spec's eta_o^2, whose eta factors cancel);
+// G2 height-correlated, as in the BSDF.
+void glass_weight(const Vec3& v, double alpha, double f0, double eta_i, double eta_o, double u0, double u1,
+                  std::array<double, 1>& acc) {
+  const Vec3 h = ggx_sample_vndf(v, alpha, alpha, u0, u1);
+  const double vh = dot(v, h);
+  if (vh <= 0) return;
+  const double g1 = ggx_g1(v, h, alpha, alpha);
+  if (g1 <= 0) return;
+  const double F = fresnel_schlick_d(vh, f0, 1.0, eta_i, eta_o);
+  const Vec3 lr = reflect(v, h);
+  double w = 0;
+  if (lr.z > 0) w += F * ggx_g2(v, lr, h, alpha, alpha) / g1;
+  Vec3 lt;  // at eta_i = eta_o: l_t = -v, the limit eta -> 1+ (glass_E)
+  if (F < 1 && refract_dir(v, h, eta_i / eta_o, lt) && lt.z < 0)
+    w += (1.0 - F) / ((1.0 + smith_lambda(v, alpha, alpha) + smith_lambda(lt, alpha, alpha)) * g1);
+  acc[0] += w;
 }
 
 // E(mu; r, f0) from the moments A = E_m, B = Schlick moment and E_m,avg:
@@ -196,12 +309,15 @@ double fresnel_ms_derivative(double f0, double e_avg) {
 
 }  // namespace
 
-const char* integrator_name(Integrator i) { return i == Integrator::Qmc ? "qmc" : "mc"; }
+const char* integrator_name(Integrator i) {
+  return i == Integrator::Qmc ? "qmc" : i == Integrator::Mc ? "mc" : "quad";
+}
 
 Integrator parse_integrator(const std::string& name) {
   if (name == "qmc") return Integrator::Qmc;
   if (name == "mc") return Integrator::Mc;
-  throw std::invalid_argument("'" + name + "' is not qmc or mc");
+  if (name == "quad") return Integrator::Quad;
+  throw std::invalid_argument("'" + name + "' is not qmc, mc or quad");
 }
 
 Estimate ggx_E(double mu, double r, const IntegratorSettings& s, uint64_t stream) {
@@ -227,9 +343,7 @@ std::vector<Estimate> base_E_f0s(double mu, double r, const std::vector<double>&
       return base_from_moments(f0, m[0], m[1], e_m_avg.value);
     });
     // The error of E_m,avg enters through F_ms (1 - E_m); add it in quadrature.
-    double a_mean = 0;
-    for (const auto& m : reps) a_mean += m[0];
-    a_mean /= double(reps.size());
+    const double a_mean = reps.mean(0);
     const double d = fresnel_ms_derivative(f0, e_m_avg.value) * (1.0 - a_mean) * e_m_avg.error;
     e.error = std::sqrt(e.error * e.error + d * d);
     out.push_back(e);
@@ -268,8 +382,8 @@ Estimate sheen_E(double mu, double alpha_b, SheenModel model, const IntegratorSe
   auto brdf = [&](const Vec3& l) {
     return model == SheenModel::Main ? sheen_brdf(v, l, ab) : sheen_brdf_ash(v, l, ab);
   };
-  std::vector<std::array<double, 1>> reps;
-  if (s.integrator == Integrator::Qmc) {
+  Means<1> reps;
+  if (s.integrator != Integrator::Mc) {
     // One-sample mixture (balance heuristic) of uniform hemisphere sampling (robust at grazing l)
     // and Charlie half-vector sampling h ~ D_b(h) (h.n), which follows the lobe at small alpha_b:
     // with s = sin(theta_h), p(s) ~ s^(k+1) (k = 1/alpha_b), so s = u^(1/(k+2)).
@@ -302,6 +416,62 @@ Estimate sheen_E(double mu, double alpha_b, SheenModel model, const IntegratorSe
     });
   }
   return combine<1>(reps, [](const std::array<double, 1>& m) { return m[0]; });
+}
+
+namespace {
+// Quad's error target for a glass cell: the settings' target, or 1e-7 with a fixed budget.
+double glass_target(const IntegratorSettings& s) { return s.target_error > 0 ? s.target_error : 1e-7; }
+}  // namespace
+
+Estimate glass_E(double mu, double r, double ior, bool inside, const IntegratorSettings& s, uint64_t stream) {
+  check_settings(s);
+  const Vec3 v = view_dir(clamp_cos(mu));
+  const double alpha = roughness_to_alpha(std::clamp(r, 0.0, 1.0)), eta = std::max(ior, 1.0);
+  const double eta_i = inside ? eta : 1.0, eta_o = inside ? 1.0 : eta, f0 = f0_from_ior(1.0, eta);
+  if (s.integrator == Integrator::Quad) {
+    // Smooth interface: F_d + (1 - F_d) = 1 (also under total internal reflection, F_d = 1).
+    if (alpha == 0) return {1.0, 0.0};
+    return glass_albedo_quadrature(v.z, alpha, f0, eta_i, eta_o, glass_target(s));
+  }
+  return combine<1>(replicate_means<1>(s, stream, 2,
+                                       [&](const double* u, std::array<double, 1>& acc) {
+                                         glass_weight(v, alpha, f0, eta_i, eta_o, u[0], u[1], acc);
+                                       }),
+                    [](const std::array<double, 1>& m) { return m[0]; });
+}
+
+Estimate glass_E_avg(double r, double ior, bool inside, const IntegratorSettings& s, uint64_t stream) {
+  check_settings(s);
+  const double alpha = roughness_to_alpha(std::clamp(r, 0.0, 1.0)), eta = std::max(ior, 1.0);
+  const double eta_i = inside ? eta : 1.0, eta_o = inside ? 1.0 : eta, f0 = f0_from_ior(1.0, eta);
+  if (s.integrator == Integrator::Quad) {
+    if (alpha == 0) return {1.0, 0.0};
+    // 2 Integral E_g mu dmu: Gauss-Legendre in mu, 2 panels of 8 nodes per segment (4 nodes for
+    // the error estimate), the segments split at the critical cosine sqrt(1 - 1/eta^2) from
+    // inside (the total-internal-reflection edge), each E_g by the directional quadrature.
+    static const QuadratureRule r8 = gauss_legendre(8), r4 = gauss_legendre(4);
+    double err = 0;
+    auto e = [&](double mu) {
+      const Estimate d = glass_albedo_quadrature(clamp_cos(mu), alpha, f0, eta_i, eta_o, glass_target(s));
+      err = std::max(err, d.error);
+      return 2.0 * mu * d.value;
+    };
+    std::vector<double> cuts = {0.0, 1.0};
+    if (inside && eta > 1 + kIndexMatched) cuts.insert(cuts.begin() + 1, std::sqrt(1.0 - 1.0 / (eta * eta)));
+    double fine = 0, coarse = 0;
+    for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+      fine += integrate_gl(e, cuts[k], cuts[k + 1], 2, r8);
+      coarse += integrate_gl(e, cuts[k], cuts[k + 1], 2, r4);
+    }
+    return {fine, std::abs(fine - coarse) + err};
+  }
+  // mu = sqrt(u0) has density 2 mu: the weights are the directional ones.
+  return combine<1>(replicate_means<1>(s, stream, 3,
+                                       [&](const double* u, std::array<double, 1>& acc) {
+                                         glass_weight(view_dir(clamp_cos(std::sqrt(u[0]))), alpha, f0, eta_i,
+                                                      eta_o, u[1], u[2], acc);
+                                       }),
+                    [](const std::array<double, 1>& m) { return m[0]; });
 }
 
 }  // namespace dspbr

@@ -21,8 +21,13 @@
 //    balance heuristic) driven by Owen-scrambled Sobol' points; `randomizations` independent
 //    scramblings of samples/randomizations points each.
 //  - Mc: the plain Monte Carlo baseline: uniform hemisphere sampling of l (and uniform mu for
-//    averages) with Pcg32, in `randomizations` batches.
-// Both return the mean of the replicates and its standard error (spread of the replicates /
+//    averages) with Pcg32, in `randomizations` batches (the glass albedos: Qmc's visible-normal
+//    estimator driven by Pcg32).
+//  - Quad: deterministic tensor-product Gauss-Legendre quadrature of Qmc's integrand over its
+//    unit square / cube (the sampler's map u -> h is the change of variables to the microfacet
+//    domain), P panels of 4 nodes per dimension; the error is |I(P) - I(P/2)|, and P doubles from
+//    8 while that exceeds target_error (and (4P)^dims <= samples). No replicates, no seed.
+// Qmc and Mc return the mean of the replicates and its standard error (spread of the replicates /
 // sqrt(R)). Streams: the random numbers of a call depend only on (settings.seed, stream), so a
 // table cell with stream = cell id gives the same bits whatever the thread count.
 //
@@ -37,9 +42,9 @@
 
 namespace dspbr {
 
-enum class Integrator { Qmc, Mc };
-const char* integrator_name(Integrator i);  // "qmc" / "mc"
-// "qmc" / "mc" -> Integrator; throws std::invalid_argument "'<name>' is not qmc or mc".
+enum class Integrator { Qmc, Mc, Quad };
+const char* integrator_name(Integrator i);  // "qmc" / "mc" / "quad"
+// "qmc" / "mc" / "quad" -> Integrator; throws std::invalid_argument "'<name>' is not qmc, mc or quad".
 Integrator parse_integrator(const std::string& name);
 
 struct IntegratorSettings {
@@ -89,6 +94,19 @@ Estimate ggx_beta(double mu, double r, const IntegratorSettings& s, uint64_t str
 Estimate base_E_avg(double r, double f0, const IntegratorSettings& s, uint64_t stream = 0);
 // E_b(mu; alpha_b) for the main or alternative sheen.
 Estimate sheen_E(double mu, double alpha_b, SheenModel model, const IntegratorSettings& s, uint64_t stream = 0);
+
+// The rough dielectric interface of the transparent core as the BSDF evaluates it (spec
+// "Dielectric BSDF for Transparent Surfaces", volumetric, white, specular 1, rho_s = 1, no film):
+//   E_g(mu; r, ior) = Integral [M_r F_d(v.h; F_0, 1) + M_t (1 - F_d(v.h; F_0, 1))] |mu_l| dl
+// over both hemispheres, F_0 = ((ior - 1) / (ior + 1))^2; inside = false: v outside
+// (eta_i = 1, eta_o = ior); inside = true: v inside (eta_i = ior, eta_o = 1; F_d = 1 under total
+// internal reflection, which goes to the reflection lobe). At ior = 1 the value is the limit
+// ior -> 1+ of the rough M_t (l_t = -v), continuous with ior > 1; the BSDF itself switches to a
+// Dirac there (kIndexMatched), which the compensation leaves alone. Without the M_r,ms term (its
+// albedo F_ms (1 - E_m) is closed-form).
+Estimate glass_E(double mu, double r, double ior, bool inside, const IntegratorSettings& s, uint64_t stream = 0);
+// 2 Integral_0^1 E_g(mu; r, ior) mu dmu.
+Estimate glass_E_avg(double r, double ior, bool inside, const IntegratorSettings& s, uint64_t stream = 0);
 
 // Batched forms used by the table generator (one integration serves every f0).
 // E(mu; r, f0_i) for all f0s, with E_m,avg(r) given (its error is propagated).

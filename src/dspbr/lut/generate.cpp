@@ -15,7 +15,8 @@ namespace {
 
 // Stream ids: table id in the high 32 bits, cell index in the low ones.
 enum TableId : uint64_t { kGgxE = 0, kGgxEAvg = 1, kBaseE = 2, kBaseEAvg = 3, kSheenE = 4, kSheenAshE = 5,
-                          kBaseEMAvg = 6 /* E_m,avg on Base_E's roughness axis */ };
+                          kBaseEMAvg = 6 /* E_m,avg on Base_E's roughness axis */,
+                          kGlassE = 7, kGlassInvE = 8, kGlassEAvg = 9, kGlassInvEAvg = 10 };
 uint64_t stream_of(uint64_t table, uint64_t cell) { return (table << 32) | cell; }
 
 // Largest size per axis and total cells accepted (keeps memory and run time sane).
@@ -40,7 +41,9 @@ Table make_table(const std::string& name, const LutOptions& opt) {
 }  // namespace
 
 const std::vector<std::string>& lut_table_names() {
-  static const std::vector<std::string> names{"GGX_E", "GGX_E_avg", "Base_E", "Base_E_avg", "Sheen_E", "Sheen_ash_E"};
+  static const std::vector<std::string> names{"GGX_E",   "GGX_E_avg",   "Base_E",          "Base_E_avg",
+                                              "Sheen_E", "Sheen_ash_E", "Glass_E",         "Glass_inv_E",
+                                              "Glass_E_avg", "Glass_inv_E_avg"};
   return names;
 }
 
@@ -55,7 +58,21 @@ std::vector<std::string> lut_axis_names(const std::string& t) {
   if (t == "Base_E") return {"f0", "roughness", "cos_theta"};
   if (t == "Base_E_avg") return {"f0", "roughness"};
   if (t == "Sheen_E" || t == "Sheen_ash_E") return {"alpha_b", "cos_theta"};
+  if (t == "Glass_E" || t == "Glass_inv_E") return {"ior_x", "roughness", "cos_theta"};
+  if (t == "Glass_E_avg" || t == "Glass_inv_E_avg") return {"ior_x", "roughness"};
   throw std::invalid_argument("unknown table '" + t + "'");
+}
+
+bool is_glass_table(const std::string& t) { return t.rfind("Glass_", 0) == 0 && is_lut_table_name(t); }
+
+double glass_ior_of_x(double x) {
+  const double c = std::clamp(x, 0.0, 1.0);
+  return (2.0 + c) / (2.0 - c);
+}
+double glass_x_of_ior(double ior) { return std::clamp(2.0 * (ior - 1.0) / (ior + 1.0), 0.0, 1.0); }
+
+Integrator lut_default_integrator(const std::string& t) {
+  return is_glass_table(t) ? Integrator::Quad : Integrator::Qmc;
 }
 
 std::vector<int> lut_default_size(const std::string& t) {
@@ -64,19 +81,21 @@ std::vector<int> lut_default_size(const std::string& t) {
   if (t == "Base_E") return {16, 16, 16};
   if (t == "Base_E_avg") return {16, 16};
   if (t == "Sheen_E" || t == "Sheen_ash_E") return {16, 16};
+  if (t == "Glass_E" || t == "Glass_inv_E") return {16, 16, 32};
+  if (t == "Glass_E_avg" || t == "Glass_inv_E_avg") return {16, 16};
   throw std::invalid_argument("unknown table '" + t + "'");
 }
 
 int lut_default_samples(const std::string& t) {
   // Caps for the adaptive budget (docs/luts.md): only the hardest cells (grazing, smallest
   // roughness) come near them.
-  if (t == "GGX_E_avg" || t == "Base_E_avg") return 8 << 18;
+  if (t == "GGX_E_avg" || t == "Base_E_avg" || t == "Glass_E_avg" || t == "Glass_inv_E_avg") return 8 << 18;
   return 8 << 16;
 }
 
 IntegratorSettings lut_settings(const std::string& table, const LutOptions& opt) {
   IntegratorSettings s;
-  s.integrator = opt.integrator;
+  s.integrator = opt.integrator ? *opt.integrator : lut_default_integrator(table);
   s.samples = opt.samples > 0 ? opt.samples : lut_default_samples(table);
   s.randomizations = opt.randomizations;
   s.seed = opt.seed;
@@ -97,7 +116,7 @@ std::vector<Axis> lut_axes(const std::string& table, const LutOptions& opt) {
     a.size = size[d];
     a.lo = 0;
     a.hi = 1;
-    a.kind = opt.grid;
+    a.kind = is_glass_table(table) ? GridKind::Endpoint : opt.grid;
     axes.push_back(a);
   }
   return axes;
@@ -107,7 +126,9 @@ void validate_lut_options(const LutOptions& opt) {
   if (opt.tables.empty()) throw std::invalid_argument("no tables selected");
   for (const auto& t : opt.tables)
     if (!is_lut_table_name(t))
-      throw std::invalid_argument("unknown table '" + t + "' (known: GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E)");
+      throw std::invalid_argument("unknown table '" + t +
+                                  "' (known: GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E, Glass_E, "
+                                  "Glass_inv_E, Glass_E_avg, Glass_inv_E_avg)");
   for (const auto& [t, size] : opt.sizes) {
     if (!is_lut_table_name(t)) throw std::invalid_argument("unknown table '" + t + "' in a size option");
     const size_t rank = lut_axis_names(t).size();
@@ -116,7 +137,7 @@ void validate_lut_options(const LutOptions& opt) {
                                   (rank == 1 ? "32" : rank == 2 ? "16x16" : "16x16x16"));
     size_t cells = 1;
     for (int n : size) {
-      const int min = opt.grid == GridKind::Endpoint ? 2 : 1;
+      const int min = opt.grid == GridKind::Endpoint || is_glass_table(t) ? 2 : 1;
       if (n < min || n > kMaxAxisSize)
         throw std::invalid_argument("size of " + t + ": each dimension must be in [" + std::to_string(min) + ", " +
                                     std::to_string(kMaxAxisSize) + "]");
@@ -189,6 +210,25 @@ std::vector<Table> generate_luts(const LutOptions& opt) {
           t.values[k * r.size() + i] = e[k].value;
           t.errors[k * r.size() + i] = e[k].error;
         }
+      });
+    } else if (name == "Glass_E" || name == "Glass_inv_E") {
+      const bool inside = name == "Glass_inv_E";
+      const auto x = coords(t.axes[0]), r = coords(t.axes[1]), mu = coords(t.axes[2]);
+      parallel_cells(arena, n, name, opt.progress, [&](size_t i) {
+        const size_t ix = i / (r.size() * mu.size()), ir = (i / mu.size()) % r.size(), im = i % mu.size();
+        const Estimate e = glass_E(mu[im], r[ir], glass_ior_of_x(x[ix]), inside, s,
+                                   stream_of(inside ? kGlassInvE : kGlassE, i));
+        t.values[i] = e.value;
+        t.errors[i] = e.error;
+      });
+    } else if (name == "Glass_E_avg" || name == "Glass_inv_E_avg") {
+      const bool inside = name == "Glass_inv_E_avg";
+      const auto x = coords(t.axes[0]), r = coords(t.axes[1]);
+      parallel_cells(arena, n, name, opt.progress, [&](size_t i) {
+        const Estimate e = glass_E_avg(r[i % r.size()], glass_ior_of_x(x[i / r.size()]), inside, s,
+                                       stream_of(inside ? kGlassInvEAvg : kGlassEAvg, i));
+        t.values[i] = e.value;
+        t.errors[i] = e.error;
       });
     } else {  // Sheen_E, Sheen_ash_E: rows hold alpha_b directly
       const bool ash = name == "Sheen_ash_E";

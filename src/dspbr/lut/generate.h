@@ -6,6 +6,7 @@
 #pragma once
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,9 +16,22 @@
 namespace dspbr {
 
 // Canonical table names, in canonical order: GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E,
-// Sheen_ash_E.
+// Sheen_ash_E (DSPBR 2025x), then the rough-glass tables beyond it (docs/luts.md, "Glass tables"):
+//   Glass_E         [ior_x][roughness][cos_theta]  E_g(mu; r, ior), v outside   (lut/albedo.h glass_E)
+//   Glass_inv_E     [ior_x][roughness][cos_theta]  E_g(mu; r, ior), v inside (eta_i = ior)
+//   Glass_E_avg     [ior_x][roughness]             2 Integral E_g mu dmu, outside
+//   Glass_inv_E_avg [ior_x][roughness]             the same, inside
+// on endpoint grids whatever the `grid` option (they reach ior = 1, r = 0 and cos = 0), with
+// ior_x = 2 (ior - 1) / (ior + 1) = 2 sqrt(F_0) in [0, 1] (ior 1 .. 3; above 3 a lookup clamps).
 const std::vector<std::string>& lut_table_names();
 bool is_lut_table_name(const std::string& name);
+bool is_glass_table(const std::string& name);
+// The glass tables' IOR axis: ior = (2 + x) / (2 - x) and back (clamped to [0, 1]).
+double glass_ior_of_x(double x);
+double glass_x_of_ior(double ior);
+// The integrator a table uses unless one is chosen (LutOptions::integrator): Quad for the glass
+// tables, Qmc for the others (measured: docs/luts.md, "Speed").
+Integrator lut_default_integrator(const std::string& table);
 
 // Axis names (slowest -> fastest) and default sizes of a table.
 std::vector<std::string> lut_axis_names(const std::string& table);
@@ -32,7 +46,7 @@ struct LutOptions {
   std::vector<std::string> tables = lut_table_names();  // which tables (canonical names)
   std::map<std::string, std::vector<int>> sizes;        // per-table sizes (missing: default)
   GridKind grid = GridKind::CellCentred;
-  Integrator integrator = Integrator::Qmc;
+  std::optional<Integrator> integrator;  // none: lut_default_integrator(table)
   int samples = 0;         // per cell (maximum when target_error > 0); 0: lut_default_samples(table)
   double target_error = kLutDefaultTargetError;  // adaptive stop (IntegratorSettings); 0: fixed budget
   int randomizations = 8;  // replicates per cell (>= 2)

@@ -28,6 +28,14 @@ using ojson = nlohmann::ordered_json;
 
 std::string sampling_name(const std::string& table, Integrator i) {
   if (i == Integrator::Mc) return "uniform hemisphere (Pcg32)";
+  if (table.rfind("Glass", 0) == 0 && i == Integrator::Quad)
+    return "GGX visible normals, Heitz 2018, tensor Gauss-Legendre over the sampler's unit square";
+  if (table.rfind("Glass", 0) == 0) return "GGX visible normals, Heitz 2018 (" +
+      std::string(i == Integrator::Mc ? "Pcg32" : "Owen-scrambled Sobol'") + ")";
+  if (i == Integrator::Quad)
+    return table.rfind("Sheen", 0) == 0
+               ? "mixture of uniform hemisphere and Charlie half-vector sampling, tensor Gauss-Legendre over its unit square"
+               : "GGX visible normals, Heitz 2018, tensor Gauss-Legendre over the sampler's unit square";
   if (table.rfind("Sheen", 0) == 0) return "mixture of uniform hemisphere and Charlie half-vector sampling (Owen-scrambled Sobol')";
   return "GGX visible normals, Heitz 2018 (Owen-scrambled Sobol')";
 }
@@ -116,6 +124,7 @@ double write_lut_exrs(const Table& t, const std::string& dir, bool half) {
   const int height = int(per_image / size_t(width));
   double max_rounding = 0;
   for (size_t k = 0; k < names.size(); ++k) {
+    if (names[k] == lut_atlas_name(t)) continue;  // a 3D table without slice images: the atlas below
     std::vector<float> px(per_image), stored(per_image);
     for (size_t i = 0; i < per_image; ++i) px[i] = float(t.values[k * per_image + i]);
     stored = px;
@@ -133,6 +142,15 @@ double write_lut_exrs(const Table& t, const std::string& dir, bool half) {
   }
   if (t.axes.size() == 3) {  // one 3D-ready atlas: the slices stacked vertically
     std::vector<float> px(t.values.begin(), t.values.end());
+    for (size_t i = 0; i < px.size(); ++i) {  // what the file holds (half: after the round trip)
+      float st = px[i];
+      if (half) {
+        uint16_t h16;
+        OIIO::convert_pixel_values(OIIO::TypeDesc::FLOAT, &px[i], OIIO::TypeDesc::HALF, &h16, 1);
+        OIIO::convert_pixel_values(OIIO::TypeDesc::HALF, &h16, OIIO::TypeDesc::FLOAT, &st, 1);
+      }
+      max_rounding = std::max(max_rounding, std::abs(double(st) - t.values[i]));
+    }
     ImageAttributes attrs = table_attributes(t);
     attrs.push_back(atlas_attribute(t));
     write_table_image((fs::path(dir) / lut_atlas_name(t)).string(), px, width, height * int(names.size()), 1,

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "dspbr/io/read_file.h"
+#include "dspbr/lut/generate.h"
 #include "dspbr/lut/lut_io.h"
 #include "dspbr/lut/renderer_io.h"
 
@@ -33,6 +34,10 @@ LutSet from_json(const nlohmann::json& j, const std::string& name) {
     else if (t.name == "Base_E_avg") set.base_e_avg = std::move(t);
     else if (t.name == "Sheen_E") set.sheen_e = std::move(t);
     else if (t.name == "Sheen_ash_E") set.sheen_ash_e = std::move(t);
+    else if (t.name == "Glass_E") set.glass_e = std::move(t);
+    else if (t.name == "Glass_inv_E") set.glass_inv_e = std::move(t);
+    else if (t.name == "Glass_E_avg") set.glass_e_avg = std::move(t);
+    else if (t.name == "Glass_inv_E_avg") set.glass_inv_e_avg = std::move(t);
   }
   return set;
 }
@@ -55,6 +60,17 @@ double LutSet::E_sheen(double c, double ab) const {
 }
 double LutSet::E_sheen_ash(double c, double ab) const {
   return is_renderer(*this) ? this->renderer.E_sheen_ash(c, ab) : sheen_ash_e.lookup({ab, c});
+}
+
+bool LutSet::has_glass() const {
+  return !glass_e.axes.empty() && !glass_inv_e.axes.empty() && !glass_e_avg.axes.empty() &&
+         !glass_inv_e_avg.axes.empty();
+}
+double LutSet::E_glass(double c, double r, double ior, bool inside) const {
+  return (inside ? glass_inv_e : glass_e).lookup({glass_x_of_ior(ior), r, c});
+}
+double LutSet::E_glass_avg(double r, double ior, bool inside) const {
+  return (inside ? glass_inv_e_avg : glass_e_avg).lookup({glass_x_of_ior(ior), r});
 }
 
 LutSet LutSet::load(const std::string& json_path) {

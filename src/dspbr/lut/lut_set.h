@@ -24,6 +24,10 @@ struct LutSet {
   Table base_e_avg;   // [f0][roughness]
   Table sheen_e;      // [alpha_b][cos_theta]
   Table sheen_ash_e;  // [alpha_b][cos_theta]
+  // Rough-glass tables beyond DSPBR 2025x (lut/generate.h; endpoint grids, ior_x = 2 sqrt(F_0)),
+  // read in both layouts from the published file (the renderer file holds its own when present).
+  Table glass_e, glass_inv_e;          // [ior_x][roughness][cos_theta]
+  Table glass_e_avg, glass_inv_e_avg;  // [ior_x][roughness]
   // Renderer layout.
   RendererLuts renderer;
 
@@ -36,6 +40,11 @@ struct LutSet {
   double E_base_avg(double roughness, double f0) const;
   double E_sheen(double cos_theta, double alpha_b) const;
   double E_sheen_ash(double cos_theta, double alpha_b) const;
+  // E_g(mu; r, ior) of the rough dielectric interface (lut/albedo.h glass_E), v outside or inside,
+  // and its cosine average; false from has_glass() when the set holds no glass tables.
+  bool has_glass() const;
+  double E_glass(double cos_theta, double roughness, double ior, bool inside) const;
+  double E_glass_avg(double roughness, double ior, bool inside) const;
 
   // Reads a table file written by `dspbr lut`: dspbr_luts.json (published layout) or
   // dspbr_renderer_luts.json (renderer layout), told apart by its "format". Throws

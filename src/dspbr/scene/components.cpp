@@ -34,7 +34,7 @@ uint32_t active_components(const Material& m, const std::vector<std::string>& sc
   return mask;
 }
 
-std::vector<std::string> tables_for_components(uint32_t mask) {
+std::vector<std::string> tables_for_components(uint32_t mask, bool transmission_compensation) {
   // Every microfacet reflection lobe (metal, dielectric coating, transparent reflection) uses the
   // multiple-scattering compensation M_r,ms F_ms: GGX_E and GGX_E_avg. The opaque dielectric's
   // base B_c needs Base_E and Base_E_avg; sheen layering needs Sheen_E (main model).
@@ -49,6 +49,8 @@ std::vector<std::string> tables_for_components(uint32_t mask) {
     tables.push_back("Base_E_avg");
   }
   if (mask & kSheen) tables.push_back("Sheen_E");
+  if (transmission_compensation && (mask & kVolumetricTransparent))
+    for (const char* t : {"Glass_E", "Glass_inv_E", "Glass_E_avg", "Glass_inv_E_avg"}) tables.push_back(t);
   return tables;
 }
 

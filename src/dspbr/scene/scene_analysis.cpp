@@ -27,15 +27,15 @@ bool has_primitive_without_material(const Json& doc) {
   return false;
 }
 
-void finish(MaterialAnalysis& a, SceneAnalysis& s) {
+void finish(MaterialAnalysis& a, SceneAnalysis& s, bool compensation) {
   a.components = active_components(a.material, a.textured);
-  a.tables = tables_for_components(a.components);
+  a.tables = tables_for_components(a.components, compensation);
   s.components |= a.components;
 }
 
 }  // namespace
 
-SceneAnalysis analyze_scene(const std::string& path) {
+SceneAnalysis analyze_scene(const std::string& path, bool transmission_compensation) {
   const std::string bytes = read_file(path);
   SceneAnalysis s;
   s.path = path;
@@ -53,7 +53,7 @@ SceneAnalysis analyze_scene(const std::string& path) {
     } catch (const std::exception& e) {
       throw std::runtime_error(path + ": " + e.what());
     }
-    finish(a, s);
+    finish(a, s, transmission_compensation);
     s.materials.push_back(std::move(a));
   } else {
     const gltf::GltfFile file = gltf::parse_gltf({bytes.begin(), bytes.end()}, path);
@@ -69,7 +69,7 @@ SceneAnalysis analyze_scene(const std::string& path) {
                                     t.source + " (texture " + std::to_string(t.texture) + ")");
       }
       a.notes = g.notes;
-      finish(a, s);
+      finish(a, s, transmission_compensation);
       a.textured = g.textured_parameters();
       s.materials.push_back(std::move(a));
     }
@@ -80,15 +80,17 @@ SceneAnalysis analyze_scene(const std::string& path) {
       a.material.metallic = 1;
       a.material.roughness = 1;
       a.material.emissionValue = 0;
-      finish(a, s);
+      finish(a, s, transmission_compensation);
       s.materials.push_back(std::move(a));
     }
   }
-  s.tables = tables_for_components(s.components);
+  s.tables = tables_for_components(s.components, transmission_compensation);
   return s;
 }
 
-std::vector<std::string> tables_for_scene(const std::string& path) { return analyze_scene(path).tables; }
+std::vector<std::string> tables_for_scene(const std::string& path, bool transmission_compensation) {
+  return analyze_scene(path, transmission_compensation).tables;
+}
 
 nlohmann::ordered_json scene_analysis_json(const SceneAnalysis& s, bool parameters) {
   nlohmann::ordered_json out;

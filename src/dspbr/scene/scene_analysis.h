@@ -33,15 +33,17 @@ struct SceneAnalysis {
 // material ("(default material)"). Throws std::runtime_error with a message naming the file on
 // bad input (unreadable, malformed JSON, truncated .glb, missing buffer, wrong types, invalid
 // instance).
-SceneAnalysis analyze_scene(const std::string& path);
+// transmission_compensation: the tables a renderer with the transmission compensation needs
+// (tables_for_components).
+SceneAnalysis analyze_scene(const std::string& path, bool transmission_compensation = false);
 
 // The analysis as JSON, as `dspbr scene analyze --json` prints it: {"materials": [{"name",
 // "components", "tables", "textured", "notes"[, "parameters": {id: value}]}], "tables", "warnings"}.
 nlohmann::ordered_json scene_analysis_json(const SceneAnalysis& s, bool parameters = false);
 
-// Names of the LUT tables (GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E) that the
+// Names of the LUT tables (GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E, Glass_*) that the
 // materials of the scene at `path` (.gltf/.glb or a material instance .json) need, in the
 // canonical table order. Throws std::runtime_error with a message naming the file on bad input.
-std::vector<std::string> tables_for_scene(const std::string& path);
+std::vector<std::string> tables_for_scene(const std::string& path, bool transmission_compensation = false);
 
 }  // namespace dspbr

@@ -77,11 +77,14 @@ std::string fmt_num(double x) { return fmt::format("{:g}", x); }
 struct Builder {
   const LutSet& luts;
   Catalog& cat;
+  bool compensate = false;  // CatalogOptions::transmission_compensation: every BSDF compensated
 
   std::shared_ptr<const Bsdf> component(const std::string& comp, const Material& m, const BsdfOptions& opt = {}) {
     validate_material(m);
-    if (comp == "material") return std::make_shared<MaterialBsdf>(m, luts, opt);
-    return std::shared_ptr<const Bsdf>(make_component_bsdf(comp, m, luts, opt));
+    BsdfOptions o = opt;
+    o.transmission_compensation = o.transmission_compensation || compensate;
+    if (comp == "material") return std::make_shared<MaterialBsdf>(m, luts, o);
+    return std::shared_ptr<const Bsdf>(make_component_bsdf(comp, m, luts, o));
   }
 
   BsdfCase& add(const std::string& name, const std::string& comp, const std::string& params, const Material& m,
@@ -112,6 +115,10 @@ const char* kNotePlastic =
 const char* kNoteTransmission =
     "spec 'Dielectric BSDF for Transparent Surfaces': 'Energy compensation for transmission may be added in a future "
     "revision' - the rough transmission lobe has no multiple-scattering term, so DSPBR itself loses energy here.";
+const char* kNoteCompensated =
+    "beyond DSPBR 2025x: the transparent core with the transmission compensation option (docs/bsdf.md, "
+    "'Transmission compensation'; Kulla & Conty 2017 separable lobes from the Glass tables), which makes white glass "
+    "preserve energy; the spec's BSDF (without it) is the reference.";
 const char* kNoteSheen =
     "spec 'Sheen' calls the albedo scaling min(1 - E_b(v), 1 - E_b(l)) 'energy-conserving and (almost) "
     "energy-preserving'. It is not preserving: the base is scaled by 1 - max(E_b(v), E_b(l)), and E_b is largest "
@@ -142,7 +149,10 @@ Catalog dspbr_catalog(const CatalogOptions& opt) {
     return cat;
   }
   cat.luts = luts;
-  Builder b{*luts, cat};
+  Builder b{*luts, cat, opt.transmission_compensation};
+  // Transparent cases are preserving when every BSDF is compensated (validate --transmission-compensation).
+  const EnergyClaim transparent_claim = opt.transmission_compensation ? EnergyClaim::Preserving : EnergyClaim::Conserving;
+  const char* transparent_note = opt.transmission_compensation ? kNoteCompensated : kNoteTransmission;
   const std::vector<double> rough =
       opt.quick ? std::vector<double>{0.0, 0.5, 1.0} : std::vector<double>{0.0, 0.2, 0.5, 0.8, 1.0};
   // Chi-square tests (the expensive check) on a subset: roughness 0.5 and 1 in the full run, 0.5 in
@@ -162,11 +172,11 @@ Catalog dspbr_catalog(const CatalogOptions& opt) {
       .chi2 = false;
   for (double r : rough)
     b.add("thin transparent r=" + fmt_num(r), "thin_transparent", "transparency=1 thinWalled ior=1.5 roughness=" + fmt_num(r),
-          thin_glass(r), EnergyClaim::Conserving, kNoteTransmission).chi2 = chi2_for(r);
+          thin_glass(r), transparent_claim, transparent_note).chi2 = chi2_for(r);
   for (double r : rough)
     b.add("volumetric transparent r=" + fmt_num(r), "volumetric_transparent",
-          "transparency=1 thinWalled=false ior=1.5 roughness=" + fmt_num(r), volumetric_glass(r), EnergyClaim::Conserving,
-          kNoteTransmission).chi2 = chi2_for(r);
+          "transparency=1 thinWalled=false ior=1.5 roughness=" + fmt_num(r), volumetric_glass(r), transparent_claim,
+          transparent_note).chi2 = chi2_for(r);
   b.add("translucency l=0.5 r=0.5", "translucency", "translucency=0.5 roughness=0.5", translucent(0.5, 0.5),
         EnergyClaim::Preserving, kNotePlastic)
         .chi2 = false;
@@ -222,7 +232,7 @@ Catalog dspbr_catalog(const CatalogOptions& opt) {
   {
     Material m = volumetric_glass(0.3);
     b.add("glass (volumetric) r=0.3", "material", "transparency=1 thinWalled=false ior=1.5 roughness=0.3", m,
-          EnergyClaim::Conserving, kNoteTransmission);
+          transparent_claim, transparent_note);
   }
   {
     Material m;  // car paint: coloured metal flakes in a plastic base, coated
@@ -236,6 +246,22 @@ Catalog dspbr_catalog(const CatalogOptions& opt) {
     b.add("car paint", "material", "red plastic, flakes 0.4, clearcoat 1", m, EnergyClaim::Conserving,
           "coloured material: conservation only.")
         .chi2 = false;
+  }
+  // The compensated transparent core (beyond DSPBR 2025x), after the spec's cases: appended so
+  // that the other cases keep their index (their random streams are seeded by it).
+  if (!opt.transmission_compensation) {
+    BsdfOptions comp;
+    comp.transmission_compensation = true;
+    for (double r : opt.quick ? std::vector<double>{0.5} : std::vector<double>{0.3, 0.5, 1.0}) {
+      b.add("thin transparent compensated r=" + fmt_num(r), "thin_transparent",
+            "transparency=1 thinWalled ior=1.5 roughness=" + fmt_num(r) + " transmission compensation", thin_glass(r),
+            EnergyClaim::Preserving, kNoteCompensated, comp)
+          .chi2 = !opt.quick && r == 0.5;
+      b.add("volumetric transparent compensated r=" + fmt_num(r), "volumetric_transparent",
+            "transparency=1 thinWalled=false ior=1.5 roughness=" + fmt_num(r) + " transmission compensation",
+            volumetric_glass(r), EnergyClaim::Preserving, kNoteCompensated, comp)
+          .chi2 = !opt.quick && r == 0.5;
+    }
   }
 
   // ---- Stability: parameter corners on every component's base material ----
@@ -357,8 +383,8 @@ Catalog dspbr_catalog(const CatalogOptions& opt) {
   };
   add_row("metallic", "roughness", "metallic", white_metal, kNoteMetal);
   add_row("opaque dielectric", "roughness", "opaque_dielectric", [](double r) { return white_plastic(r); }, kNotePlastic);
-  add_row("thin transparent", "roughness", "thin_transparent", thin_glass, kNoteTransmission);
-  add_row("volumetric transparent", "roughness", "volumetric_transparent", volumetric_glass, kNoteTransmission);
+  add_row("thin transparent", "roughness", "thin_transparent", thin_glass, transparent_note);
+  add_row("volumetric transparent", "roughness", "volumetric_transparent", volumetric_glass, transparent_note);
   add_row("translucency 0.5", "roughness", "translucency", [](double r) { return translucent(r, 0.5); }, kNotePlastic);
   add_row("sheen over white base", "sheen roughness", "material", sheen_over_plastic, kNoteSheen);
   {
@@ -367,6 +393,13 @@ Catalog dspbr_catalog(const CatalogOptions& opt) {
     add_row("alternative sheen over white base", "sheen roughness", "material", sheen_over_plastic, kNoteSheenAsh, ash);
   }
   add_row("clearcoat over white base", "clearcoat roughness", "material", coated_plastic, kNoteCoat);
+  if (!opt.transmission_compensation) {  // after: the compensated transparent core (beyond DSPBR 2025x)
+    BsdfOptions comp;
+    comp.transmission_compensation = true;
+    add_row("thin transparent, compensated", "roughness", "thin_transparent", thin_glass, kNoteCompensated, comp);
+    add_row("volumetric transparent, compensated", "roughness", "volumetric_transparent", volumetric_glass,
+            kNoteCompensated, comp);
+  }
 
   cat.skipped.push_back("emission: L_e(v) is not a scattering term; checked by the BSDF's own tests");
   cat.skipped.push_back("volume absorption (Beer-Lambert transmittance) and dispersion: not scattering terms; checked by the "

@@ -65,6 +65,10 @@ struct CatalogOptions {
   std::size_t random_materials = 2000;  // random parameter sets for the stability sweep
   uint64_t seed = 1;
   const LutSet* luts = nullptr;  // tables of every BSDF (null: LutSet::builtin()); must outlive the catalog
+  // Every BSDF with the transmission compensation (beyond DSPBR 2025x; validate
+  // --transmission-compensation); the transparent cases then claim preservation. Off: the spec's
+  // BSDF, plus compensated transparent cases and furnace rows for comparison.
+  bool transmission_compensation = false;
 };
 
 // The DSPBR cases (the reference BSDF with opt.luts).
