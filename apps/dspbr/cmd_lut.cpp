@@ -177,7 +177,8 @@ void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& for
   if (formats.json)
     write_text_atomically((fs::path(a.out) / "dspbr_renderer_luts.json").string(),
                           renderer_json_text(luts, opt, a.renderer_scale));
-  if (formats.exr || formats.png) write_renderer_images(luts, (fs::path(a.out) / "renderer").string(), formats.half);
+  if (formats.exr || formats.png) write_renderer_images(luts, (fs::path(a.out) / "renderer").string(), formats.half, kSplitSumSize,
+                                                        opt.command);
   if (formats.hpp)
     for (LookupDialect d : {LookupDialect::C, LookupDialect::Glsl, LookupDialect::Hlsl})
       write_text_atomically((fs::path(a.out) / lookup_file_name(d)).string(), lookup_code(luts, d, provenance));

@@ -81,14 +81,14 @@ void emit_braces(std::ostringstream& o, const Table& t, size_t level, size_t off
 }
 
 // The table's axes and conventions as image attributes (a file explains itself).
-ImageAttributes table_attributes(const Table& t) {
+ImageAttributes table_attributes(const Table& t, const std::string& command) {
   std::string axes;
   for (size_t d = 0; d < t.axes.size(); ++d) {
     const Axis& a = t.axes[d];
     axes += (d ? ", " : "") + a.name + "[" + std::to_string(a.size) + "] on [" + fmt::format("{:g}", a.lo) + ", " +
             fmt::format("{:g}", a.hi) + "]";
   }
-  return {{"dspbr:table", t.name},
+  ImageAttributes attrs{{"dspbr:table", t.name},
           {"dspbr:model", "DSPBR 2025x"},
           {"dspbr:layout", "published, version 1"},
           {"dspbr:axes", axes + " (slowest to fastest; columns = the fastest)"},
@@ -97,6 +97,8 @@ ImageAttributes table_attributes(const Table& t) {
                              : "endpoint: sample i of N at i / (N - 1)"},
           {"dspbr:interpolation", "multilinear, clamp to edge"},
           {"dspbr:encoding", "value"}};
+  if (!command.empty()) attrs.push_back({"dspbr:command", command});
+  return attrs;
 }
 
 // How a 3D table's slices are stacked in its atlas image (EXR and PNG).
@@ -117,7 +119,7 @@ std::vector<std::string> lut_exr_names(const Table& t) {
   return {t.name + ".exr"};
 }
 
-double write_lut_exrs(const Table& t, const std::string& dir, bool half) {
+double write_lut_exrs(const Table& t, const std::string& dir, bool half, const std::string& command) {
   const std::vector<std::string> names = lut_exr_names(t);
   const int width = t.axes.back().size;
   const size_t per_image = t.size() / names.size();
@@ -135,7 +137,7 @@ double write_lut_exrs(const Table& t, const std::string& dir, bool half) {
     }
     for (size_t i = 0; i < per_image; ++i)
       max_rounding = std::max(max_rounding, std::abs(double(stored[i]) - t.values[k * per_image + i]));
-    ImageAttributes attrs = table_attributes(t);
+    ImageAttributes attrs = table_attributes(t, command);
     if (names.size() > 1) attrs.push_back({"dspbr:slice", t.axes[0].name + " = " + fmt::format("{:.9g}", t.axes[0].coord(int(k)))});
     write_table_image((fs::path(dir) / names[k]).string(), px, width, height, 1,
                       half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT, attrs);
@@ -151,7 +153,7 @@ double write_lut_exrs(const Table& t, const std::string& dir, bool half) {
       }
       max_rounding = std::max(max_rounding, std::abs(double(st) - t.values[i]));
     }
-    ImageAttributes attrs = table_attributes(t);
+    ImageAttributes attrs = table_attributes(t, command);
     attrs.push_back(atlas_attribute(t));
     write_table_image((fs::path(dir) / lut_atlas_name(t)).string(), px, width, height * int(names.size()), 1,
                       half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT, attrs);
@@ -163,10 +165,10 @@ std::string lut_atlas_name(const Table& t) { return t.axes.size() == 3 ? t.name 
 
 std::vector<std::string> lut_png_names(const Table& t) { return {t.name + ".png"}; }
 
-double write_lut_png(const Table& t, const std::string& dir) {
+double write_lut_png(const Table& t, const std::string& dir, const std::string& command) {
   const int width = t.axes.back().size;
   const int height = int(t.size() / size_t(width));
-  ImageAttributes attrs = table_attributes(t);
+  ImageAttributes attrs = table_attributes(t, command);
   if (t.axes.size() == 3) attrs.push_back(atlas_attribute(t));
   return write_table_png((fs::path(dir) / lut_png_names(t)[0]).string(), t.values, width, height, attrs);
 }
@@ -328,9 +330,9 @@ std::vector<double> write_luts(const std::vector<Table>& tables, const LutOption
                                const LutFormats& formats) {
   std::vector<double> rounding(tables.size(), 0.0);
   if (formats.exr)
-    for (size_t i = 0; i < tables.size(); ++i) rounding[i] = write_lut_exrs(tables[i], dir, formats.half);
+    for (size_t i = 0; i < tables.size(); ++i) rounding[i] = write_lut_exrs(tables[i], dir, formats.half, opt.command);
   if (formats.png)
-    for (const Table& t : tables) write_lut_png(t, dir);
+    for (const Table& t : tables) write_lut_png(t, dir, opt.command);
   if (formats.hpp) write_text_atomically((fs::path(dir) / "pbrlut.hpp").string(), lut_header_text(tables, opt));
   if (formats.json) write_text_atomically((fs::path(dir) / "dspbr_luts.json").string(), lut_json_text(tables, opt));
   return rounding;

@@ -28,13 +28,14 @@ std::vector<std::string> lut_exr_names(const Table& t);
 // Writes the EXRs of `t` into dir (atomically, one file at a time), for a 3D table also the atlas
 // (lut_atlas_name: the slices stacked vertically); returns the largest |stored - value| caused by
 // the pixel type (float or half rounding).
-double write_lut_exrs(const Table& t, const std::string& dir, bool half);
+// `command`: recorded as dspbr:command when not empty (the command that rewrites the files).
+double write_lut_exrs(const Table& t, const std::string& dir, bool half, const std::string& command = "");
 std::string lut_atlas_name(const Table& t);  // "" for 1D/2D tables
 
 // 16-bit PNG of `t` (3D: the atlas), value = offset + scale * pixel / 65535 (dspbr:png_decode);
 // returns the 16-bit rounding error.
 std::vector<std::string> lut_png_names(const Table& t);
-double write_lut_png(const Table& t, const std::string& dir);
+double write_lut_png(const Table& t, const std::string& dir, const std::string& command = "");
 
 // Reads one single-channel "Y" EXR: width, height and the pixels row by row (as float).
 std::vector<float> read_lut_exr(const std::string& path, int* width, int* height);

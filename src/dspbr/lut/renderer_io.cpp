@@ -179,7 +179,8 @@ std::vector<float> split_sum_pixels(const RendererLuts& luts, int size) {
   return px;
 }
 
-void write_renderer_images(const RendererLuts& luts, const std::string& dir, bool half, int split_sum_size) {
+void write_renderer_images(const RendererLuts& luts, const std::string& dir, bool half, int split_sum_size,
+                           const std::string& command) {
   for (const char* name : RendererLuts::names()) {
     const WarpedTable& t = *luts.table(name);
     const int width = t.axes.back().size, height = t.axes.size() == 2 ? t.axes[0].size : 1;
@@ -193,18 +194,20 @@ void write_renderer_images(const RendererLuts& luts, const std::string& dir, boo
         {"dspbr:interpolation", "catmull-rom, linear extrapolation beyond the ends"},
         {"dspbr:encoding", encoding_name(t.encoding)},
         {"dspbr:decode", decode_text(t)}};
+    if (!command.empty()) attrs.push_back({"dspbr:command", command});
     write_table_image((fs::path(dir) / (std::string(name) + ".exr")).string(), px, width, height, 1,
                       half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT, attrs);
     write_table_png((fs::path(dir) / (std::string(name) + ".png")).string(), t.values, width, height, attrs);
   }
   const std::vector<float> ss = split_sum_pixels(luts, split_sum_size);
-  const ImageAttributes attrs{
+  ImageAttributes attrs{
       {"dspbr:table", "split_sum"},
       {"dspbr:model", "DSPBR 2025x"},
       {"dspbr:axes", "rows: roughness[" + std::to_string(split_sum_size) + "] r, columns: cos_theta[" +
                          std::to_string(split_sum_size) + "], cell-centred x_i = (i + 0.5) / N"},
       {"dspbr:channels", "R: E_m = A (f0 scale), G: B = Schlick moment (bias), B: main sheen E_b at alpha_b = r^2"},
       {"dspbr:usage", "specular IBL: prefiltered radiance * (f0 (A - B) + f90 B), i.e. scale A - B, bias B"}};
+  if (!command.empty()) attrs.push_back({"dspbr:command", command});
   write_table_image((fs::path(dir) / "dspbr_split_sum.exr").string(), ss, split_sum_size, split_sum_size, 3,
                     half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT, attrs);
   write_table_image((fs::path(dir) / "dspbr_split_sum.png").string(), ss, split_sum_size, split_sum_size, 3,

@@ -30,9 +30,10 @@ RendererLuts read_renderer_json_text(std::string_view text, const std::string& n
 RendererLuts read_renderer_json_value(const nlohmann::json& j, const std::string& name);
 
 // Writes NAME.exr (float, or half) and NAME.png per table and the split-sum images into dir
-// (atomically).
+// (atomically); `command` is recorded as dspbr:command when not empty.
+constexpr int kSplitSumSize = 64;  // the split-sum image's rows and columns
 void write_renderer_images(const RendererLuts& luts, const std::string& dir, bool half = false,
-                           int split_sum_size = 64);
+                           int split_sum_size = kSplitSumSize, const std::string& command = "");
 
 // The split-sum table (rows roughness, columns cos theta, cell-centred, 3 channels interleaved).
 std::vector<float> split_sum_pixels(const RendererLuts& luts, int size);
