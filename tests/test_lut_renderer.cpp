@@ -92,7 +92,7 @@ ErrorStats stats(int n, F&& err) {
   return s;
 }
 
-// Relative where the value exceeds 1 (the measure for the sheen tables).
+// Relative where the value exceeds 1 (the measure docs/luts.md uses for the sheen tables).
 double rel_err(double lookup, double ref) { return std::abs(lookup - ref) / std::max(1.0, std::abs(ref)); }
 
 TEST(LutRenderer, CommittedSetMemoryWithinThePublishedSet) {
