@@ -83,7 +83,8 @@ double RendererLuts::beta(double cos_theta, double roughness) const {
   const double r = std::clamp(roughness, 0.0, 1.0);
   const double mu = std::clamp(cos_theta, 0.0, 1.0);
   // stored: beta - (1 - mu)^5 (zero for the mirror, so the r = 0 row of the ggx_cos grid holds it)
-  return decode_beta(mu, ggx_beta.lookup_grid(ggx_beta.axes[0].warp.to_grid(r), ggx_beta.axes[1].warp.to_grid(mu, r * r)));
+  const double stored = ggx_beta.lookup_grid(ggx_beta.axes[0].warp.to_grid(r), ggx_beta.axes[1].warp.to_grid(mu, r * r));
+  return decode_beta(mu, stored);
 }
 
 double RendererLuts::base_fresnel_ms(double f0, double e_m_avg) { return fresnel_ms(f0, 1.0, e_m_avg); }
@@ -107,7 +108,7 @@ double RendererLuts::E_base(double cos_theta, double roughness, double f0) const
 double RendererLuts::E_base_avg(double roughness, double f0) const {
   const double missing = missing_E_m_avg(roughness);
   const double e_avg = 1.0 - missing;
-  return f0 * e_avg + (1.0 - f0) * B_avg(roughness) + fresnel_ms(f0, 1.0, e_avg) * missing;
+  return f0 * e_avg + (1.0 - f0) * B_avg(roughness) + base_fresnel_ms(f0, e_avg) * missing;
 }
 
 double RendererLuts::E_sheen(double cos_theta, double alpha_b) const {
