@@ -65,11 +65,6 @@ std::vector<std::string> lut_axis_names(const std::string& t) {
 
 bool is_glass_table(const std::string& t) { return t.rfind("Glass_", 0) == 0 && is_lut_table_name(t); }
 
-double glass_ior_of_x(double x) {
-  const double c = std::clamp(x, 0.0, 1.0);
-  return (2.0 + c) / (2.0 - c);
-}
-double glass_x_of_ior(double ior) { return std::clamp(2.0 * (ior - 1.0) / (ior + 1.0), 0.0, 1.0); }
 
 Integrator lut_default_integrator(const std::string& t) {
   return is_glass_table(t) ? Integrator::Quad : Integrator::Qmc;

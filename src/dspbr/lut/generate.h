@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dspbr/lut/albedo.h"
+#include "dspbr/lut/warped_table.h"
 #include "dspbr/lut/table.h"
 
 namespace dspbr {
@@ -26,9 +27,7 @@ namespace dspbr {
 const std::vector<std::string>& lut_table_names();
 bool is_lut_table_name(const std::string& name);
 bool is_glass_table(const std::string& name);
-// The glass tables' IOR axis: ior = (2 + x) / (2 - x) and back (clamped to [0, 1]).
-double glass_ior_of_x(double x);
-double glass_x_of_ior(double ior);
+// The glass tables' IOR axis glass_ior_of_x / glass_x_of_ior: lut/warped_table.h.
 // The integrator a table uses unless one is chosen (LutOptions::integrator): Quad for the glass
 // tables, Qmc for the others (measured: docs/luts.md, "Speed").
 Integrator lut_default_integrator(const std::string& table);

@@ -8,6 +8,25 @@
 
 namespace dspbr {
 
+double glass_ior_of_x(double x) {
+  const double c = std::clamp(x, 0.0, 1.0);
+  return (2.0 + c) / (2.0 - c);
+}
+double glass_x_of_ior(double ior) { return std::clamp(2.0 * (ior - 1.0) / (ior + 1.0), 0.0, 1.0); }
+
+namespace {
+
+// GlassIor (see the header): the half-linear, half-logarithmic coordinate of x_F = 2 sqrt(F_0) at
+// scale k mu^2; mu clamped to 1e-6 (the integrators' grazing clamp), so k mu^2 > 0.
+constexpr double kGlassMinMu = 1e-6;
+double glass_warp(double xf, double k_mu2) { return 0.5 * xf + 0.5 * std::log1p(xf / k_mu2) / std::log1p(1.0 / k_mu2); }
+double glass_k_mu2(double k, double mu) {
+  const double m = std::clamp(mu, kGlassMinMu, 1.0);
+  return k * m * m;
+}
+
+}  // namespace
+
 double Warp::to_grid(double v, double alpha) const {
   switch (kind) {
     case WarpKind::Power: {
@@ -22,6 +41,8 @@ double Warp::to_grid(double v, double alpha) const {
     }
     case WarpKind::LogRoughness:
       return std::log(std::clamp(v, lo, 1.0) / lo) / std::log(1.0 / lo);
+    case WarpKind::GlassIor:
+      return glass_warp(glass_x_of_ior(v), glass_k_mu2(p, alpha));
   }
   return 0;
 }
@@ -39,6 +60,12 @@ double Warp::from_grid(double x, double alpha) const {
     }
     case WarpKind::LogRoughness:
       return lo * std::pow(1.0 / lo, x);
+    case WarpKind::GlassIor: {  // monotone in x_F: bisection to double precision
+      const double k_mu2 = glass_k_mu2(p, alpha);
+      double a = 0, b = 1;
+      for (int it = 0; it < 64; ++it) (glass_warp(0.5 * (a + b), k_mu2) < x ? a : b) = 0.5 * (a + b);
+      return glass_ior_of_x(0.5 * (a + b));
+    }
   }
   return 0;
 }
@@ -48,6 +75,7 @@ std::string Warp::describe() const {
     case WarpKind::Power: return fmt::format("power(p={:g}, lo={:g})", p, lo);
     case WarpKind::GgxCos: return fmt::format("ggx_cos(p={:g})", p);
     case WarpKind::LogRoughness: return fmt::format("log(lo={:g})", lo);
+    case WarpKind::GlassIor: return fmt::format("glass_ior(k={:g})", p);
   }
   return "";
 }
@@ -77,8 +105,8 @@ double extended(At&& at, int k, int n) {
 
 }  // namespace
 
-double WarpedTable::interpolate(double x0, double x1) const {
-  if (axes.empty() || axes.size() > 2) throw std::invalid_argument("WarpedTable: rank must be 1 or 2 (" + name + ")");
+double WarpedTable::interpolate(double x0, double x1, double x2) const {
+  if (axes.empty() || axes.size() > 3) throw std::invalid_argument("WarpedTable: rank must be 1, 2 or 3 (" + name + ")");
   const int n0 = axes[0].size;
   int i0;
   double f0, w0[4];
@@ -95,16 +123,37 @@ double WarpedTable::interpolate(double x0, double x1) const {
   double f1, w1[4];
   locate(x1, n1, &i1, &f1);
   catmull_rom_weights(f1, w1);
-  // Interpolate along the fast axis in each of the four (extended) rows, then across the rows.
-  auto row = [&](int r) {
-    auto at = [&](int k) { return values[size_t(r) * size_t(n1) + size_t(k)]; };
+  if (axes.size() == 2) {
+    // Interpolate along the fast axis in each of the four (extended) rows, then across the rows.
+    auto row = [&](int r) {
+      auto at = [&](int k) { return values[size_t(r) * size_t(n1) + size_t(k)]; };
+      double s = 0;
+      for (int b = 0; b < 4; ++b) s += w1[b] * extended(at, i1 - 1 + b, n1);
+      return s;
+    };
     double s = 0;
-    for (int b = 0; b < 4; ++b) s += w1[b] * extended(at, i1 - 1 + b, n1);
+    for (int a = 0; a < 4; ++a) s += w0[a] * extended(row, i0 - 1 + a, n0);
+    return s;
+  }
+  const int n2 = axes[2].size;
+  int i2;
+  double f2, w2[4];
+  locate(x2, n2, &i2, &f2);
+  catmull_rom_weights(f2, w2);
+  // Rank 3: the same per axis, fastest first (rows of each plane, then the planes).
+  auto plane = [&](int p) {
+    auto row = [&](int r) {
+      auto at = [&](int k) { return values[(size_t(p) * size_t(n1) + size_t(r)) * size_t(n2) + size_t(k)]; };
+      double s = 0;
+      for (int c = 0; c < 4; ++c) s += w2[c] * extended(at, i2 - 1 + c, n2);
+      return s;
+    };
+    double s = 0;
+    for (int b = 0; b < 4; ++b) s += w1[b] * extended(row, i1 - 1 + b, n1);
     return s;
   };
-  auto row_at = [&](int r) { return row(r); };
   double s = 0;
-  for (int a = 0; a < 4; ++a) s += w0[a] * extended(row_at, i0 - 1 + a, n0);
+  for (int a = 0; a < 4; ++a) s += w0[a] * extended(plane, i0 - 1 + a, n0);
   return s;
 }
 
@@ -121,8 +170,8 @@ WarpedTable WarpedTable::slice(double x0) const {
   return s;
 }
 
-double WarpedTable::lookup_grid(double x0, double x1) const {
-  const double s = interpolate(x0, x1);
+double WarpedTable::lookup_grid(double x0, double x1, double x2) const {
+  const double s = interpolate(x0, x1, x2);
   return encoding == Encoding::LogOneMinus ? 1.0 - std::exp(s) : s;
 }
 

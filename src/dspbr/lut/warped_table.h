@@ -11,23 +11,34 @@
 //                   table's roughness axis. t depends on mu / alpha only (Smith's a = cot(theta) / alpha),
 //                   so the grazing drop of E_m keeps its shape at every roughness (t = 1 when alpha = 0).
 //   LogRoughness(lo): x = ln(r / lo) / ln(1 / lo)                   r in [lo, 1]
+//   GlassIor(k):    x = (x_F + ln(1 + x_F / (k mu^2)) / ln(1 + 1 / (k mu^2))) / 2, x_F = 2 sqrt(F_0)
+//                   = 2 (ior - 1) / (ior + 1), ior in [1, kGlassMaxIor], mu = the lookup's view cosine
+//                   (clamped to 1e-6). Near ior 1 at grazing the rough-glass albedo changes on the
+//                   scale x_F ~ mu^2 (the critical cosine sqrt(1 - 1/ior^2) ~ sqrt(x_F) meets mu):
+//                   the logarithmic half resolves that scale at every mu, the linear half the rest.
 #pragma once
 #include <string>
 #include <vector>
 
 namespace dspbr {
 
-enum class WarpKind { Power, GgxCos, LogRoughness };
+enum class WarpKind { Power, GgxCos, LogRoughness, GlassIor };
+
+// The rough-glass tables' index of refraction range (lookups above evaluate at the maximum), and
+// the published layout's IOR axis x = 2 (ior - 1) / (ior + 1) = 2 sqrt(F_0) in [0, 1] and back.
+constexpr double kGlassMaxIor = 3.0;
+double glass_ior_of_x(double x);
+double glass_x_of_ior(double ior);
 
 struct Warp {
   WarpKind kind = WarpKind::Power;
-  double p = 1;   // exponent (Power, GgxCos)
+  double p = 1;   // exponent (Power, GgxCos); scale k (GlassIor)
   double lo = 0;  // lower end of the domain (Power, LogRoughness)
 
-  // Grid coordinate x in [0, 1] of physical coordinate v; alpha only for GgxCos.
-  double to_grid(double v, double alpha = 0) const;
+  // Grid coordinate x in [0, 1] of physical coordinate v; aux: alpha for GgxCos, mu for GlassIor.
+  double to_grid(double v, double aux = 0) const;
   // Inverse: the physical coordinate of grid coordinate x.
-  double from_grid(double x, double alpha = 0) const;
+  double from_grid(double x, double aux = 0) const;
   // Short description, e.g. "power(p=0.25, lo=0.001)".
   std::string describe() const;
 };
@@ -46,16 +57,16 @@ enum class Encoding { Value, LogOneMinus };
 
 struct WarpedTable {
   std::string name;
-  std::vector<WarpedAxis> axes;  // 1 or 2, slowest first
+  std::vector<WarpedAxis> axes;  // 1, 2 or 3, slowest first
   std::vector<double> values;    // stored (encoded) values, row-major, fastest axis contiguous
   std::vector<double> errors;    // standard error of the decoded quantity per sample (may be empty)
   Encoding encoding = Encoding::Value;
 
   size_t size() const;
   // Catmull-Rom interpolation of the stored values at grid coordinates (slowest first).
-  double interpolate(double x0, double x1 = 0) const;
+  double interpolate(double x0, double x1 = 0, double x2 = 0) const;
   // Decoded value at grid coordinates.
-  double lookup_grid(double x0, double x1 = 0) const;
+  double lookup_grid(double x0, double x1 = 0, double x2 = 0) const;
   // A 2-D table at fixed slow-axis grid coordinate x0, as the 1-D table over its fast axis whose
   // lookups equal lookup_grid(x0, x1) to rounding (the slow axis is interpolated first). Errors
   // are not carried over.
