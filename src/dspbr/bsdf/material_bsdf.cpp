@@ -55,7 +55,8 @@ void MaterialBsdf::add_transmission_compensation(std::vector<Entry>& out, const 
     e_v = e_other = [lp, r_uv, f_ms](double c) { return 1.0 - (1.0 - f_ms) * (1.0 - lp->E_m(c, r_uv)); };
     avg_v = avg_other = 1.0 - (1.0 - f_ms) * missing_m_avg;
   } else {
-    // The glass tables of the set, or the built-in published ones when it has none.
+    // The glass tables of the set, or the built-in published ones when it has none (a renderer
+    // file written without them).
     const LutSet* gp = luts.has_glass() ? &luts : &LutSet::published();
     if (!gp->has_glass()) throw std::runtime_error("transmission compensation: no Glass tables (dspbr lut)");
     const LutSet* lp = &luts;

@@ -63,13 +63,16 @@ double LutSet::E_sheen_ash(double c, double ab) const {
 }
 
 bool LutSet::has_glass() const {
+  if (is_renderer(*this)) return renderer.has_glass();
   return !glass_e.axes.empty() && !glass_inv_e.axes.empty() && !glass_e_avg.axes.empty() &&
          !glass_inv_e_avg.axes.empty();
 }
 double LutSet::E_glass(double c, double r, double ior, bool inside) const {
+  if (is_renderer(*this)) return renderer.E_glass(c, r, ior, inside);
   return (inside ? glass_inv_e : glass_e).lookup({glass_x_of_ior(ior), r, c});
 }
 double LutSet::E_glass_avg(double r, double ior, bool inside) const {
+  if (is_renderer(*this)) return renderer.E_glass_avg(r, ior, inside);
   return (inside ? glass_inv_e_avg : glass_e_avg).lookup({glass_x_of_ior(ior), r});
 }
 

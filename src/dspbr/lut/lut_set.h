@@ -24,8 +24,8 @@ struct LutSet {
   Table base_e_avg;   // [f0][roughness]
   Table sheen_e;      // [alpha_b][cos_theta]
   Table sheen_ash_e;  // [alpha_b][cos_theta]
-  // Rough-glass tables beyond DSPBR 2025x (lut/generate.h; endpoint grids, ior_x = 2 sqrt(F_0)),
-  // read in both layouts from the published file (the renderer file holds its own when present).
+  // Rough-glass tables beyond DSPBR 2025x (lut/generate.h; endpoint grids, ior_x = 2 sqrt(F_0));
+  // a renderer-layout set holds its own (RendererLuts::glass_*) when its file has them.
   Table glass_e, glass_inv_e;          // [ior_x][roughness][cos_theta]
   Table glass_e_avg, glass_inv_e_avg;  // [ior_x][roughness]
   // Renderer layout.

@@ -13,7 +13,14 @@ namespace dspbr {
 namespace {
 
 // Stream ids of the renderer tables (high 32 bits), disjoint from the published tables' ids.
-enum : uint64_t { kStreamGgxE = 16, kStreamGgxBeta = 17, kStreamSheenE = 18, kStreamSheenAshE = 19 };
+enum : uint64_t {
+  kStreamGgxE = 16,
+  kStreamGgxBeta = 17,
+  kStreamSheenE = 18,
+  kStreamSheenAshE = 19,
+  kStreamGlassE = 20,
+  kStreamGlassInvE = 21
+};
 
 // Roughness at which the r = 0 row of GGX_E is integrated: that row holds the limit of
 // E_m(a alpha; r) as r -> 0 at fixed a = mu / alpha (the ggx_cos warp's coordinate), reached to
@@ -53,7 +60,39 @@ double cosine_average_ggx_cos(const WarpedAxis& axis, double alpha, G&& g) {
   return sum;
 }
 
+// 2 Integral_0^1 g(mu) mu dmu for a lookup g along the ggx_cos axis at roughness r (the mirror
+// row r = 0 in plain mu: there every mu > 0 maps to t = 1).
+template <class G>
+double cosine_average_of_lookup(const WarpedAxis& mu_axis, double r, G&& g) {
+  if (r * r < 1e-12) {
+    static const QuadratureRule rule = gauss_legendre(8);
+    return integrate_gl([&](double mu) { return 2.0 * mu * g(mu); }, 0.0, 1.0, 64, rule);
+  }
+  return cosine_average_ggx_cos(mu_axis, r * r, g);
+}
+
+bool wants_glass(const LutOptions& opt) {
+  return std::find(opt.tables.begin(), opt.tables.end(), "Glass_E") != opt.tables.end();
+}
+
 }  // namespace
+
+void fill_renderer_glass_averages(RendererLuts& luts) {
+  for (const bool inside : {false, true}) {
+    const WarpedTable& e = inside ? luts.glass_inv_E : luts.glass_E;
+    WarpedTable& avg = inside ? luts.glass_inv_E_avg : luts.glass_E_avg;
+    double max_error = 0;
+    for (double x : e.errors) max_error = std::max(max_error, x);
+    const int nr = avg.axes[1].size;
+    for (size_t i = 0; i < avg.size(); ++i) {
+      const double ior = glass_ior_of_x(avg.axes[0].warp.from_grid(grid_x(avg.axes[0], int(i) / nr)));
+      const double r = avg.axes[1].warp.from_grid(grid_x(avg.axes[1], int(i) % nr));
+      avg.values[i] = cosine_average_of_lookup(e.axes[2], r, [&](double mu) { return luts.E_glass(mu, r, ior, inside); });
+      avg.errors[i] = max_error;
+    }
+    round_to_float(avg);
+  }
+}
 
 void fill_renderer_averages(RendererLuts& luts) {
   // 1 - E^_m from a table of 1 - values (no cancellation where E_m is within float epsilon of 1).
@@ -77,19 +116,37 @@ void fill_renderer_averages(RendererLuts& luts) {
   WarpedTable& b_avg = luts.ggx_B_avg;
   for (int j = 0; j < b_avg.axes[0].size; ++j) {
     const double r = b_avg.axes[0].warp.from_grid(grid_x(b_avg.axes[0], j));
-    const double alpha = r * r;
-    double v;
-    if (alpha < 1e-12) {  // mirror: E_m = 1, B = beta = (1 - mu)^5 sampled in plain mu
-      static const QuadratureRule rule = gauss_legendre(8);
-      v = integrate_gl([&](double mu) { return 2.0 * mu * luts.B(mu, 0.0); }, 0.0, 1.0, 64, rule);
-    } else {
-      v = cosine_average_ggx_cos(mu_axis, alpha, [&](double mu) { return luts.B(mu, r); });
-    }
-    b_avg.values[size_t(j)] = v;
+    // (on the mirror row E_m = 1 and B = beta = (1 - mu)^5)
+    b_avg.values[size_t(j)] = cosine_average_of_lookup(mu_axis, r, [&](double mu) { return luts.B(mu, r); });
     b_avg.errors[size_t(j)] = max_error;
   }
   round_to_float(e_avg);
   round_to_float(b_avg);
+}
+
+void add_renderer_glass_luts(RendererLuts& out, const LutOptions& opt, int scale) {
+  validate_lut_options(opt);
+  tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
+  for (const char* name : RendererLuts::glass_names()) *out.table(name) = make_table(name, scale);
+  // Glass_E / Glass_inv_E over (glass_ior(mu), r, ggx_cos(mu; r^2)): the ior of a sample depends on
+  // its mu (the warp follows the refraction's grazing scale).
+  const IntegratorSettings sg = lut_settings("Glass_E", opt);
+  for (const bool inside : {false, true}) {
+    WarpedTable& t = inside ? out.glass_inv_E : out.glass_E;
+    const WarpedAxis &ai = t.axes[0], &ar = t.axes[1], &am = t.axes[2];
+    const size_t plane = size_t(ar.size) * size_t(am.size);
+    parallel_cells(arena, t.size(), t.name + " (renderer)", opt.progress, [&](size_t i) {
+      const int ii = int(i / plane), ir = int((i % plane) / size_t(am.size)), im = int(i % size_t(am.size));
+      const double r = std::max(ar.warp.from_grid(grid_x(ar, ir)), kGgxLimitRoughness);
+      const double mu = am.warp.from_grid(grid_x(am, im), r * r);
+      const double ior = ai.warp.from_grid(grid_x(ai, ii), mu);
+      const Estimate e = glass_E(mu, r, ior, inside, sg, ((inside ? kStreamGlassInvE : kStreamGlassE) << 32) | i);
+      t.values[i] = e.value;
+      t.errors[i] = e.error;
+    });
+    round_to_float(t);
+  }
+  fill_renderer_glass_averages(out);
 }
 
 RendererLuts generate_renderer_luts(const LutOptions& opt, int scale) {
@@ -97,6 +154,7 @@ RendererLuts generate_renderer_luts(const LutOptions& opt, int scale) {
   tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
   RendererLuts out;
   for (const char* name : RendererLuts::names()) *out.table(name) = make_table(name, scale);
+  const bool glass = wants_glass(opt);
   const IntegratorSettings s = lut_settings("GGX_E", opt);
 
   {  // GGX_E over (r, ggx_cos(mu; r^2))
@@ -144,6 +202,7 @@ RendererLuts generate_renderer_luts(const LutOptions& opt, int scale) {
     round_to_float(t);
   }
   fill_renderer_averages(out);
+  if (glass) add_renderer_glass_luts(out, opt, scale);
   return out;
 }
 

@@ -9,12 +9,19 @@
 
 namespace dspbr {
 
-// Integrator settings, seed and threads from `opt` (its table list and sizes are ignored);
-// axes from renderer_default_axes(name, scale).
+// Integrator settings, seed and threads from `opt` (its sizes are ignored; its table list only
+// says whether the glass tables are made: when it holds Glass_E); axes from
+// renderer_default_axes(name, scale).
 RendererLuts generate_renderer_luts(const LutOptions& opt, int scale = 1);
+
+// Adds the glass tables (renderer_default_axes(name, scale)) to a set.
+void add_renderer_glass_luts(RendererLuts& luts, const LutOptions& opt, int scale = 1);
 
 // The averages of an already filled GGX_E / GGX_beta pair (used by the generator; exposed for
 // the tests, which check them against an independent integration).
 void fill_renderer_averages(RendererLuts& luts);
+// The glass averages (Glass_E_avg, Glass_inv_E_avg) of filled Glass_E / Glass_inv_E tables, the
+// same way: cosine averages of the lookups.
+void fill_renderer_glass_averages(RendererLuts& luts);
 
 }  // namespace dspbr

@@ -30,6 +30,7 @@ const char* warp_kind_name(WarpKind k) {
     case WarpKind::Power: return "power";
     case WarpKind::GgxCos: return "ggx_cos";
     case WarpKind::LogRoughness: return "log";
+    case WarpKind::GlassIor: return "glass_ior";
   }
   return "";
 }
@@ -39,7 +40,9 @@ const char* encoding_name(Encoding e) { return e == Encoding::LogOneMinus ? "log
 std::string axes_text(const WarpedTable& t) {
   std::string s;
   for (size_t d = 0; d < t.axes.size(); ++d)
-    s += (d ? "; " : "") + std::string(d + 1 == t.axes.size() ? "columns: " : "rows: ") + t.axes[d].name + "[" +
+    s += (d ? "; " : "") +
+         std::string(d + 1 == t.axes.size() ? "columns: " : (d + 2 == t.axes.size() ? "rows: " : "row blocks: ")) +
+         t.axes[d].name + "[" +
          std::to_string(t.axes[d].size) + "] " + t.axes[d].warp.describe();
   return s;
 }
@@ -48,6 +51,13 @@ std::string decode_text(const WarpedTable& t) {
   std::string s = t.encoding == Encoding::LogOneMinus ? "quantity = 1 - exp(stored)" : "quantity = stored";
   if (t.name == "GGX_beta") s = "beta = (1 - cos_theta)^5 + stored; B = beta E_m";
   return s;
+}
+
+// The tables a set holds: the DSPBR 2025x ones, then the glass ones when present.
+std::vector<const char*> held_tables(const RendererLuts& luts) {
+  std::vector<const char*> n = RendererLuts::names();
+  if (luts.has_glass()) n.insert(n.end(), RendererLuts::glass_names().begin(), RendererLuts::glass_names().end());
+  return n;
 }
 
 }  // namespace
@@ -62,6 +72,7 @@ std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, 
   j["layout"] = "renderer";
   j["scale"] = scale;
   j["stored_values"] = luts.stored_values();
+  if (luts.has_glass()) j["glass_stored_values"] = luts.glass_stored_values();
   j["grid"] = "endpoint, x_i = i / (N - 1) of the warped coordinate";
   j["interpolation"] = "catmull-rom, linear extrapolation beyond the ends";
   const IntegratorSettings s = lut_settings("GGX_E", opt);
@@ -70,8 +81,12 @@ std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, 
                      {"target_std_error", s.target_error},
                      {"randomizations", s.randomizations},
                      {"seed", s.seed}};
+  if (luts.has_glass()) {
+    const IntegratorSettings g = lut_settings("Glass_E", opt);
+    j["glass_integrator"] = {{"name", integrator_name(g.integrator)}, {"target_error", g.target_error}};
+  }
   ojson jt = ojson::object();
-  for (const char* name : RendererLuts::names()) {
+  for (const char* name : held_tables(luts)) {
     const WarpedTable& t = *luts.table(name);
     ojson e;
     ojson axes = ojson::array();
@@ -111,10 +126,21 @@ RendererLuts read_renderer_json_value(const nlohmann::json& j, const std::string
     const RendererLuts expected_axes = [] {
       RendererLuts r;
       for (const char* n : RendererLuts::names()) r.table(n)->axes = renderer_default_axes(n);
+      for (const char* n : RendererLuts::glass_names()) r.table(n)->axes = renderer_default_axes(n);
       return r;
     }();
-    for (const char* name : RendererLuts::names()) {
-      if (!jt.contains(name)) throw std::runtime_error(std::string("table ") + name + " is missing");
+    // The glass tables are optional, as a set.
+    std::vector<const char*> wanted = RendererLuts::names();
+    size_t glass_present = 0;
+    for (const char* n : RendererLuts::glass_names()) glass_present += jt.contains(n) ? 1 : 0;
+    if (glass_present > 0)
+      wanted.insert(wanted.end(), RendererLuts::glass_names().begin(), RendererLuts::glass_names().end());
+    for (const char* name : wanted) {
+      if (!jt.contains(name))
+        throw std::runtime_error(std::string("table ") + name + " is missing" +
+                                 (glass_present > 0 && std::string(name).rfind("Glass_", 0) == 0
+                                      ? " (the Glass tables come as a set of four)"
+                                      : ""));
       const std::string where = std::string("tables.") + name;
       const auto& e = jf::object_member(jt, name, "tables");
       WarpedTable& t = *out.table(name);
@@ -137,9 +163,12 @@ RendererLuts read_renderer_json_value(const nlohmann::json& j, const std::string
         if (kind == "power") a.warp.kind = WarpKind::Power;
         else if (kind == "ggx_cos") a.warp.kind = WarpKind::GgxCos;
         else if (kind == "log") a.warp.kind = WarpKind::LogRoughness;
+        else if (kind == "glass_ior") a.warp.kind = WarpKind::GlassIor;
         else throw std::runtime_error(at + ".warp.kind: unknown warp '" + kind + "'");
-        if (a.warp.kind == WarpKind::GgxCos && !(d == 1 && ref[0].name == "roughness"))
+        if (a.warp.kind == WarpKind::GgxCos && !(d >= 1 && ref[d - 1].name == "roughness"))
           throw std::runtime_error(std::string(name) + ": the ggx_cos warp needs a roughness axis before it");
+        if (a.warp.kind == WarpKind::GlassIor && !(d == 0 && ref.back().name == "cos_theta"))
+          throw std::runtime_error(std::string(name) + ": the glass_ior warp needs a cos_theta axis after it");
         if (!(a.warp.p > 0 && a.warp.p <= 16) || !(a.warp.lo >= 0 && a.warp.lo < 1) ||
             (a.warp.kind == WarpKind::LogRoughness && !(a.warp.lo > 0)))
           throw std::runtime_error(at + " has a bad warp");
@@ -181,13 +210,15 @@ std::vector<float> split_sum_pixels(const RendererLuts& luts, int size) {
 
 void write_renderer_images(const RendererLuts& luts, const std::string& dir, bool half, int split_sum_size,
                            const std::string& command) {
-  for (const char* name : RendererLuts::names()) {
+  for (const char* name : held_tables(luts)) {
     const WarpedTable& t = *luts.table(name);
-    const int width = t.axes.back().size, height = t.axes.size() == 2 ? t.axes[0].size : 1;
+    // Rank 3: the planes of the slowest axis stacked vertically (height = n0 n1).
+    const int width = t.axes.back().size, height = int(t.size() / size_t(width));
     std::vector<float> px(t.values.begin(), t.values.end());
     ImageAttributes attrs{
         {"dspbr:table", name},
-        {"dspbr:model", "DSPBR 2025x"},
+        {"dspbr:model", std::string(name).rfind("Glass_", 0) == 0 ? "beyond DSPBR 2025x (rough-glass compensation)"
+                                                                   : "DSPBR 2025x"},
         {"dspbr:layout", "renderer, version 1"},
         {"dspbr:axes", axes_text(t)},
         {"dspbr:grid", "endpoint: sample i of N at warped coordinate i / (N - 1)"},

@@ -21,6 +21,7 @@ WarpedAxis axis(const char* name, int size, WarpKind kind, double p, double lo) 
 constexpr double kSheenMinAlphaB = 1.0 / 256.0;  // sheen tables: alpha_b below evaluates here
 constexpr double kSheenMinCos = 1e-3;            // sheen tables: cos below evaluates here
 constexpr double kAvgMinRoughness = 1e-3;        // GGX_E_avg: r below evaluates here
+constexpr double kGlassIorScale = 1.0;           // the glass ior warp's k (docs/luts.md)
 
 int scaled(int n, int scale) { return (n - 1) * scale + 1; }
 
@@ -40,11 +41,23 @@ std::vector<WarpedAxis> renderer_default_axes(const std::string& name, int scale
   if (name == "Sheen_E" || name == "Sheen_ash_E")
     return {axis("alpha_b", scaled(32, s), WarpKind::Power, 0.25, kSheenMinAlphaB),
             axis("cos_theta", scaled(32, s), WarpKind::Power, 0.25, kSheenMinCos)};
+  if (name == "Glass_E" || name == "Glass_inv_E")
+    return {axis("ior", scaled(16, s), WarpKind::GlassIor, kGlassIorScale, 0.0),
+            axis("roughness", scaled(16, s), WarpKind::Power, 1.0, 0.0),
+            axis("cos_theta", scaled(64, s), WarpKind::GgxCos, 0.6, 0.0)};
+  if (name == "Glass_E_avg" || name == "Glass_inv_E_avg")
+    return {axis("ior_x", scaled(16, s), WarpKind::Power, 1.0, 0.0),
+            axis("roughness", scaled(16, s), WarpKind::Power, 1.0, 0.0)};
   throw std::invalid_argument("unknown renderer table '" + name + "'");
 }
 
 const std::vector<const char*>& RendererLuts::names() {
   static const std::vector<const char*> n{"GGX_E", "GGX_beta", "GGX_E_avg", "GGX_B_avg", "Sheen_E", "Sheen_ash_E"};
+  return n;
+}
+
+const std::vector<const char*>& RendererLuts::glass_names() {
+  static const std::vector<const char*> n{"Glass_E", "Glass_inv_E", "Glass_E_avg", "Glass_inv_E_avg"};
   return n;
 }
 
@@ -59,6 +72,10 @@ WarpedTable* RendererLuts::table(const std::string& name) {
   if (name == "GGX_B_avg") return &ggx_B_avg;
   if (name == "Sheen_E") return &sheen_E;
   if (name == "Sheen_ash_E") return &sheen_ash_E;
+  if (name == "Glass_E") return &glass_E;
+  if (name == "Glass_inv_E") return &glass_inv_E;
+  if (name == "Glass_E_avg") return &glass_E_avg;
+  if (name == "Glass_inv_E_avg") return &glass_inv_E_avg;
   return nullptr;
 }
 
@@ -66,6 +83,19 @@ size_t RendererLuts::stored_values() const {
   size_t n = 0;
   for (const char* name : names()) n += table(name)->size();
   return n;
+}
+
+size_t RendererLuts::glass_stored_values() const {
+  size_t n = 0;
+  if (has_glass())
+    for (const char* name : glass_names()) n += table(name)->size();
+  return n;
+}
+
+bool RendererLuts::has_glass() const {
+  for (const char* name : glass_names())
+    if (table(name)->axes.empty()) return false;
+  return true;
 }
 
 double RendererLuts::E_m(double cos_theta, double roughness) const {
@@ -118,6 +148,17 @@ double RendererLuts::E_sheen(double cos_theta, double alpha_b) const {
 double RendererLuts::E_sheen_ash(double cos_theta, double alpha_b) const {
   return sheen_ash_E.lookup_grid(sheen_ash_E.axes[0].warp.to_grid(alpha_b),
                                  sheen_ash_E.axes[1].warp.to_grid(cos_theta));
+}
+
+double RendererLuts::E_glass(double cos_theta, double roughness, double ior, bool inside) const {
+  const WarpedTable& t = inside ? glass_inv_E : glass_E;
+  const double r = std::clamp(roughness, 0.0, 1.0), mu = std::clamp(cos_theta, 0.0, 1.0);
+  return t.lookup_grid(t.axes[0].warp.to_grid(ior, mu), t.axes[1].warp.to_grid(r), t.axes[2].warp.to_grid(mu, r * r));
+}
+
+double RendererLuts::E_glass_avg(double roughness, double ior, bool inside) const {
+  const WarpedTable& t = inside ? glass_inv_E_avg : glass_E_avg;
+  return t.lookup_grid(t.axes[0].warp.to_grid(glass_x_of_ior(ior)), t.axes[1].warp.to_grid(roughness));
 }
 
 }  // namespace dspbr

@@ -23,6 +23,15 @@
 // r -> 0 at fixed a = mu / alpha); E_m,avg below r = 1e-3 evaluates at r = 1e-3 (1 - E_m,avg
 // < 1e-10 there); sheen alpha_b below 1/256 evaluates at 1/256 and cos below 1e-3 at 1e-3 (the
 // spec's Lambda fit makes the main sheen's albedo diverge like 1/mu at grazing).
+//
+// Optional rough-glass tables beyond DSPBR 2025x (docs/luts.md, "Glass tables"; present in the
+// default set, absent from sets written before them):
+//   Glass_E         [ior][roughness][cos_theta]  E_g(mu; r, ior), v outside   ior axis glass_ior(mu), cos ggx_cos
+//   Glass_inv_E     [ior][roughness][cos_theta]  E_g, v inside (total internal reflection included)
+//   Glass_E_avg     [ior_x][roughness]           2 Integral E^_g mu dmu of the lookup, outside
+//   Glass_inv_E_avg [ior_x][roughness]           the same, inside
+// ior in [1, 3] (above 3 evaluates at 3); the r = 0 samples hold the limit at fixed mu / alpha
+// as for GGX_E.
 #pragma once
 #include <cmath>
 #include <vector>
@@ -33,12 +42,17 @@ namespace dspbr {
 
 struct RendererLuts {
   WarpedTable ggx_E, ggx_beta, ggx_E_avg, ggx_B_avg, sheen_E, sheen_ash_E;
+  WarpedTable glass_E, glass_inv_E, glass_E_avg, glass_inv_E_avg;  // optional (has_glass)
 
-  // Table names in canonical order and the tables by name (nullptr when unknown).
+  // DSPBR 2025x table names in canonical order, the optional glass tables' names, and the tables
+  // by name (nullptr when unknown).
   static const std::vector<const char*>& names();
+  static const std::vector<const char*>& glass_names();
   const WarpedTable* table(const std::string& name) const;
   WarpedTable* table(const std::string& name);
-  size_t stored_values() const;  // number of stored samples of all tables
+  size_t stored_values() const;        // number of stored samples of the DSPBR 2025x tables
+  size_t glass_stored_values() const;  // ... of the glass tables (0 without them)
+  bool has_glass() const;
 
   // Lookups (arguments: cos theta first, roughness r, alpha_b = r_b^2, f0).
   double E_m(double cos_theta, double roughness) const;
@@ -61,6 +75,11 @@ struct RendererLuts {
     return f0 * e_m + (1.0 - f0) * (beta * e_m) + f_ms * (1.0 - e_m);
   }
   double E_sheen_ash(double cos_theta, double alpha_b) const;
+
+  // Rough-glass albedo E_g(mu; r, ior) with v outside (inside = false) or inside, and its cosine
+  // average (requires has_glass()).
+  double E_glass(double cos_theta, double roughness, double ior, bool inside) const;
+  double E_glass_avg(double roughness, double ior, bool inside) const;
 };
 
 // The default axes (sizes and warps) of a renderer table, `scale` times the default sample count
