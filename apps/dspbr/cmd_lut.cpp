@@ -180,9 +180,15 @@ void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& for
   if (formats.exr || formats.png) write_renderer_images(luts, (fs::path(a.out) / "renderer").string(), formats.half, kSplitSumSize,
                                                         opt.command);
   if (formats.hpp)
-    for (LookupDialect d : {LookupDialect::C, LookupDialect::Glsl, LookupDialect::Hlsl})
+    for (LookupDialect d : {LookupDialect::C, LookupDialect::Glsl, LookupDialect::Hlsl}) {
       write_text_atomically((fs::path(a.out) / lookup_file_name(d)).string(), lookup_code(luts, d, provenance));
-  for (const char* name : RendererLuts::names()) {
+      if (luts.has_glass())
+        write_text_atomically((fs::path(a.out) / glass_lookup_file_name(d)).string(),
+                              glass_lookup_code(luts, d, provenance));
+    }
+  std::vector<const char*> held = RendererLuts::names();
+  if (luts.has_glass()) held.insert(held.end(), RendererLuts::glass_names().begin(), RendererLuts::glass_names().end());
+  for (const char* name : held) {
     const WarpedTable& t = *luts.table(name);
     double max_err = 0;
     for (double e : t.errors) max_err = std::max(max_err, e);
@@ -190,7 +196,8 @@ void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& for
     for (const WarpedAxis& ax : t.axes) dims += (dims.empty() ? "" : "x") + std::to_string(ax.size);
     std::printf("renderer %-12s %-9s max std error %.2e\n", name, dims.c_str(), max_err);
   }
-  std::printf("renderer layout: %zu stored values, generated in %.2f s\n", luts.stored_values(), t_gen);
+  std::printf("renderer layout: %zu stored values (+ %zu glass), generated in %.2f s\n", luts.stored_values(),
+              luts.glass_stored_values(), t_gen);
 }
 
 void run_generate(const LutArgs& a) {

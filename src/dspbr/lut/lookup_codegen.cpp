@@ -33,13 +33,56 @@ std::string warp_expr(const Warp& w, const std::string& v, const std::string& al
     case WarpKind::LogRoughness:
       return fmt::format("(log(clamp({}, {}, 1.0f) / {}) * {})", v, flit(w.lo), flit(w.lo),
                          flit(1.0 / std::log(1.0 / w.lo)));
+    case WarpKind::GlassIor:  // aux: the view cosine
+      return fmt::format("dspbr_lut_glass_ior_warp({}, {}, {})", v, alpha, flit(w.p));
   }
   return "";
 }
 
 std::string ident(const WarpedTable& t) { return "dspbr_" + t.name; }
 
-// Catmull-Rom interpolation function of one table: dspbr_lut_interp_<name>(x0[, x1]).
+// Rank 3: rows along the fastest axis, planes across the rows, then across the planes.
+std::string interp_function_3d(const WarpedTable& t) {
+  const std::string id = ident(t);
+  const int n0 = t.axes[0].size, n1 = t.axes[1].size, n2 = t.axes[2].size;
+  return fmt::format(
+      "float dspbr_lut_row_{0}(int p, int r, int j, float f) {{\n"
+      "  float p1 = {0}_at(p, r, j), p2 = {0}_at(p, r, j + 1);\n"
+      "  float q0 = {0}_at(p, r, j > 0 ? j - 1 : 0), q3 = {0}_at(p, r, j + 2 < {3} ? j + 2 : {3} - 1);\n"
+      "  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;\n"
+      "  float p3 = j + 2 < {3} ? q3 : 2.0f * p2 - p1;\n"
+      "  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);\n"
+      "}}\n"
+      "float dspbr_lut_plane_{0}(int p, int i, int j, float f1, float f2) {{\n"
+      "  float r1 = dspbr_lut_row_{0}(p, i, j, f2), r2 = dspbr_lut_row_{0}(p, i + 1, j, f2);\n"
+      "  float q0 = dspbr_lut_row_{0}(p, i > 0 ? i - 1 : 0, j, f2);\n"
+      "  float q3 = dspbr_lut_row_{0}(p, i + 2 < {2} ? i + 2 : {2} - 1, j, f2);\n"
+      "  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;\n"
+      "  float r3 = i + 2 < {2} ? q3 : 2.0f * r2 - r1;\n"
+      "  return dspbr_lut_catmull_rom(f1, r0, r1, r2, r3);\n"
+      "}}\n"
+      "float dspbr_lut_interp_{0}(float x0, float x1, float x2) {{\n"
+      "  float c0 = clamp(x0, 0.0f, 1.0f) * {4};\n"
+      "  float c1 = clamp(x1, 0.0f, 1.0f) * {5};\n"
+      "  float c2 = clamp(x2, 0.0f, 1.0f) * {6};\n"
+      "  int p = int(c0);\n"
+      "  if (p > {7}) p = {7};\n"
+      "  int i = int(c1);\n"
+      "  if (i > {8}) i = {8};\n"
+      "  int j = int(c2);\n"
+      "  if (j > {9}) j = {9};\n"
+      "  float f0 = c0 - float(p), f1 = c1 - float(i), f2 = c2 - float(j);\n"
+      "  float s1 = dspbr_lut_plane_{0}(p, i, j, f1, f2), s2 = dspbr_lut_plane_{0}(p + 1, i, j, f1, f2);\n"
+      "  float q0 = dspbr_lut_plane_{0}(p > 0 ? p - 1 : 0, i, j, f1, f2);\n"
+      "  float q3 = dspbr_lut_plane_{0}(p + 2 < {1} ? p + 2 : {1} - 1, i, j, f1, f2);\n"
+      "  float s0 = p > 0 ? q0 : 2.0f * s1 - s2;\n"
+      "  float s3 = p + 2 < {1} ? q3 : 2.0f * s2 - s1;\n"
+      "  return dspbr_lut_catmull_rom(f0, s0, s1, s2, s3);\n"
+      "}}\n",
+      id, n0, n1, n2, flit(n0 - 1), flit(n1 - 1), flit(n2 - 1), n0 - 2, n1 - 2, n2 - 2);
+}
+
+// Catmull-Rom interpolation function of one table: dspbr_lut_interp_<name>(x0[, x1[, x2]]).
 std::string interp_function(const WarpedTable& t) {
   const std::string id = ident(t);
   std::ostringstream o;
@@ -60,6 +103,7 @@ std::string interp_function(const WarpedTable& t) {
         id, flit(n0 - 1), n0 - 2, n0);
     return o.str();
   }
+  if (t.axes.size() == 3) return interp_function_3d(t);
   const int n1 = t.axes[1].size;
   o << fmt::format(
       "float dspbr_lut_row_{0}(int r, int j, float f) {{\n"
@@ -179,12 +223,93 @@ const char* kHelpers =
     "  return pow(t, p);\n"
     "}\n";
 
+// The glass file's shared text: its ior warp (lut/warped_table.h GlassIor).
+const char* kGlassHelpers =
+    "// glass_ior warp: x = (x_F + ln(1 + x_F / (k mu^2)) / ln(1 + 1 / (k mu^2))) / 2, x_F = 2 sqrt(F_0),\n"
+    "// mu clamped to 1e-6.\n"
+    "float dspbr_lut_glass_ior_warp(float ior, float cos_theta, float k) {\n"
+    "  float xf = clamp(2.0f * (ior - 1.0f) / (ior + 1.0f), 0.0f, 1.0f);\n"
+    "  float m = clamp(cos_theta, 1e-6f, 1.0f);\n"
+    "  float km = k * m * m;\n"
+    "  return 0.5f * xf + 0.5f * log(1.0f + xf / km) / log(1.0f + 1.0f / km);\n"
+    "}\n";
+
+// The glass file's public functions (GLSL syntax; `inside` and `transmission` are 0 or 1).
+std::string glass_api_functions(const RendererLuts& L) {
+  const auto& e = L.glass_E;
+  const auto& ea = L.glass_E_avg;
+  std::ostringstream o;
+  auto e_call = [&](const char* id) {
+    return fmt::format("dspbr_lut_interp_{}({}, {}, {})", id, warp_expr(e.axes[0].warp, "ior", "mu"),
+                       warp_expr(e.axes[1].warp, "r", ""), warp_expr(e.axes[2].warp, "mu", "r * r"));
+  };
+  auto avg_call = [&](const char* id) {
+    return fmt::format("dspbr_lut_interp_{}({}, {})", id, warp_expr(ea.axes[0].warp, "xf", ""),
+                       warp_expr(ea.axes[1].warp, "roughness", ""));
+  };
+  o << "// Schlick F_0 of the interface, ((ior - 1) / (ior + 1))^2.\n"
+    << "float dspbr_glass_f0(float ior) {\n  float a = (ior - 1.0f) / (ior + 1.0f);\n  return a * a;\n}\n"
+    << "// E_g(mu; r, ior): albedo of the rough dielectric interface (M_r F + M_t (1 - F), specular 1),\n"
+    << "// v outside (inside = 0) or inside (inside = 1, total internal reflection included).\n"
+    << "float dspbr_glass_E(float cos_theta, float roughness, float ior, int inside) {\n"
+    << "  float r = clamp(roughness, 0.0f, 1.0f);\n"
+    << "  float mu = clamp(cos_theta, 0.0f, 1.0f);\n"
+    << "  return inside != 0 ? " << e_call("dspbr_Glass_inv_E") << "\n"
+    << "                     : " << e_call("dspbr_Glass_E") << ";\n}\n"
+    << "// 2 Integral E_g mu dmu (the cosine average of dspbr_glass_E).\n"
+    << "float dspbr_glass_E_avg(float roughness, float ior, int inside) {\n"
+    << "  float xf = clamp(2.0f * (ior - 1.0f) / (ior + 1.0f), 0.0f, 1.0f);\n"
+    << "  return inside != 0 ? " << avg_call("dspbr_Glass_inv_E_avg") << " : " << avg_call("dspbr_Glass_E_avg")
+    << ";\n}\n"
+    << "// Albedo of the white transparent core on one side: E_g + F_ms (1 - E_m) (the spec's M_r,ms F_ms).\n"
+    << "float dspbr_glass_core_E(float cos_theta, float roughness, float ior, int inside) {\n"
+    << "  float fms = dspbr_fresnel_ms(dspbr_glass_f0(ior), 1.0f, clamp(dspbr_ggx_E_avg(roughness), 0.0f, 1.0f));\n"
+    << "  return dspbr_glass_E(cos_theta, roughness, ior, inside) + fms * (1.0f - dspbr_ggx_E(cos_theta, roughness));\n}\n"
+    << "float dspbr_glass_core_E_avg(float roughness, float ior, int inside) {\n"
+    << "  float fms = dspbr_fresnel_ms(dspbr_glass_f0(ior), 1.0f, clamp(dspbr_ggx_E_avg(roughness), 0.0f, 1.0f));\n"
+    << "  return dspbr_glass_E_avg(roughness, ior, inside) + fms * dspbr_ggx_E_avg_missing(roughness);\n}\n"
+    << "// Share x of the compensated energy that crosses the interface, for a viewer outside (x_o = 1 - F_avg)\n"
+    << "// or inside (x_i = x_o (1 - E_o,avg) / (ior^2 (1 - E_i,avg)), the eta^2 rule; x_i <= 1 bounds x_o).\n"
+    << "float dspbr_glass_transmission_share(float roughness, float ior, int inside) {\n"
+    << "  float f0 = dspbr_glass_f0(ior);\n"
+    << "  float x_out = 1.0f - (f0 * (20.0f / 21.0f) + 1.0f / 21.0f);\n"
+    << "  float m_out = max(1.0f - dspbr_glass_core_E_avg(roughness, ior, 0), 0.0f);\n"
+    << "  float m_in = max(1.0f - dspbr_glass_core_E_avg(roughness, ior, 1), 0.0f);\n"
+    << "  if (m_in <= 1e-9f) return 0.0f;\n"
+    << "  float x_in = x_out * m_out / (ior * ior * m_in);\n"
+    << "  if (x_in > 1.0f) {\n    x_in = 1.0f;\n    x_out = ior * ior * m_in / max(m_out, 1e-9f);\n  }\n"
+    << "  return inside != 0 ? x_in : x_out;\n}\n"
+    << "// Compensation lobe of volumetric glass, per unit of colour (reflection: times w_t rho_s,\n"
+    << "// transmission: times w_t rho): share (1 - E_v(mu_v)) (1 - E_l(mu_l)) / (pi (1 - E_l,avg)), E_v on the\n"
+    << "// viewer's side, E_l on the light's (the other side for transmission = 1).\n"
+    << "float dspbr_glass_compensation(float cos_v, float cos_l, float roughness, float ior, int inside,\n"
+    << "                               int transmission) {\n"
+    << "  int side_l = transmission != 0 ? 1 - inside : inside;\n"
+    << "  float missing_avg = 1.0f - dspbr_glass_core_E_avg(roughness, ior, side_l);\n"
+    << "  if (missing_avg <= 1e-9f) return 0.0f;\n"
+    << "  float mv = clamp(1.0f - dspbr_glass_core_E(abs(cos_v), roughness, ior, inside), 0.0f, 1.0f);\n"
+    << "  float ml = clamp(1.0f - dspbr_glass_core_E(abs(cos_l), roughness, ior, side_l), 0.0f, 1.0f);\n"
+    << "  float x = dspbr_glass_transmission_share(roughness, ior, inside);\n"
+    << "  return (transmission != 0 ? x : 1.0f - x) * mv * ml / (3.14159265f * missing_avg);\n}\n"
+    << "// The same for thin-walled glass: one albedo for both sides, 1 - E = (1 - F_ms)(1 - E_m), x = 1 - F_avg.\n"
+    << "float dspbr_thin_glass_compensation(float cos_v, float cos_l, float roughness, float ior, int transmission) {\n"
+    << "  float f0 = dspbr_glass_f0(ior);\n"
+    << "  float fms = dspbr_fresnel_ms(f0, 1.0f, clamp(dspbr_ggx_E_avg(roughness), 0.0f, 1.0f));\n"
+    << "  float missing_avg = (1.0f - fms) * dspbr_ggx_E_avg_missing(roughness);\n"
+    << "  if (missing_avg <= 1e-9f) return 0.0f;\n"
+    << "  float mv = clamp((1.0f - fms) * (1.0f - dspbr_ggx_E(abs(cos_v), roughness)), 0.0f, 1.0f);\n"
+    << "  float ml = clamp((1.0f - fms) * (1.0f - dspbr_ggx_E(abs(cos_l), roughness)), 0.0f, 1.0f);\n"
+    << "  float x = 1.0f - (f0 * (20.0f / 21.0f) + 1.0f / 21.0f);\n"
+    << "  return (transmission != 0 ? x : 1.0f - x) * mv * ml / (3.14159265f * missing_avg);\n}\n";
+  return o.str();
+}
+
 // GLSL body text -> C: math functions, casts, static inline.
 std::string to_c(const std::string& glsl) {
   std::string s = glsl;
   const std::pair<const char*, const char*> fns[] = {
       {"clamp", "dspbr_lut_clampf"}, {"min", "fminf"}, {"max", "fmaxf"}, {"sqrt", "sqrtf"},
-      {"pow", "powf"},            {"exp", "expf"},  {"log", "logf"}};
+      {"pow", "powf"},            {"exp", "expf"},  {"log", "logf"}, {"abs", "fabsf"}};
   for (const auto& [from, to] : fns) s = std::regex_replace(s, std::regex(std::string("\\b") + from + "\\("), std::string(to) + "(");
   s = std::regex_replace(s, std::regex("\\bfloat\\("), "(float)(");
   s = std::regex_replace(s, std::regex("\\bint\\("), "(int)(");
@@ -207,6 +332,128 @@ std::string table_comment(const WarpedTable& t) {
   return s + "\n";
 }
 
+
+// What one generated file holds.
+struct FileSpec {
+  std::string title;                // first comment line after the file name
+  std::vector<const char*> tables;  // in order; texture bindings follow it
+  int binding_offset = 0;           // first texture binding / register of the file
+  std::string guard;                // include guard stem (C: <stem>_H, shaders: <stem>_INCLUDED)
+  std::string floats_macro;         // #define <macro> <stored values>
+  size_t floats = 0;
+  std::string preamble;             // comment lines after the table list (may be empty)
+  std::string helpers;              // shared function text (GLSL syntax)
+  std::string api;                  // the public functions (GLSL syntax)
+};
+
+// Sample accessor <id>_at(...) of a table stored as an array <id>_table.
+std::string array_accessor(const WarpedTable& t, bool c) {
+  const std::string id = ident(t), pre = c ? "static inline float " : "float ";
+  if (t.axes.size() == 3)
+    return fmt::format("{0}{1}_at(int p, int r, int c) {{ return {1}_table[(p * {2} + r) * {3} + c]; }}\n", pre, id,
+                       t.axes[1].size, t.axes[2].size);
+  if (t.axes.size() == 2)
+    return fmt::format("{0}{1}_at(int r, int c) {{ return {1}_table[r * {2} + c]; }}\n", pre, id, t.axes[1].size);
+  return fmt::format("{0}{1}_at(int i) {{ return {1}_table[i]; }}\n", pre, id);
+}
+
+// Sample accessor reading a texture (width = fastest axis; a rank-3 table's planes stacked).
+std::string texture_accessor(const WarpedTable& t, bool glsl) {
+  const std::string id = ident(t);
+  std::string args, xy;
+  if (t.axes.size() == 3) {
+    args = "int p, int r, int c";
+    xy = fmt::format("c, p * {} + r", t.axes[1].size);
+  } else if (t.axes.size() == 2) {
+    args = "int r, int c";
+    xy = "c, r";
+  } else {
+    args = "int i";
+    xy = "i, 0";
+  }
+  if (glsl) return fmt::format("float {0}_at({1}) {{ return texelFetch({0}_tex, ivec2({2}), 0).r; }}\n", id, args, xy);
+  return fmt::format("float {0}_at({1}) {{ return {0}_tex.Load(int3({2}, 0)); }}\n", id, args, xy);
+}
+
+int texture_height(const WarpedTable& t) { return int(t.size() / size_t(t.axes.back().size)); }
+
+std::string file_text(const RendererLuts& L, LookupDialect dialect, const std::string& provenance, const FileSpec& f,
+                      const char* file_name) {
+  std::ostringstream o;
+  o << "// " << file_name << ": " << f.title << "\n"
+    << "// Generated by `dspbr lut`; do not edit. " << provenance << "\n"
+    << "// Tables (endpoint grids x_i = i / (N - 1) over warped coordinates, Catmull-Rom interpolation\n"
+    << "// with linear extrapolation beyond the ends; row-major, fastest axis last):\n";
+  for (const char* n : f.tables) o << table_comment(*L.table(n));
+  o << f.preamble;
+  int binding = f.binding_offset;
+  if (dialect != LookupDialect::C) {
+    o << "// With DSPBR_LOOKUP_TEXTURES defined, the tables are read from single-channel float\n"
+      << "// textures (R32F; width = fastest axis, height = slowest axis or 1; a three-axis table's\n"
+      << "// planes stacked: row = plane * rows + row), fetched with texelFetch / Load at integer texel\n"
+      << "// coordinates (no filtering, no sampler state needed):\n";
+    for (const char* n : f.tables) {
+      const WarpedTable& t = *L.table(n);
+      o << "//   " << ident(t) << "_tex  binding " << binding++ << "  " << t.axes.back().size << " x "
+        << texture_height(t) << "\n";
+    }
+    o << "// (DSPBR_LOOKUP_BINDING_BASE shifts the GLSL bindings; DSPBR_LOOKUP_REGISTER_SPACE selects the\n"
+      << "// HLSL space.) Without it, the tables are constant arrays.\n";
+  }
+  if (dialect == LookupDialect::C) {
+    o << "#ifndef " << f.guard << "_H\n#define " << f.guard << "_H\n#include <math.h>\n\n";
+  } else {
+    o << "#ifndef " << f.guard << "_INCLUDED\n#define " << f.guard << "_INCLUDED\n\n";
+  }
+  o << "#define " << f.floats_macro << " " << f.floats << "\n\n";
+  if (dialect == LookupDialect::C) {
+    if (f.binding_offset == 0)
+      o << "static inline float dspbr_lut_clampf(float x, float lo, float hi) { return x < lo ? lo : (x > hi ? hi : x); }\n";
+    for (const char* n : f.tables) {
+      const WarpedTable& t = *L.table(n);
+      o << "static const float " << ident(t) << "_table[" << t.size() << "] = {";
+      emit_values(o, t);
+      o << "};\n" << array_accessor(t, true);
+    }
+  } else {
+    const bool glsl = dialect == LookupDialect::Glsl;
+    if (f.binding_offset == 0) {
+      o << "#ifndef DSPBR_TABLE\n";
+      if (glsl) o << "#define DSPBR_TABLE(name, n) const float name[n] = float[n](\n#define DSPBR_TABLE_END );\n";
+      else o << "#define DSPBR_TABLE(name, n) static const float name[n] = {\n#define DSPBR_TABLE_END };\n";
+      o << "#endif\n";
+      if (glsl) o << "#ifndef DSPBR_LOOKUP_BINDING_BASE\n#define DSPBR_LOOKUP_BINDING_BASE 0\n#endif\n";
+      else o << "#ifndef DSPBR_LOOKUP_REGISTER_SPACE\n#define DSPBR_LOOKUP_REGISTER_SPACE space0\n#endif\n";
+    }
+    o << "#ifdef DSPBR_LOOKUP_TEXTURES\n";
+    binding = f.binding_offset;
+    for (const char* n : f.tables) {
+      const WarpedTable& t = *L.table(n);
+      const std::string id = ident(t);
+      if (glsl)
+        o << "layout(binding = DSPBR_LOOKUP_BINDING_BASE + " << binding << ") uniform sampler2D " << id << "_tex;\n";
+      else
+        o << "Texture2D<float> " << id << "_tex : register(t" << binding << ", DSPBR_LOOKUP_REGISTER_SPACE);\n";
+      o << texture_accessor(t, glsl);
+      ++binding;
+    }
+    o << "#else\n";
+    for (const char* n : f.tables) {
+      const WarpedTable& t = *L.table(n);
+      o << "DSPBR_TABLE(" << ident(t) << "_table, " << t.size() << ")";
+      emit_values(o, t);
+      o << "\nDSPBR_TABLE_END\n" << array_accessor(t, false);
+    }
+    o << "#endif\n";
+  }
+  std::string body = f.helpers;
+  for (const char* n : f.tables) body += interp_function(*L.table(n));
+  body += f.api;
+  o << "\n" << (dialect == LookupDialect::C ? to_c(body) : body);
+  o << "\n#endif\n";
+  return o.str();
+}
+
 }  // namespace
 
 const char* lookup_file_name(LookupDialect d) {
@@ -218,96 +465,41 @@ const char* lookup_file_name(LookupDialect d) {
   return "";
 }
 
+const char* glass_lookup_file_name(LookupDialect d) {
+  switch (d) {
+    case LookupDialect::C: return "dspbr_glass_lookup.h";
+    case LookupDialect::Glsl: return "dspbr_glass_lookup.glsl";
+    case LookupDialect::Hlsl: return "dspbr_glass_lookup.hlsl";
+  }
+  return "";
+}
+
 std::string lookup_code(const RendererLuts& L, LookupDialect dialect, const std::string& provenance) {
-  std::ostringstream o;
-  const size_t floats = L.stored_values();
-  const char* names[] = {"GGX_E", "GGX_beta", "GGX_E_avg", "GGX_B_avg", "Sheen_E", "Sheen_ash_E"};
-  o << "// " << lookup_file_name(dialect)
-    << ": DSPBR 2025x energy-compensation lookups, renderer layout (docs/luts.md).\n"
-    << "// Generated by `dspbr lut`; do not edit. " << provenance << "\n"
-    << "// Tables (endpoint grids x_i = i / (N - 1) over warped coordinates, Catmull-Rom interpolation\n"
-    << "// with linear extrapolation beyond the ends; row-major, fastest axis last):\n";
-  int binding = 0;
-  for (const char* n : names) o << table_comment(*L.table(n));
-  if (dialect != LookupDialect::C) {
-    o << "// With DSPBR_LOOKUP_TEXTURES defined, the tables are read from single-channel float\n"
-      << "// textures (R32F; width = fastest axis, height = slowest axis or 1), fetched with texelFetch /\n"
-      << "// Load at integer texel coordinates (no filtering, no sampler state needed):\n";
-    for (const char* n : names) {
-      const WarpedTable& t = *L.table(n);
-      o << "//   " << ident(t) << "_tex  binding " << binding++ << "  " << t.axes.back().size << " x "
-        << (t.axes.size() == 2 ? t.axes[0].size : 1) << "\n";
-    }
-    o << "// (DSPBR_LOOKUP_BINDING_BASE shifts the GLSL bindings; DSPBR_LOOKUP_REGISTER_SPACE selects the\n"
-      << "// HLSL space.) Without it, the tables are constant arrays.\n";
-  }
-  if (dialect == LookupDialect::C) {
-    o << "#ifndef DSPBR_LOOKUP_H\n#define DSPBR_LOOKUP_H\n#include <math.h>\n\n";
-  } else {
-    o << "#ifndef DSPBR_LOOKUP_INCLUDED\n#define DSPBR_LOOKUP_INCLUDED\n\n";
-  }
-  o << "#define DSPBR_LOOKUP_FLOATS " << floats << "\n\n";
-  if (dialect == LookupDialect::C) {
-    o << "static inline float dspbr_lut_clampf(float x, float lo, float hi) { return x < lo ? lo : (x > hi ? hi : x); }\n";
-    for (const char* n : names) {
-      const WarpedTable& t = *L.table(n);
-      o << "static const float " << ident(t) << "_table[" << t.size() << "] = {";
-      emit_values(o, t);
-      o << "};\n";
-      if (t.axes.size() == 2)
-        o << fmt::format("static inline float {0}_at(int r, int c) {{ return {0}_table[r * {1} + c]; }}\n", ident(t),
-                         t.axes[1].size);
-      else
-        o << fmt::format("static inline float {0}_at(int i) {{ return {0}_table[i]; }}\n", ident(t));
-    }
-  } else {
-    const bool glsl = dialect == LookupDialect::Glsl;
-    o << "#ifndef DSPBR_TABLE\n";
-    if (glsl) o << "#define DSPBR_TABLE(name, n) const float name[n] = float[n](\n#define DSPBR_TABLE_END );\n";
-    else o << "#define DSPBR_TABLE(name, n) static const float name[n] = {\n#define DSPBR_TABLE_END };\n";
-    o << "#endif\n";
-    if (glsl) o << "#ifndef DSPBR_LOOKUP_BINDING_BASE\n#define DSPBR_LOOKUP_BINDING_BASE 0\n#endif\n";
-    else o << "#ifndef DSPBR_LOOKUP_REGISTER_SPACE\n#define DSPBR_LOOKUP_REGISTER_SPACE space0\n#endif\n";
-    o << "#ifdef DSPBR_LOOKUP_TEXTURES\n";
-    binding = 0;
-    for (const char* n : names) {
-      const WarpedTable& t = *L.table(n);
-      const std::string id = ident(t);
-      if (glsl) {
-        o << "layout(binding = DSPBR_LOOKUP_BINDING_BASE + " << binding << ") uniform sampler2D " << id << "_tex;\n";
-        if (t.axes.size() == 2)
-          o << "float " << id << "_at(int r, int c) { return texelFetch(" << id << "_tex, ivec2(c, r), 0).r; }\n";
-        else
-          o << "float " << id << "_at(int i) { return texelFetch(" << id << "_tex, ivec2(i, 0), 0).r; }\n";
-      } else {
-        o << "Texture2D<float> " << id << "_tex : register(t" << binding << ", DSPBR_LOOKUP_REGISTER_SPACE);\n";
-        if (t.axes.size() == 2)
-          o << "float " << id << "_at(int r, int c) { return " << id << "_tex.Load(int3(c, r, 0)); }\n";
-        else
-          o << "float " << id << "_at(int i) { return " << id << "_tex.Load(int3(i, 0, 0)); }\n";
-      }
-      ++binding;
-    }
-    o << "#else\n";
-    for (const char* n : names) {
-      const WarpedTable& t = *L.table(n);
-      const std::string id = ident(t);
-      o << "DSPBR_TABLE(" << id << "_table, " << t.size() << ")";
-      emit_values(o, t);
-      o << "\nDSPBR_TABLE_END\n";
-      if (t.axes.size() == 2)
-        o << fmt::format("float {0}_at(int r, int c) {{ return {0}_table[r * {1} + c]; }}\n", id, t.axes[1].size);
-      else
-        o << fmt::format("float {0}_at(int i) {{ return {0}_table[i]; }}\n", id);
-    }
-    o << "#endif\n";
-  }
-  std::string body = kHelpers;
-  for (const char* n : names) body += interp_function(*L.table(n));
-  body += api_functions(L);
-  o << "\n" << (dialect == LookupDialect::C ? to_c(body) : body);
-  o << "\n#endif\n";
-  return o.str();
+  FileSpec f;
+  f.title = "DSPBR 2025x energy-compensation lookups, renderer layout (docs/luts.md).";
+  f.tables = RendererLuts::names();
+  f.guard = "DSPBR_LOOKUP";
+  f.floats_macro = "DSPBR_LOOKUP_FLOATS";
+  f.floats = L.stored_values();
+  f.helpers = kHelpers;
+  f.api = api_functions(L);
+  return file_text(L, dialect, provenance, f, lookup_file_name(dialect));
+}
+
+std::string glass_lookup_code(const RendererLuts& L, LookupDialect dialect, const std::string& provenance) {
+  if (!L.has_glass()) throw std::invalid_argument("glass lookup code: the set holds no Glass tables");
+  FileSpec f;
+  f.title = "rough-glass energy-compensation lookups, beyond DSPBR 2025x (docs/luts.md, \"Glass tables\";\n"
+            "// docs/bsdf.md, \"Transmission compensation\").";
+  f.tables = RendererLuts::glass_names();
+  f.binding_offset = int(RendererLuts::names().size());
+  f.guard = "DSPBR_GLASS_LOOKUP";
+  f.floats_macro = "DSPBR_GLASS_LOOKUP_FLOATS";
+  f.floats = L.glass_stored_values();
+  f.preamble = std::string("// Include ") + lookup_file_name(dialect) + " first (same folder, same table mode).\n";
+  f.helpers = kGlassHelpers;
+  f.api = glass_api_functions(L);
+  return file_text(L, dialect, provenance, f, glass_lookup_file_name(dialect));
 }
 
 }  // namespace dspbr

@@ -38,4 +38,19 @@ std::string lookup_code(const RendererLuts& luts, LookupDialect dialect, const s
 // File name of a dialect: dspbr_lookup.h / .glsl / .hlsl.
 const char* lookup_file_name(LookupDialect dialect);
 
+// The rough-glass lookups beyond DSPBR 2025x (requires luts.has_glass()), a second file per dialect
+// (dspbr_glass_lookup.h / .glsl / .hlsl) to include after the first; its textures take the
+// bindings after the first file's six. Functions (inside, transmission: 0 or 1):
+//   float dspbr_glass_E(float cos_theta, float roughness, float ior, int inside)     E_g
+//   float dspbr_glass_E_avg(float roughness, float ior, int inside)                  E_g,avg
+//   float dspbr_glass_core_E(...), dspbr_glass_core_E_avg(...)   E_g + F_ms (1 - E_m): the white core
+//   float dspbr_glass_transmission_share(float roughness, float ior, int inside)    x_o or x_i
+//   float dspbr_glass_compensation(float cos_v, float cos_l, float roughness, float ior, int inside,
+//                                  int transmission)             the compensation lobe per unit colour
+//   float dspbr_thin_glass_compensation(float cos_v, float cos_l, float roughness, float ior,
+//                                       int transmission)        the same, thin-walled
+//   DSPBR_GLASS_LOOKUP_FLOATS                                    stored table values
+std::string glass_lookup_code(const RendererLuts& luts, LookupDialect dialect, const std::string& provenance);
+const char* glass_lookup_file_name(LookupDialect dialect);
+
 }  // namespace dspbr
