@@ -13,6 +13,9 @@
 #include <glm/glm.hpp>
 
 #include "../luts/dspbr_lookup.h"
+#include "../luts/dspbr_glass_lookup.h"
+#include "dspbr/bsdf/material_bsdf.h"
+#include "dspbr/lut/lut_set.h"
 #include "dspbr/lut/renderer_io.h"
 #include "dspbr/lut/renderer_luts.h"
 
@@ -22,11 +25,14 @@
 namespace glsl {
 using namespace glm;
 #include "../luts/dspbr_lookup.glsl"
+#include "../luts/dspbr_glass_lookup.glsl"
 }  // namespace glsl
 #undef DSPBR_LOOKUP_INCLUDED
+#undef DSPBR_GLASS_LOOKUP_INCLUDED
 namespace hlsl {
 using namespace glm;
 #include "../luts/dspbr_lookup.hlsl"
+#include "../luts/dspbr_glass_lookup.hlsl"
 }  // namespace hlsl
 
 namespace {
@@ -115,6 +121,87 @@ TEST(LookupCode, GlslAndHlslComputeWhatTheCHeaderComputes) {
     for (int i = 0; i < 10; ++i) {
       expect_float_close(g[i], c[i], "glsl");
       expect_float_close(h[i], c[i], "hlsl");
+    }
+  }
+}
+
+// ---- The rough-glass file (beyond DSPBR 2025x) -------------------------------------------------
+
+TEST(LookupCode, GlassHeaderMatchesTheLibrary) {
+  const dspbr::RendererLuts& L = committed();
+  ASSERT_TRUE(L.has_glass());
+  EXPECT_EQ(DSPBR_GLASS_LOOKUP_FLOATS, int(L.glass_stored_values()));
+  for (const Args& a : random_args(1000)) {
+    const float ior = 1.0f + 2.0f * a.f0 * a.f0;  // dense near ior 1
+    for (int in : {0, 1}) {
+      expect_float_close(dspbr_glass_E(a.mu, a.r, ior, in), L.E_glass(a.mu, a.r, ior, in != 0), "glass_E", 2e-5);
+      expect_float_close(dspbr_glass_E_avg(a.r, ior, in), L.E_glass_avg(a.r, ior, in != 0), "glass_E_avg", 1e-5);
+    }
+  }
+}
+
+dspbr::Material white_glass(float r, float ior, bool thin) {
+  dspbr::Material m;
+  m.transparency = 1;
+  m.roughness = r;
+  m.ior = ior;
+  m.thinWalled = thin;
+  return m;
+}
+
+TEST(LookupCode, GlassCompensationIsTheBsdfsCompensationLobes) {
+  // The reference BSDF with the option minus the spec's BSDF is exactly the compensation lobes
+  // (white glass: w_t rho_s = w_t rho = 1), which the generated functions give per direction pair.
+  dspbr::BsdfOptions on;
+  on.transmission_compensation = true;
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(0, 1);
+  auto dir = [&](double sign) {
+    const double z = 0.01 + 0.99 * u(rng), phi = 6.283185307179586 * u(rng), s = std::sqrt(1 - z * z);
+    return dspbr::Vec3{s * std::cos(phi), s * std::sin(phi), sign * z};
+  };
+  for (int k = 0; k < 60; ++k) {
+    const float r = float(0.05 + 0.95 * u(rng)), ior = float(1.02 + 1.98 * u(rng));
+    for (const bool thin : {false, true}) {
+      const dspbr::MaterialBsdf spec(white_glass(r, ior, thin));
+      const dspbr::MaterialBsdf comp(white_glass(r, ior, thin), dspbr::LutSet::builtin(), on);
+      for (const double sv : {1.0, -1.0})
+        for (const double sl : {1.0, -1.0}) {
+          if (thin && sv < 0) continue;  // thin-walled: the back side is the front side mirrored
+          const dspbr::Vec3 v = dir(sv), l = dir(sl);
+          const double want = comp.eval(v, l).r - spec.eval(v, l).r;
+          const int inside = sv < 0 ? 1 : 0, transmission = sv * sl < 0 ? 1 : 0;
+          const float mv = float(std::abs(v.z)), ml = float(std::abs(l.z));
+          const float got = thin ? dspbr_thin_glass_compensation(mv, ml, r, ior, transmission)
+                                 : dspbr_glass_compensation(mv, ml, r, ior, inside, transmission);
+          EXPECT_NEAR(got, want, 2e-5 + 1e-4 * std::abs(want))
+              << (thin ? "thin" : "volumetric") << " r " << r << " ior " << ior << " inside " << inside
+              << " transmission " << transmission;
+        }
+    }
+  }
+}
+
+TEST(LookupCode, GlassGlslAndHlslComputeWhatTheCHeaderComputes) {
+  for (const Args& a : random_args(1000)) {
+    const float ior = 1.0f + 2.0f * a.f0 * a.f0;
+    for (int in : {0, 1}) {
+#define DSPBR_GLASS_CALLS(ns)                                                                          \
+  {ns dspbr_glass_E(a.mu, a.r, ior, in),                                                               \
+   ns dspbr_glass_E_avg(a.r, ior, in),                                                                 \
+   ns dspbr_glass_core_E(a.mu, a.r, ior, in),                                                          \
+   ns dspbr_glass_transmission_share(a.r, ior, in),                                                    \
+   ns dspbr_glass_compensation(a.mu, a.mu2, a.r, ior, in, 1),                                          \
+   ns dspbr_glass_compensation(a.mu, a.mu2, a.r, ior, in, 0),                                          \
+   ns dspbr_thin_glass_compensation(a.mu, a.mu2, a.r, ior, in)}
+      const float c[] = DSPBR_GLASS_CALLS(::);
+      const float g[] = DSPBR_GLASS_CALLS(glsl::);
+      const float h[] = DSPBR_GLASS_CALLS(hlsl::);
+#undef DSPBR_GLASS_CALLS
+      for (int i = 0; i < 7; ++i) {
+        expect_float_close(g[i], c[i], "glsl");
+        expect_float_close(h[i], c[i], "hlsl");
+      }
     }
   }
 }

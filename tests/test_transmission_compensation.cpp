@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/bsdf/microfacet_reflection.h"
@@ -15,6 +17,7 @@
 #include "dspbr/lut/albedo.h"
 #include "dspbr/lut/generate.h"
 #include "dspbr/lut/lut_set.h"
+#include "dspbr/lut/renderer_luts.h"
 #include "dspbr/material.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/rng.h"
@@ -161,6 +164,78 @@ TEST(GlassTables, AveragesMatchTheCosineAverageOfTheDirectionalValues) {
       }
 }
 
+// ---- The renderer layout of the glass tables (warped Catmull-Rom lookups) --------------------
+
+// Off-grid points over the whole domain: ior 1..3 (a third within 1.1), roughness 0.02..1,
+// cos theta 1e-3..1 (a third below 0.05). Seeded: the same points every run.
+std::vector<GlassPoint> random_glass_points(int n, double r_lo) {
+  Pcg32 rng(11, 5);
+  std::vector<GlassPoint> out;
+  for (int k = 0; k < n; ++k) {
+    GlassPoint p;
+    p.mu = k % 3 == 0 ? std::pow(10.0, -3.0 + 1.7 * rng.next_double()) : 1e-3 + (1 - 1e-3) * rng.next_double();
+    p.r = r_lo + (1 - r_lo) * rng.next_double();
+    p.ior = k % 3 == 1 ? 1.0 + 0.1 * std::pow(rng.next_double(), 2) : 1.0 + 2.0 * rng.next_double();
+    out.push_back(p);
+  }
+  return out;
+}
+
+TEST(GlassRenderer, LookupsMatchIndependentQuadrature) {
+  const RendererLuts& L = LutSet::builtin().renderer;
+  ASSERT_TRUE(L.has_glass());
+  // Against the lobes' own eval integrated over the half vector (independent of the tables'
+  // integrator), where that reference converges (r >= 0.2, cos theta in [0.02, 0.95]).
+  for (const bool inside : {false, true})
+    for (const GlassPoint& p : random_glass_points(24, 0.2)) {
+      const double mu = std::clamp(p.mu, 0.02, 0.95);
+      const double ref = glass_albedo_half_vector(mu, p.r, p.ior, inside, 64);
+      EXPECT_NEAR(L.E_glass(mu, p.r, p.ior, inside), ref, 2e-3)
+          << "mu " << mu << " r " << p.r << " ior " << p.ior << " inside " << inside;
+    }
+  // Over the whole domain (grazing, ior -> 1, r -> 0) against the deterministic quadrature at a
+  // tenth of the tables' target error: the interpolation error of the layout.
+  IntegratorSettings fine = quad_settings();
+  fine.target_error = 1e-6;
+  for (const bool inside : {false, true}) {
+    double max_err = 0, sum2 = 0;
+    const std::vector<GlassPoint> pts = random_glass_points(150, 0.02);
+    for (const GlassPoint& p : pts) {
+      const double e = L.E_glass(p.mu, p.r, p.ior, inside) - glass_E(p.mu, p.r, p.ior, inside, fine).value;
+      max_err = std::max(max_err, std::abs(e));
+      sum2 += e * e;
+    }
+    const double rms = std::sqrt(sum2 / double(pts.size()));
+    std::printf("Glass%s_E renderer lookup: max %.2e rms %.2e over %zu points\n", inside ? "_inv" : "", max_err, rms,
+                pts.size());
+    EXPECT_LE(max_err, 5e-3) << (inside ? "inside" : "outside");
+    EXPECT_LE(rms, 1e-3) << (inside ? "inside" : "outside");
+  }
+}
+
+TEST(GlassRenderer, AveragesAreTheCosineAveragesOfTheLookups) {
+  // A separate rule from the generator's (which follows the cos grid): Gauss-Legendre in mu^(1/4),
+  // 64 panels of 8 nodes, dense where the grazing drop is.
+  const RendererLuts& L = LutSet::builtin().renderer;
+  static const QuadratureRule rule = gauss_legendre(8);
+  for (const bool inside : {false, true})
+    for (double r : {0.0, 0.3, 0.55, 1.0})
+      for (double ior : {1.0, 1.05, 1.5, 2.2, 3.0}) {
+        const double avg = integrate_gl(
+            [&](double t) {
+              const double mu = t * t * t * t;
+              return 2.0 * mu * L.E_glass(mu, r, ior, inside) * 4.0 * t * t * t;
+            },
+            0.0, 1.0, 64, rule);
+        const double x = glass_x_of_ior(ior);
+        const bool on_grid = std::abs(x * 15 - std::round(x * 15)) < 1e-9 && std::abs(r * 15 - std::round(r * 15)) < 1e-9;
+        // On the average table's grid the stored value is the average itself; between samples the
+        // average table interpolates (smooth in ior_x and r).
+        EXPECT_NEAR(L.E_glass_avg(r, ior, inside), avg, on_grid ? 2e-5 : 2e-3)
+            << "r " << r << " ior " << ior << " inside " << inside;
+      }
+}
+
 // ---- The compensated transparent core ---------------------------------------------------------
 
 Material white_glass(double r, double ior, bool thin) {
@@ -221,15 +296,20 @@ double compensated_furnace(const MaterialBsdf& on, const MaterialBsdf& off, doub
 TEST(TransmissionCompensation, WhiteGlassFurnaceWithinOnePercent) {
   BsdfOptions on;
   on.transmission_compensation = true;
+  double range[3][2] = {{2, 0}, {2, 0}, {2, 0}};  // thin, volumetric outside, volumetric inside
   for (const bool thin : {true, false})
     for (double r : {0.3, 0.5, 1.0})
-      for (double ior : {1.33, 2.0, 3.0}) {
+      for (double ior : {1.05, 1.33, 2.0, 3.0}) {
         const MaterialBsdf b(white_glass(r, ior, thin), LutSet::builtin(), on);
         const MaterialBsdf spec(white_glass(r, ior, thin), LutSet::builtin());
         for (const bool inside : {false, true}) {
           if (thin && inside) continue;  // thin-walled: both sides are the same
-          for (double mu : {0.1, 0.4, 1.0}) {
+          for (double mu : {0.02, 0.1, 0.4, 1.0}) {
             const double e = compensated_furnace(b, spec, mu, r, ior, thin, inside);
+            double& lo = range[thin ? 0 : inside ? 2 : 1][0];
+            double& hi = range[thin ? 0 : inside ? 2 : 1][1];
+            lo = std::min(lo, e);
+            hi = std::max(hi, e);
             EXPECT_GE(e, 0.99) << (thin ? "thin" : "volumetric") << " r " << r << " ior " << ior << " mu " << mu
                                << (inside ? " inside" : " outside");
             EXPECT_LE(e, 1.01) << (thin ? "thin" : "volumetric") << " r " << r << " ior " << ior << " mu " << mu
@@ -237,6 +317,8 @@ TEST(TransmissionCompensation, WhiteGlassFurnaceWithinOnePercent) {
           }
         }
       }
+  const char* what[] = {"thin-walled", "volumetric, outside", "volumetric, inside"};
+  for (int k = 0; k < 3; ++k) std::printf("compensated white glass, %s: E in [%.4f, %.4f]\n", what[k], range[k][0], range[k][1]);
 }
 
 TEST(TransmissionCompensation, OffByDefaultAndLossWithoutIt) {
