@@ -20,7 +20,9 @@ dspbr="$prefix/bin/dspbr"
 for f in bin/dspbr lib/libdspbr.a lib/cmake/dspbr/dspbrConfig.cmake lib/cmake/dspbr/dspbrConfigVersion.cmake \
          lib/cmake/dspbr/dspbrTargets.cmake lib/pkgconfig/dspbr.pc include/dspbr/bsdf/material_bsdf.h \
          include/dspbr/version.h include/dspbr/luts/pbrlut.hpp include/dspbr/luts/dspbr_lookup.h \
-         include/dspbr/luts/dspbr_lookup.glsl include/dspbr/luts/dspbr_lookup.hlsl include/dspbr/fits/dspbr_fits.hpp \
+         include/dspbr/luts/dspbr_lookup.glsl include/dspbr/luts/dspbr_lookup.hlsl \
+         include/dspbr/luts/dspbr_glass_lookup.h include/dspbr/luts/dspbr_glass_lookup.glsl \
+         include/dspbr/luts/dspbr_glass_lookup.hlsl include/dspbr/fits/dspbr_fits.hpp \
          share/dspbr/data/params-2025x.json share/dspbr/data/LICENSE.txt share/dspbr/data/gltf_ext/schema \
          share/dspbr/luts/dspbr_renderer_luts.json share/dspbr/report/make_report.py \
          share/dspbr/report/templates/index.html.j2; do

@@ -46,8 +46,8 @@ std::vector<WarpedAxis> renderer_default_axes(const std::string& name, int scale
             axis("roughness", scaled(16, s), WarpKind::Power, 1.0, 0.0),
             axis("cos_theta", scaled(64, s), WarpKind::GgxCos, 0.6, 0.0)};
   if (name == "Glass_E_avg" || name == "Glass_inv_E_avg")
-    return {axis("ior_x", scaled(16, s), WarpKind::Power, 1.0, 0.0),
-            axis("roughness", scaled(16, s), WarpKind::Power, 1.0, 0.0)};
+    return {axis("ior_x", scaled(32, s), WarpKind::Power, 0.5, 0.0),  // dense near ior 1
+            axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0)};
   throw std::invalid_argument("unknown renderer table '" + name + "'");
 }
 
