@@ -26,7 +26,7 @@ Rgb DiffuseBase::eval(const Vec3& v, const Vec3& l) const {
   const double s = p_.specular, i = p_.film_weight;
   Rgb base = Rgb((1.0 - i) * (b_u * (1.0 - s) + s * b_c));
   if (i > 0) {
-    const Rgb rv = p_.film_reflectance(v.z), rl = p_.film_reflectance(std::abs(l.z));
+    const Rgb rv = p_.film.reflectance(v.z, p_.film_eta_base), rl = p_.film.reflectance(std::abs(l.z), p_.film_eta_base);
     const Rgb rmax(std::max(rv.r, rl.r), std::max(rv.g, rl.g), std::max(rv.b, rl.b));
     base += (1.0 - rmax) * (i * b_u);
   }
@@ -56,7 +56,7 @@ double DiffuseBase::sampling_weight(const Vec3& v) const {
   if (v.z <= 0) return 0.0;
   const double s = p_.specular, i = p_.film_weight;
   double w = (1.0 - i) * ((1.0 - s) + s * missing(v.z) * (inv_norm_ > 0 ? 1.0 : 0.0));
-  if (i > 0) w += i * (1.0 - mean(p_.film_reflectance(v.z)));
+  if (i > 0) w += i * (1.0 - mean(p_.film.reflectance(v.z, p_.film_eta_base)));
   return std::max(0.0, mean(p_.rho_d) * w);
 }
 

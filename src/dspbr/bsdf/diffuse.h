@@ -20,7 +20,8 @@ struct DiffuseParams {
   double f0_max = 0.04;        // max of F_0 rho_s (table coordinate of E, E_avg)
   double r_uv = 0;             // sqrt(r_u r_v)
   double film_weight = 0;      // i
-  CosineFn film_reflectance;   // R(cos) of the film (only called when film_weight > 0)
+  FilmLayer film;              // the film (only read when film_weight > 0)
+  double film_eta_base = 1.5;  // the base IOR under the film: R(cos) = film.reflectance(cos, film_eta_base)
 };
 
 class DiffuseBase : public Lobe {

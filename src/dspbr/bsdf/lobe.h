@@ -7,14 +7,10 @@
 // configuration for a viewer below the surface (see material_bsdf.h). A lobe returns 0 for
 // v.z <= 0.
 #pragma once
-#include <functional>
-
 #include "dspbr/bsdf/bsdf.h"
+#include "dspbr/bsdf/cosine_factor.h"
 
 namespace dspbr {
-
-// A colour-valued function of one cosine (Fresnel mixtures, transmission factors).
-using CosineFn = std::function<Rgb(double cos_theta)>;
 
 class Lobe : public Bsdf {
  public:

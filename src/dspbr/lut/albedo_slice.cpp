@@ -23,6 +23,31 @@ Table published_slice(const Table& t, std::vector<double> leading) {
 
 }  // namespace
 
+AlbedoSlice::Padded AlbedoSlice::Padded::of(const WarpedTable& t) {
+  Padded s;
+  const std::vector<double>& v = t.values;
+  s.n = int(v.size());
+  s.warp = t.axes[0].warp;
+  s.encoding = t.encoding;
+  s.p.reserve(v.size() + 2);
+  s.p.push_back(2.0 * v[0] - v[1]);
+  s.p.insert(s.p.end(), v.begin(), v.end());
+  s.p.push_back(2.0 * v[size_t(s.n) - 1] - v[size_t(s.n) - 2]);
+  return s;
+}
+
+double AlbedoSlice::Padded::at_grid(double x) const {
+  // The cell and weights of WarpedTable::interpolate; sample i - 1 + a is p[i + a].
+  const double c = std::clamp(x, 0.0, 1.0) * (n - 1);
+  const int i = std::min(int(c), n - 2);
+  double w[4];
+  catmull_rom_weights(c - i, w);
+  const double* q = p.data() + i;
+  double s = 0;
+  for (int a = 0; a < 4; ++a) s += w[a] * q[a];
+  return encoding == Encoding::LogOneMinus ? 1.0 - std::exp(s) : s;
+}
+
 AlbedoSlice AlbedoSlice::E_m(const LutSet& luts, double roughness) {
   AlbedoSlice s;
   const double r = std::clamp(roughness, 0.0, 1.0);
@@ -32,7 +57,7 @@ AlbedoSlice AlbedoSlice::E_m(const LutSet& luts, double roughness) {
   }
   s.kind_ = Kind::Renderer;
   const WarpedTable& t = luts.renderer.ggx_E;
-  s.table_ = t.slice(t.axes[0].warp.to_grid(r));
+  s.table_ = Padded::of(t.slice(t.axes[0].warp.to_grid(r)));
   s.alpha_ = r * r;
   return s;
 }
@@ -47,8 +72,8 @@ AlbedoSlice AlbedoSlice::E_base(const LutSet& luts, double roughness, double f0)
   s = E_m(luts, r);
   s.kind_ = Kind::RendererBase;
   const WarpedTable& beta = luts.renderer.ggx_beta;
-  s.beta_ = beta.slice(beta.axes[0].warp.to_grid(r));
-  const Warp &we = s.table_.axes[0].warp, &wb = s.beta_.axes[0].warp;
+  s.beta_ = Padded::of(beta.slice(beta.axes[0].warp.to_grid(r)));
+  const Warp &we = s.table_.warp, &wb = s.beta_.warp;
   s.shared_warp_ = we.kind == wb.kind && we.p == wb.p && we.lo == wb.lo;
   s.f0_ = f0;
   s.f_ms_ = RendererLuts::base_fresnel_ms(f0, luts.renderer.E_m_avg(r));
@@ -63,7 +88,7 @@ AlbedoSlice AlbedoSlice::E_sheen(const LutSet& luts, double alpha_b, bool altern
   }
   s.kind_ = Kind::Renderer;
   const WarpedTable& t = alternative ? luts.renderer.sheen_ash_E : luts.renderer.sheen_E;
-  s.table_ = t.slice(t.axes[0].warp.to_grid(alpha_b));
+  s.table_ = Padded::of(t.slice(t.axes[0].warp.to_grid(alpha_b)));
   return s;
 }
 
@@ -72,13 +97,13 @@ double AlbedoSlice::operator()(double cos_theta) const {
     case Kind::Published:
       return published_.lookup({cos_theta});
     case Kind::Renderer:
-      return table_.lookup_grid(table_.axes[0].warp.to_grid(cos_theta, alpha_));
+      return table_.at_grid(table_.warp.to_grid_fast(cos_theta, alpha_));
     case Kind::RendererBase: {
       const double mu = std::clamp(cos_theta, 0.0, 1.0);
-      const double x = table_.axes[0].warp.to_grid(mu, alpha_);
-      const double xb = shared_warp_ ? x : beta_.axes[0].warp.to_grid(mu, alpha_);
-      const double beta = RendererLuts::decode_beta(mu, beta_.lookup_grid(xb));
-      return RendererLuts::compose_E_base(f0_, table_.lookup_grid(x), beta, f_ms_);
+      const double x = table_.warp.to_grid_fast(mu, alpha_);
+      const double xb = shared_warp_ ? x : beta_.warp.to_grid_fast(mu, alpha_);
+      const double beta = RendererLuts::decode_beta_fast(mu, beta_.at_grid(xb));
+      return RendererLuts::compose_E_base(f0_, table_.at_grid(x), beta, f_ms_);
     }
   }
   return 0;

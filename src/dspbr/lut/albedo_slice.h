@@ -2,7 +2,10 @@
 // per evaluation, cut out of a LutSet once when the lobe is built, so that an evaluation does a
 // 1-D lookup instead of a 2-D or 3-D one. Equal to the LutSet lookup to rounding (the same
 // interpolant: multilinear for the published layout, Catmull-Rom per axis for the renderer
-// layout; interpolation across the fixed axes is done first). Owns its samples.
+// layout; interpolation across the fixed axes is done first). Owns its samples. The renderer
+// slices keep their samples padded with the two linearly extrapolated ones (warped_table.h), so
+// that a lookup is four products without branches, and evaluate the warp with
+// Warp::to_grid_fast.
 #pragma once
 #include "dspbr/lut/lut_set.h"
 
@@ -21,11 +24,22 @@ class AlbedoSlice {
   double operator()(double cos_theta) const;
 
  private:
+  // A 1-D renderer table over cos theta with its samples padded by the extrapolated ones:
+  // p[0] = 2 v_0 - v_1, p[k + 1] = v_k, p[n + 1] = 2 v_n-1 - v_n-2.
+  struct Padded {
+    std::vector<double> p;
+    int n = 0;
+    Warp warp;
+    Encoding encoding = Encoding::Value;
+    static Padded of(const WarpedTable& t);
+    // Catmull-Rom at grid coordinate x, decoded (equal to WarpedTable::lookup_grid).
+    double at_grid(double x) const;
+  };
   enum class Kind { Published, Renderer, RendererBase };
   Kind kind_ = Kind::Published;
-  Table published_;    // 1-D over cos theta
-  WarpedTable table_;  // 1-D over cos theta: E_m, E_b
-  WarpedTable beta_;   // 1-D over cos theta: GGX_beta (RendererBase)
+  Table published_;  // 1-D over cos theta
+  Padded table_;     // 1-D over cos theta: E_m, E_b
+  Padded beta_;      // 1-D over cos theta: GGX_beta (RendererBase)
   double alpha_ = 0;   // GgxCos warp parameter r^2
   bool shared_warp_ = false;  // RendererBase: GGX_E and GGX_beta have the same cos theta warp
   double f0_ = 0, f_ms_ = 0;  // RendererBase: f0 and F_ms(f0, 1; E_m,avg)

@@ -38,9 +38,11 @@ size_t Table::offset(const std::vector<int>& idx) const {
   return o;
 }
 
-double Table::lookup(const std::vector<double>& x) const {
+double Table::lookup(const std::vector<double>& x) const { return lookup(x.data(), x.size()); }
+
+double Table::lookup(const double* x, size_t x_rank) const {
   const size_t rank = axes.size();
-  if (x.size() != rank || rank > 3) throw std::invalid_argument("Table::lookup: wrong coordinate rank for " + name);
+  if (x_rank != rank || rank > 3) throw std::invalid_argument("Table::lookup: wrong coordinate rank for " + name);
   int i0[3] = {0, 0, 0};
   double f[3] = {0, 0, 0};
   for (size_t d = 0; d < rank; ++d) {
