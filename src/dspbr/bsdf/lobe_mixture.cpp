@@ -53,10 +53,11 @@ double LobeMixture::factor(const Factors& f, Layer layer) const {
 void LobeMixture::selection_weights(const Vec3& v, double s, double* w) const {
   const Factors f = factors(v, v, s);
   const Vec3 v_core = layering_.core.to_local(v);
+  LobeCache cache;
   for (int k = 0; k < n_; ++k) {
     const Entry& e = entries_[size_t(k)];
     const Vec3 vk = e.layer == Layer::Coat ? layering_.coat.to_local(v) : v_core;
-    const double wk = e.lobe->sampling_weight(vk) * factor(f, e.layer);
+    const double wk = e.lobe->sampling_weight(vk, cache) * factor(f, e.layer);
     w[k] = std::isfinite(wk) ? std::max(wk, 0.0) : 0.0;
   }
 }
@@ -65,6 +66,7 @@ Rgb LobeMixture::eval(const Vec3& v, const Vec3& l, double s) const {
   Rgb sum(0);
   const Vec3 v_core = layering_.core.to_local(v), l_core = layering_.core.to_local(l);
   std::optional<Factors> f;  // computed at the first lobe with a non-zero value
+  LobeCache cache;
   for (int k = 0; k < n_; ++k) {
     const Entry& e = entries_[size_t(k)];
     if (e.lobe->is_delta()) continue;
@@ -75,7 +77,7 @@ Rgb LobeMixture::eval(const Vec3& v, const Vec3& l, double s) const {
       if (!(l_core.z > 0)) continue;
       fk = e.lobe->eval(layering_.coat.to_local(v), layering_.coat.to_local(l));
     } else {
-      fk = e.lobe->eval(v_core, l_core);
+      fk = e.lobe->eval(v_core, l_core, cache);
     }
     if (fk.max_component() > 0) {
       if (!f) f = factors(v, l, s);

@@ -59,6 +59,7 @@ AlbedoSlice AlbedoSlice::E_m(const LutSet& luts, double roughness) {
   const WarpedTable& t = luts.renderer.ggx_E;
   s.table_ = Padded::of(t.slice(t.axes[0].warp.to_grid(r)));
   s.alpha_ = r * r;
+  s.em_key_ = {&t, r};
   return s;
 }
 
@@ -92,19 +93,29 @@ AlbedoSlice AlbedoSlice::E_sheen(const LutSet& luts, double alpha_b, bool altern
   return s;
 }
 
+AlbedoSlice::EmPart AlbedoSlice::e_m_part(double cos_theta) const {
+  if (!em_key_.table) return {0, (*this)(cos_theta)};
+  const double x = table_.warp.to_grid_fast(std::clamp(cos_theta, 0.0, 1.0), alpha_);
+  return {x, table_.at_grid(x)};
+}
+
+double AlbedoSlice::from_e_m_part(double cos_theta, const EmPart& part) const {
+  if (!em_key_.table) return part.e_m;
+  if (kind_ == Kind::Renderer) return part.e_m;
+  const double mu = std::clamp(cos_theta, 0.0, 1.0);
+  const double xb = shared_warp_ ? part.x : beta_.warp.to_grid_fast(mu, alpha_);
+  const double beta = RendererLuts::decode_beta_fast(mu, beta_.at_grid(xb));
+  return RendererLuts::compose_E_base(f0_, part.e_m, beta, f_ms_);
+}
+
 double AlbedoSlice::operator()(double cos_theta) const {
   switch (kind_) {
     case Kind::Published:
       return published_.lookup({cos_theta});
     case Kind::Renderer:
       return table_.at_grid(table_.warp.to_grid_fast(cos_theta, alpha_));
-    case Kind::RendererBase: {
-      const double mu = std::clamp(cos_theta, 0.0, 1.0);
-      const double x = table_.warp.to_grid_fast(mu, alpha_);
-      const double xb = shared_warp_ ? x : beta_.warp.to_grid_fast(mu, alpha_);
-      const double beta = RendererLuts::decode_beta_fast(mu, beta_.at_grid(xb));
-      return RendererLuts::compose_E_base(f0_, table_.at_grid(x), beta, f_ms_);
-    }
+    case Kind::RendererBase:
+      return from_e_m_part(cos_theta, e_m_part(cos_theta));
   }
   return 0;
 }

@@ -23,6 +23,22 @@ class AlbedoSlice {
 
   double operator()(double cos_theta) const;
 
+  // The E_m part of an E_m or E_base slice of the renderer layout: the grid coordinate x of mu
+  // and E_m(x). The E_m and E_base slices of one set at one roughness have the same part
+  // (same e_m_key(); null for the other slices), so lobes reading both at one cosine can share it.
+  struct EmPart {
+    double x = 0, e_m = 0;
+  };
+  struct EmKey {
+    const void* table = nullptr;  // the GGX_E table the slice was cut from (compared, never read)
+    double roughness = 0;
+    bool operator==(const EmKey& o) const { return table == o.table && roughness == o.roughness; }
+  };
+  EmKey e_m_key() const { return em_key_; }
+  EmPart e_m_part(double cos_theta) const;
+  // The slice's value from its E_m part at the same cos theta: equal to operator().
+  double from_e_m_part(double cos_theta, const EmPart& part) const;
+
  private:
   // A 1-D renderer table over cos theta with its samples padded by the extrapolated ones:
   // p[0] = 2 v_0 - v_1, p[k + 1] = v_k, p[n + 1] = 2 v_n-1 - v_n-2.
@@ -41,6 +57,7 @@ class AlbedoSlice {
   Padded table_;     // 1-D over cos theta: E_m, E_b
   Padded beta_;      // 1-D over cos theta: GGX_beta (RendererBase)
   double alpha_ = 0;   // GgxCos warp parameter r^2
+  EmKey em_key_;      // E_m and E_base of the renderer layout
   bool shared_warp_ = false;  // RendererBase: GGX_E and GGX_beta have the same cos theta warp
   double f0_ = 0, f_ms_ = 0;  // RendererBase: f0 and F_ms(f0, 1; E_m,avg)
 };

@@ -45,13 +45,28 @@ double Table::lookup(const double* x, size_t x_rank) const {
   if (x_rank != rank || rank > 3) throw std::invalid_argument("Table::lookup: wrong coordinate rank for " + name);
   int i0[3] = {0, 0, 0};
   double f[3] = {0, 0, 0};
+  const Axis* ax = axes.data();
   for (size_t d = 0; d < rank; ++d) {
-    const int n = axes[d].size;
-    const double c = std::clamp(axes[d].index(x[d]), 0.0, double(n - 1));
+    const int n = ax[d].size;
+    const double c = std::clamp(ax[d].index(x[d]), 0.0, double(n - 1));
     i0[d] = std::min(int(std::floor(c)), std::max(0, n - 2));
     f[d] = n > 1 ? c - i0[d] : 0.0;
   }
   double result = 0;
+  if (rank == 2) {
+    // The loop below written out for two axes (same products and order).
+    const size_t n1 = size_t(ax[1].size);
+    const size_t r0 = size_t(i0[0]), r1 = size_t(std::min(i0[0] + 1, ax[0].size - 1));
+    const size_t c0 = size_t(i0[1]), c1 = size_t(std::min(i0[1] + 1, ax[1].size - 1));
+    const double w00 = (1.0 - f[0]) * (1.0 - f[1]), w10 = f[0] * (1.0 - f[1]);
+    const double w01 = (1.0 - f[0]) * f[1], w11 = f[0] * f[1];
+    const double* v = values.data();
+    if (w00 != 0) result += w00 * v[r0 * n1 + c0];
+    if (w10 != 0) result += w10 * v[r1 * n1 + c0];
+    if (w01 != 0) result += w01 * v[r0 * n1 + c1];
+    if (w11 != 0) result += w11 * v[r1 * n1 + c1];
+    return result;
+  }
   for (int corner = 0; corner < (1 << rank); ++corner) {
     double w = 1;
     size_t o = 0;
