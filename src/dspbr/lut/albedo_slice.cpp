@@ -29,22 +29,32 @@ AlbedoSlice::Padded AlbedoSlice::Padded::of(const WarpedTable& t) {
   s.n = int(v.size());
   s.warp = t.axes[0].warp;
   s.encoding = t.encoding;
-  s.p.reserve(v.size() + 2);
-  s.p.push_back(2.0 * v[0] - v[1]);
-  s.p.insert(s.p.end(), v.begin(), v.end());
-  s.p.push_back(2.0 * v[size_t(s.n) - 1] - v[size_t(s.n) - 2]);
+  // Samples padded with the extrapolated ones: p[0] = 2 v_0 - v_1, p[k + 1] = v_k,
+  // p[n + 1] = 2 v_n-1 - v_n-2.
+  std::vector<double> p;
+  p.reserve(v.size() + 2);
+  p.push_back(2.0 * v[0] - v[1]);
+  p.insert(p.end(), v.begin(), v.end());
+  p.push_back(2.0 * v[size_t(s.n) - 1] - v[size_t(s.n) - 2]);
+  // Catmull-Rom of cell i from samples i - 1 .. i + 2 (catmull_rom_weights expanded in powers of f).
+  s.c.reserve(4 * (v.size() - 1));
+  for (int i = 0; i + 1 < s.n; ++i) {
+    const double p0 = p[size_t(i)], p1 = p[size_t(i) + 1], p2 = p[size_t(i) + 2], p3 = p[size_t(i) + 3];
+    s.c.push_back(0.5 * (-p0 + 3.0 * p1 - 3.0 * p2 + p3));
+    s.c.push_back(0.5 * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3));
+    s.c.push_back(0.5 * (p2 - p0));
+    s.c.push_back(p1);
+  }
   return s;
 }
 
 double AlbedoSlice::Padded::at_grid(double x) const {
-  // The cell and weights of WarpedTable::interpolate; sample i - 1 + a is p[i + a].
-  const double c = std::clamp(x, 0.0, 1.0) * (n - 1);
-  const int i = std::min(int(c), n - 2);
-  double w[4];
-  catmull_rom_weights(c - i, w);
-  const double* q = p.data() + i;
-  double s = 0;
-  for (int a = 0; a < 4; ++a) s += w[a] * q[a];
+  // The cell and fraction of WarpedTable::interpolate.
+  const double g = std::clamp(x, 0.0, 1.0) * (n - 1);
+  const int i = std::min(int(g), n - 2);
+  const double f = g - i;
+  const double* k = c.data() + 4 * size_t(i);
+  const double s = ((k[0] * f + k[1]) * f + k[2]) * f + k[3];
   return encoding == Encoding::LogOneMinus ? 1.0 - std::exp(s) : s;
 }
 

@@ -3,8 +3,9 @@
 // 1-D lookup instead of a 2-D or 3-D one. Equal to the LutSet lookup to rounding (the same
 // interpolant: multilinear for the published layout, Catmull-Rom per axis for the renderer
 // layout; interpolation across the fixed axes is done first). Owns its samples. The renderer
-// slices keep their samples padded with the two linearly extrapolated ones (warped_table.h), so
-// that a lookup is four products without branches, and evaluate the warp with
+// slices keep the Catmull-Rom spline of each cell as its cubic's coefficients (the outside
+// samples extrapolated linearly as in warped_table.h), so that a lookup is one Horner evaluation
+// (equal to the weighted sum of WarpedTable::interpolate to rounding), and evaluate the warp with
 // Warp::to_grid_fast.
 #pragma once
 #include "dspbr/lut/lut_set.h"
@@ -40,10 +41,10 @@ class AlbedoSlice {
   double from_e_m_part(double cos_theta, const EmPart& part) const;
 
  private:
-  // A 1-D renderer table over cos theta with its samples padded by the extrapolated ones:
-  // p[0] = 2 v_0 - v_1, p[k + 1] = v_k, p[n + 1] = 2 v_n-1 - v_n-2.
+  // A 1-D renderer table over cos theta as the cubic of each of its n - 1 cells:
+  // c[4 i .. 4 i + 3] = (a, b, c, d), value = ((a f + b) f + c) f + d at fraction f of cell i.
   struct Padded {
-    std::vector<double> p;
+    std::vector<double> c;
     int n = 0;
     Warp warp;
     Encoding encoding = Encoding::Value;
