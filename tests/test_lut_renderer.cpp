@@ -25,6 +25,20 @@ const RendererLuts& committed() {
   return luts;
 }
 
+TEST(LutRendererWarp, FastFormEqualsThePowerToRounding) {
+  // to_grid_fast (sqrt, or exp2(p log2 u)) against to_grid (std::pow) over each warp's domain,
+  // including its ends and the clamped region outside.
+  const Warp warps[] = {{WarpKind::Power, 1.0, 0.0},  {WarpKind::Power, 0.25, 1e-3}, {WarpKind::Power, 0.5, 1e-3},
+                        {WarpKind::GgxCos, 0.6, 0.0}, {WarpKind::Power, 0.6, 0.0},   {WarpKind::LogRoughness, 1.0, 1e-3}};
+  for (const Warp& w : warps)
+    for (double alpha : {0.0, 1e-4, 0.09, 1.0})
+      for (int k = -2; k <= 1002; ++k) {
+        const double v = k / 1000.0;
+        const double ref = w.to_grid(v, alpha);
+        EXPECT_NEAR(w.to_grid_fast(v, alpha), ref, 1e-15 * ref) << w.describe() << " " << v;
+      }
+}
+
 TEST(LutRendererWarp, RoundTripsAndEnds) {
   const Warp warps[] = {{WarpKind::Power, 1.0, 0.0}, {WarpKind::Power, 0.25, 1e-3}, {WarpKind::GgxCos, 0.6, 0.0},
                         {WarpKind::LogRoughness, 1.0, 1e-3}};

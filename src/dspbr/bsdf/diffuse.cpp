@@ -13,20 +13,25 @@ DiffuseBase::DiffuseBase(const DiffuseParams& p, const LutSet& luts)
   inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kBsdfPi * missing_avg) : 0.0;
 }
 
-double DiffuseBase::missing(double cos_theta) const {
-  return std::clamp(1.0 - e_base_(std::abs(cos_theta)), 0.0, 1.0);
+double DiffuseBase::missing(double cos_theta, LobeCache& cache) const {
+  return std::clamp(1.0 - cache.albedo(e_base_, std::abs(cos_theta)), 0.0, 1.0);
 }
 
 Rgb DiffuseBase::eval(const Vec3& v, const Vec3& l) const {
+  LobeCache none;
+  return eval(v, l, none);
+}
+
+Rgb DiffuseBase::eval(const Vec3& v, const Vec3& l, LobeCache& cache) const {
   if (v.z <= 0 || l.z == 0) return Rgb(0);
   const double t = l.z > 0 ? 1.0 - p_.translucency : p_.translucency;  // T(v, l; l)
   if (t == 0) return Rgb(0);
   const double b_u = t * kBsdfInvPi;                                  // eq. "diffuse"
-  const double b_c = missing(v.z) * missing(l.z) * inv_norm_ * t;     // eq. "b_c"
+  const double b_c = missing(v.z, cache) * missing(l.z, cache) * inv_norm_ * t;  // eq. "b_c"
   const double s = p_.specular, i = p_.film_weight;
   Rgb base = Rgb((1.0 - i) * (b_u * (1.0 - s) + s * b_c));
   if (i > 0) {
-    const Rgb rv = p_.film_reflectance(v.z), rl = p_.film_reflectance(std::abs(l.z));
+    const Rgb rv = p_.film.reflectance(v.z, p_.film_eta_base), rl = p_.film.reflectance(std::abs(l.z), p_.film_eta_base);
     const Rgb rmax(std::max(rv.r, rl.r), std::max(rv.g, rl.g), std::max(rv.b, rl.b));
     base += (1.0 - rmax) * (i * b_u);
   }
@@ -53,10 +58,15 @@ uint32_t DiffuseBase::flags() const {
 }
 
 double DiffuseBase::sampling_weight(const Vec3& v) const {
+  LobeCache none;
+  return sampling_weight(v, none);
+}
+
+double DiffuseBase::sampling_weight(const Vec3& v, LobeCache& cache) const {
   if (v.z <= 0) return 0.0;
   const double s = p_.specular, i = p_.film_weight;
-  double w = (1.0 - i) * ((1.0 - s) + s * missing(v.z) * (inv_norm_ > 0 ? 1.0 : 0.0));
-  if (i > 0) w += i * (1.0 - mean(p_.film_reflectance(v.z)));
+  double w = (1.0 - i) * ((1.0 - s) + s * missing(v.z, cache) * (inv_norm_ > 0 ? 1.0 : 0.0));
+  if (i > 0) w += i * (1.0 - mean(p_.film.reflectance(v.z, p_.film_eta_base)));
   return std::max(0.0, mean(p_.rho_d) * w);
 }
 

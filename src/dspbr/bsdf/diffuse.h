@@ -20,20 +20,23 @@ struct DiffuseParams {
   double f0_max = 0.04;        // max of F_0 rho_s (table coordinate of E, E_avg)
   double r_uv = 0;             // sqrt(r_u r_v)
   double film_weight = 0;      // i
-  CosineFn film_reflectance;   // R(cos) of the film (only called when film_weight > 0)
+  FilmLayer film;              // the film (only read when film_weight > 0)
+  double film_eta_base = 1.5;  // the base IOR under the film: R(cos) = film.reflectance(cos, film_eta_base)
 };
 
 class DiffuseBase : public Lobe {
  public:
   DiffuseBase(const DiffuseParams& p, const LutSet& luts);
   Rgb eval(const Vec3& v, const Vec3& l) const override;
+  Rgb eval(const Vec3& v, const Vec3& l, LobeCache& cache) const override;
   double pdf(const Vec3& v, const Vec3& l) const override;
   BsdfSample sample(const Vec3& v, const Vec3& u) const override;
   uint32_t flags() const override;
   double sampling_weight(const Vec3& v) const override;
+  double sampling_weight(const Vec3& v, LobeCache& cache) const override;
 
  private:
-  double missing(double cos_theta) const;  // 1 - E(|cos|; r_uv, f0_max), clamped to [0, 1]
+  double missing(double cos_theta, LobeCache& cache) const;  // 1 - E(|cos|; r_uv, f0_max), clamped to [0, 1]
   DiffuseParams p_;
   AlbedoSlice e_base_;  // E(mu; r_uv, f0_max)
   double inv_norm_;  // 1 / (pi (1 - E_avg)); 0 when no energy is left for the base

@@ -7,21 +7,23 @@
 // configuration for a viewer below the surface (see material_bsdf.h). A lobe returns 0 for
 // v.z <= 0.
 #pragma once
-#include <functional>
-
 #include "dspbr/bsdf/bsdf.h"
+#include "dspbr/bsdf/cosine_factor.h"
+#include "dspbr/bsdf/lobe_cache.h"
 
 namespace dspbr {
 
-// A colour-valued function of one cosine (Fresnel mixtures, transmission factors).
-using CosineFn = std::function<Rgb(double cos_theta)>;
-
 class Lobe : public Bsdf {
  public:
+  using Bsdf::eval;
   // Estimate of the lobe's directional albedo for v (>= 0); 0 only when the lobe is zero for v.
   virtual double sampling_weight(const Vec3& v) const = 0;
   // True when the lobe is a Dirac (perfectly smooth): eval and pdf are 0, sample has kLobeDelta.
   virtual bool is_delta() const { return false; }
+  // eval and sampling_weight with the per-call memo of the mixture (bsdf/lobe_cache.h); the same
+  // values as without. Lobes that read the core's table slices override these.
+  virtual Rgb eval(const Vec3& v, const Vec3& l, LobeCache&) const { return eval(v, l); }
+  virtual double sampling_weight(const Vec3& v, LobeCache&) const { return sampling_weight(v); }
 };
 
 }  // namespace dspbr

@@ -7,7 +7,7 @@
 
 namespace dspbr {
 
-MicrofacetReflection::MicrofacetReflection(double alpha_u, double alpha_v, CosineFn fresnel)
+MicrofacetReflection::MicrofacetReflection(double alpha_u, double alpha_v, CosineFactor fresnel)
     : au_(std::max(alpha_u, kMinAlpha)),
       av_(std::max(alpha_v, kMinAlpha)),
       delta_(std::max(alpha_u, alpha_v) < kDeltaAlpha),
@@ -16,8 +16,9 @@ MicrofacetReflection::MicrofacetReflection(double alpha_u, double alpha_v, Cosin
 Rgb MicrofacetReflection::eval(const Vec3& v, const Vec3& l) const {
   if (delta_ || v.z <= 0 || l.z <= 0) return Rgb(0);
   const Vec3 h = normalize(v + l);
-  // M_r = D G / (4 |v.n| |l.n|) times the Fresnel factor at cos theta_r = v.h_r.
-  return fresnel_(dot(v, h)) * ggx_microfacet_brdf(v, l, au_, av_);
+  // M_r = D G / (4 |v.n| |l.n|) (ggx_microfacet_brdf with this h) times the Fresnel factor at
+  // cos theta_r = v.h_r.
+  return fresnel_(dot(v, h)) * (ggx_d(h, au_, av_) * ggx_g2(v, l, h, au_, av_) / (4.0 * v.z * l.z));
 }
 
 double MicrofacetReflection::pdf(const Vec3& v, const Vec3& l) const {

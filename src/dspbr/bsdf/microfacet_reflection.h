@@ -20,7 +20,7 @@ constexpr double kMinAlpha = kDeltaAlpha;
 
 class MicrofacetReflection : public Lobe {
  public:
-  MicrofacetReflection(double alpha_u, double alpha_v, CosineFn fresnel);
+  MicrofacetReflection(double alpha_u, double alpha_v, CosineFactor fresnel);
   Rgb eval(const Vec3& v, const Vec3& l) const override;
   double pdf(const Vec3& v, const Vec3& l) const override;
   BsdfSample sample(const Vec3& v, const Vec3& u) const override;
@@ -33,7 +33,7 @@ class MicrofacetReflection : public Lobe {
  private:
   double au_, av_;
   bool delta_;
-  CosineFn fresnel_;
+  CosineFactor fresnel_;
 };
 
 }  // namespace dspbr

@@ -12,13 +12,23 @@ MultiScatterReflection::MultiScatterReflection(double r_uv, const Rgb& f_ms, con
   inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kBsdfPi * missing_avg) : 0.0;
 }
 
+double MultiScatterReflection::missing(double cos_theta, LobeCache& cache) const {
+  return std::clamp(1.0 - cache.albedo(e_m_, std::abs(cos_theta)), 0.0, 1.0);
+}
+
 double MultiScatterReflection::missing(double cos_theta) const {
-  return std::clamp(1.0 - e_m_(std::abs(cos_theta)), 0.0, 1.0);
+  LobeCache none;
+  return missing(cos_theta, none);
 }
 
 Rgb MultiScatterReflection::eval(const Vec3& v, const Vec3& l) const {
+  LobeCache none;
+  return eval(v, l, none);
+}
+
+Rgb MultiScatterReflection::eval(const Vec3& v, const Vec3& l, LobeCache& cache) const {
   if (v.z <= 0 || l.z <= 0 || inv_norm_ == 0) return Rgb(0);
-  return f_ms_ * (missing(v.z) * missing(l.z) * inv_norm_);
+  return f_ms_ * (missing(v.z, cache) * missing(l.z, cache) * inv_norm_);
 }
 
 double MultiScatterReflection::pdf(const Vec3& v, const Vec3& l) const {
@@ -33,8 +43,13 @@ BsdfSample MultiScatterReflection::sample(const Vec3& v, const Vec3& u) const {
 }
 
 double MultiScatterReflection::sampling_weight(const Vec3& v) const {
+  LobeCache none;
+  return sampling_weight(v, none);
+}
+
+double MultiScatterReflection::sampling_weight(const Vec3& v, LobeCache& cache) const {
   if (v.z <= 0 || inv_norm_ == 0) return 0.0;
-  return std::max(0.0, mean(f_ms_)) * missing(v.z);
+  return std::max(0.0, mean(f_ms_)) * missing(v.z, cache);
 }
 
 }  // namespace dspbr

@@ -18,12 +18,15 @@ class MultiScatterReflection : public Lobe {
   // r_uv: isotropic roughness sqrt(r_u r_v) (table coordinate); f_ms: the F_ms colour.
   MultiScatterReflection(double r_uv, const Rgb& f_ms, const LutSet& luts);
   Rgb eval(const Vec3& v, const Vec3& l) const override;
+  Rgb eval(const Vec3& v, const Vec3& l, LobeCache& cache) const override;
   double pdf(const Vec3& v, const Vec3& l) const override;
   BsdfSample sample(const Vec3& v, const Vec3& u) const override;
   uint32_t flags() const override { return kLobeReflection | kLobeDiffuse; }
   double sampling_weight(const Vec3& v) const override;
+  double sampling_weight(const Vec3& v, LobeCache& cache) const override;
   // 1 - E_m(cos; r_uv), clamped to [0, 1] (table noise can put E_m a hair above 1).
   double missing(double cos_theta) const;
+  double missing(double cos_theta, LobeCache& cache) const;
 
  private:
   Rgb f_ms_;

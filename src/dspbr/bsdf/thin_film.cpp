@@ -48,6 +48,19 @@ namespace thin_film_detail {
 
 FilmSetup film_setup(double c1, double eta_base, double thickness_um, double eta_film) {
   const double s2_1 = 1.0 - c1 * c1;
+  const double s2_2 = s2_1 / (eta_film * eta_film), s2_3 = s2_1 / (eta_base * eta_base);
+  if (s2_2 <= 1.0 && s2_3 <= 1.0) {
+    // Propagating waves in the film and the base: the same amplitudes in real arithmetic (the
+    // complex division's scaling is not needed; equal to rounding).
+    const double c2 = std::sqrt(1.0 - s2_2), c3 = std::sqrt(1.0 - s2_3);
+    FilmSetup f;
+    f.r12[0] = (c1 - eta_film * c2) / (c1 + eta_film * c2);
+    f.r12[1] = (eta_film * c1 - c2) / (eta_film * c1 + c2);
+    f.r23[0] = (eta_film * c2 - eta_base * c3) / (eta_film * c2 + eta_base * c3);
+    f.r23[1] = (eta_base * c2 - eta_film * c3) / (eta_base * c2 + eta_film * c3);
+    f.phase_nm = 4.0 * kPi * eta_film * (thickness_um * 1000.0) * c2;
+    return f;
+  }
   const cplx c2 = refracted_cos(s2_1 / (eta_film * eta_film));  // Snell: sin2 = sin1 / eta_film
   const cplx c3 = refracted_cos(s2_1 / (eta_base * eta_base));  // Snell: sin3 = sin1 / eta_base
   FilmSetup f;

@@ -31,9 +31,16 @@ constexpr double kSensitivityMaxX = 4e5;       // |S_c| < 4e-6 beyond (all three
 // figures (tests/test_thin_film.cpp).
 constexpr double kSensitivityPanelNm = 2.0;
 
+// One envelope sample of the three channels, real and imaginary parts.
+struct EnvelopeSample {
+  double re[3], im[3];
+};
+
 struct Sensitivity {
   double nu[3];                         // mean wavenumber of X, Y, Z (1/nm)
   std::vector<double> env[3][2];        // envelope samples, real and imaginary, k = 0..n-1
+  // The same interleaved for the lookup, from k = -1 (the ghost sample E_c(-x) = conj(E_c(x))).
+  std::vector<EnvelopeSample> samples;
   double x_end;                         // S_c(x) treated as 0 for x >= x_end
 };
 
@@ -82,6 +89,14 @@ const Sensitivity& sensitivity() {
     for (int c = 0; c < 3; ++c)
       for (auto& part : t.env[c]) part.resize(std::min<std::size_t>(part.size(), last_significant + 4));
     t.x_end = (last_significant + 1) * kSensitivityStep;
+    const std::size_t n = t.env[0][0].size();
+    t.samples.resize(n + 1);
+    for (std::size_t k = 0; k <= n; ++k)
+      for (int c = 0; c < 3; ++c) {
+        const std::size_t a = k == 0 ? 1 : k - 1;  // k = 0 holds sample -1
+        t.samples[k].re[c] = t.env[c][0][a];
+        t.samples[k].im[c] = k == 0 ? -t.env[c][1][a] : t.env[c][1][a];
+      }
     return t;
   }();
   return s;
@@ -97,13 +112,13 @@ void envelope_at(const Sensitivity& s, double x, Complex out[3]) {
   const int k = int(g);
   double w[4];
   catmull_rom_weights(g - k, w);
+  // Samples k - 1 .. k + 2 are samples[k .. k + 3] (samples[0] is the ghost sample -1).
+  const EnvelopeSample* q = s.samples.data() + k;
   for (int c = 0; c < 3; ++c) {
     double re = 0, im = 0;
     for (int j = 0; j < 4; ++j) {
-      // E_c(-x) = conj(E_c(x)): the ghost sample left of x = 0.
-      const int idx = k - 1 + j, a = std::abs(idx);
-      re += w[j] * s.env[c][0][a];
-      im += w[j] * (idx < 0 ? -s.env[c][1][a] : s.env[c][1][a]);
+      re += w[j] * q[j].re[c];
+      im += w[j] * q[j].im[c];
     }
     out[c] = {re, im};
   }

@@ -4,7 +4,7 @@
 
 namespace dspbr {
 
-ThinTransmission::ThinTransmission(double alpha_u, double alpha_v, CosineFn factor)
+ThinTransmission::ThinTransmission(double alpha_u, double alpha_v, CosineFactor factor)
     : reflection_(alpha_u, alpha_v, std::move(factor)) {}
 
 Rgb ThinTransmission::eval(const Vec3& v, const Vec3& l) const {

@@ -10,7 +10,7 @@ namespace dspbr {
 
 class ThinTransmission : public Lobe {
  public:
-  ThinTransmission(double alpha_u, double alpha_v, CosineFn factor);
+  ThinTransmission(double alpha_u, double alpha_v, CosineFactor factor);
   Rgb eval(const Vec3& v, const Vec3& l) const override;
   // Density of l = flip(l'), l' from the reflection lobe's sampler: pdf_r(v, flip(l)).
   double pdf(const Vec3& v, const Vec3& l) const override;

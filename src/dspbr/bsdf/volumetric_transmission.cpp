@@ -9,7 +9,7 @@
 namespace dspbr {
 
 VolumetricTransmission::VolumetricTransmission(double alpha_u, double alpha_v, double eta_i, double eta_o,
-                                               CosineFn factor)
+                                               CosineFactor factor)
     : au_(std::max(alpha_u, kMinAlpha)),
       av_(std::max(alpha_v, kMinAlpha)),
       eta_i_(eta_i),

@@ -18,7 +18,7 @@ namespace dspbr {
 
 class VolumetricTransmission : public Lobe {
  public:
-  VolumetricTransmission(double alpha_u, double alpha_v, double eta_i, double eta_o, CosineFn factor);
+  VolumetricTransmission(double alpha_u, double alpha_v, double eta_i, double eta_o, CosineFactor factor);
   Rgb eval(const Vec3& v, const Vec3& l) const override;
   double pdf(const Vec3& v, const Vec3& l) const override;
   BsdfSample sample(const Vec3& v, const Vec3& u) const override;
@@ -31,7 +31,7 @@ class VolumetricTransmission : public Lobe {
   bool half_vector(const Vec3& v, const Vec3& l, Vec3& h) const;
   double au_, av_, eta_i_, eta_o_;
   bool delta_;
-  CosineFn factor_;
+  CosineFactor factor_;
 };
 
 }  // namespace dspbr

@@ -2,7 +2,11 @@
 // per evaluation, cut out of a LutSet once when the lobe is built, so that an evaluation does a
 // 1-D lookup instead of a 2-D or 3-D one. Equal to the LutSet lookup to rounding (the same
 // interpolant: multilinear for the published layout, Catmull-Rom per axis for the renderer
-// layout; interpolation across the fixed axes is done first). Owns its samples.
+// layout; interpolation across the fixed axes is done first). Owns its samples. The renderer
+// slices keep the Catmull-Rom spline of each cell as its cubic's coefficients (the outside
+// samples extrapolated linearly as in warped_table.h), so that a lookup is one Horner evaluation
+// (equal to the weighted sum of WarpedTable::interpolate to rounding), and evaluate the warp with
+// Warp::to_grid_fast.
 #pragma once
 #include "dspbr/lut/lut_set.h"
 
@@ -20,13 +24,41 @@ class AlbedoSlice {
 
   double operator()(double cos_theta) const;
 
+  // The E_m part of an E_m or E_base slice of the renderer layout: the grid coordinate x of mu
+  // and E_m(x). The E_m and E_base slices of one set at one roughness have the same part
+  // (same e_m_key(); null for the other slices), so lobes reading both at one cosine can share it.
+  struct EmPart {
+    double x = 0, e_m = 0;
+  };
+  struct EmKey {
+    const void* table = nullptr;  // the GGX_E table the slice was cut from (compared, never read)
+    double roughness = 0;
+    bool operator==(const EmKey& o) const { return table == o.table && roughness == o.roughness; }
+  };
+  EmKey e_m_key() const { return em_key_; }
+  EmPart e_m_part(double cos_theta) const;
+  // The slice's value from its E_m part at the same cos theta: equal to operator().
+  double from_e_m_part(double cos_theta, const EmPart& part) const;
+
  private:
+  // A 1-D renderer table over cos theta as the cubic of each of its n - 1 cells:
+  // c[4 i .. 4 i + 3] = (a, b, c, d), value = ((a f + b) f + c) f + d at fraction f of cell i.
+  struct Padded {
+    std::vector<double> c;
+    int n = 0;
+    Warp warp;
+    Encoding encoding = Encoding::Value;
+    static Padded of(const WarpedTable& t);
+    // Catmull-Rom at grid coordinate x, decoded (equal to WarpedTable::lookup_grid).
+    double at_grid(double x) const;
+  };
   enum class Kind { Published, Renderer, RendererBase };
   Kind kind_ = Kind::Published;
-  Table published_;    // 1-D over cos theta
-  WarpedTable table_;  // 1-D over cos theta: E_m, E_b
-  WarpedTable beta_;   // 1-D over cos theta: GGX_beta (RendererBase)
+  Table published_;  // 1-D over cos theta
+  Padded table_;     // 1-D over cos theta: E_m, E_b
+  Padded beta_;      // 1-D over cos theta: GGX_beta (RendererBase)
   double alpha_ = 0;   // GgxCos warp parameter r^2
+  EmKey em_key_;      // E_m and E_base of the renderer layout
   bool shared_warp_ = false;  // RendererBase: GGX_E and GGX_beta have the same cos theta warp
   double f0_ = 0, f_ms_ = 0;  // RendererBase: f0 and F_ms(f0, 1; E_m,avg)
 };

@@ -68,6 +68,11 @@ struct RendererLuts {
   // The pieces of the Base_E composition (shared with AlbedoSlice):
   // beta from its stored value, beta = (1 - mu)^5 + stored;
   static double decode_beta(double mu, double stored) { return std::pow(1.0 - mu, 5) + stored; }
+  // the same with (1 - mu)^5 by multiplications (equal to rounding; the lobes' per-evaluation form);
+  static double decode_beta_fast(double mu, double stored) {
+    const double m = 1.0 - mu, m2 = m * m;
+    return m2 * m2 * m + stored;
+  }
   // F_ms(f0, 1; E_m,avg), the base's multiple-scattering Fresnel;
   static double base_fresnel_ms(double f0, double e_m_avg);
   // E = f0 E_m + (1 - f0) B + F_ms (1 - E_m), B = beta E_m (spec "Energy Preservation").

@@ -38,17 +38,46 @@ size_t Table::offset(const std::vector<int>& idx) const {
   return o;
 }
 
-double Table::lookup(const std::vector<double>& x) const {
+double Table::lookup(const std::vector<double>& x) const { return lookup(x.data(), x.size()); }
+
+namespace {
+
+// Cell index (clamped to [0, n - 2]) and fraction of position x on an axis (clamp-to-edge).
+inline void locate(const Axis& a, double x, int& i, double& f) {
+  const int n = a.size;
+  const double c = std::clamp(a.index(x), 0.0, double(n - 1));
+  i = std::min(int(std::floor(c)), std::max(0, n - 2));
+  f = n > 1 ? c - i : 0.0;
+}
+
+}  // namespace
+
+double Table::lookup(const double* x, size_t x_rank) const {
   const size_t rank = axes.size();
-  if (x.size() != rank || rank > 3) throw std::invalid_argument("Table::lookup: wrong coordinate rank for " + name);
+  if (x_rank != rank || rank > 3) throw std::invalid_argument("Table::lookup: wrong coordinate rank for " + name);
+  const Axis* ax = axes.data();
+  if (rank == 2) {
+    // The corner loop below written out for two axes (same products and order).
+    int i0, i1;
+    double f0, f1;
+    locate(ax[0], x[0], i0, f0);
+    locate(ax[1], x[1], i1, f1);
+    const size_t n1 = size_t(ax[1].size);
+    const size_t r0 = size_t(i0), r1 = size_t(std::min(i0 + 1, ax[0].size - 1));
+    const size_t c0 = size_t(i1), c1 = size_t(std::min(i1 + 1, ax[1].size - 1));
+    const double w00 = (1.0 - f0) * (1.0 - f1), w10 = f0 * (1.0 - f1);
+    const double w01 = (1.0 - f0) * f1, w11 = f0 * f1;
+    const double* v = values.data();
+    double result = 0;
+    if (w00 != 0) result += w00 * v[r0 * n1 + c0];
+    if (w10 != 0) result += w10 * v[r1 * n1 + c0];
+    if (w01 != 0) result += w01 * v[r0 * n1 + c1];
+    if (w11 != 0) result += w11 * v[r1 * n1 + c1];
+    return result;
+  }
   int i0[3] = {0, 0, 0};
   double f[3] = {0, 0, 0};
-  for (size_t d = 0; d < rank; ++d) {
-    const int n = axes[d].size;
-    const double c = std::clamp(axes[d].index(x[d]), 0.0, double(n - 1));
-    i0[d] = std::min(int(std::floor(c)), std::max(0, n - 2));
-    f[d] = n > 1 ? c - i0[d] : 0.0;
-  }
+  for (size_t d = 0; d < rank; ++d) locate(ax[d], x[d], i0[d], f[d]);
   double result = 0;
   for (int corner = 0; corner < (1 << rank); ++corner) {
     double w = 1;

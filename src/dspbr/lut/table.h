@@ -1,6 +1,8 @@
 // A dense table on a regular grid: 1 to 3 axes, slowest to fastest, each axis cell-centred
 // (x_i = lo + (i + 0.5)/N (hi - lo)) or endpoint (x_i = lo + i/(N-1) (hi - lo)).
 #pragma once
+#include <cstddef>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,9 @@ struct Table {
   // Multilinear interpolation at a position (one coordinate per axis, slowest first),
   // clamped to the outermost samples (no extrapolation), as a GPU texture with clamp-to-edge.
   double lookup(const std::vector<double>& x) const;
+  // The same without allocating (a braced list of coordinates picks this overload).
+  double lookup(std::initializer_list<double> x) const { return lookup(x.begin(), x.size()); }
+  double lookup(const double* x, size_t rank) const;
 };
 
 }  // namespace dspbr

@@ -1,0 +1,66 @@
+#include "dspbr/bsdf/cosine_factor.h"
+
+#include <cmath>
+
+#include "dspbr/bsdf/thin_film.h"
+#include "dspbr/fresnel.h"
+
+namespace dspbr {
+
+Rgb FilmLayer::reflectance(double cos_theta, double eta_base) const {
+  return thin_film_reflectance(cos_theta, eta_base, thickness_um, eta_film);
+}
+
+double fresnel_clearcoat(double cos_theta) { return fresnel_schlick(cos_theta, 0.04, 1.0); }
+
+Rgb CoreFresnel::film_side(double c) const {
+  if (eta_i <= eta_o) return film.reflectance(c, eta);
+  const double s2 = sin2_transmitted(c, eta_i, eta_o);
+  if (s2 >= 1.0) return Rgb(1.0);
+  return film.reflectance(std::sqrt(1.0 - s2), eta);
+}
+
+Rgb CoreFresnel::reflection(double c) const {
+  const double s = specular, i = film_weight;
+  Rgb f = volumetric ? w_metal * fresnel_schlick(c, rho, Rgb(1.0)) + w_opaque * s * fresnel_schlick(c, f0_diel, Rgb(1.0)) +
+                           w_transp * s * fresnel_schlick_d(c, f0_diel, Rgb(1.0), eta_i, eta_o)
+                     : fresnel_schlick(c, rho_sr0, rho_sr90);
+  if (i > 0) {
+    // R(c, eta) once for the opaque and (seen from outside) the transparent part; a term of weight
+    // 0 contributes exactly 0 and is not evaluated.
+    const bool transp_sees_eta = !volumetric || eta_i <= eta_o;
+    const Rgb r_eta = (w_opaque > 0 || (w_transp > 0 && transp_sees_eta)) ? film.reflectance(c, eta) : Rgb(0);
+    const Rgb r_transp = w_transp > 0 ? (transp_sees_eta ? r_eta : film_side(c)) : Rgb(0);
+    Rgb fr = w_opaque * r_eta + w_transp * r_transp;
+    if (w_metal > 0) fr += w_metal * film.reflectance(c, eta_rho);
+    f = (1 - i) * f + i * fr;
+  }
+  return f;
+}
+
+Rgb CoreFresnel::thin_transmission(double c) const {
+  const double s = specular, i = film_weight;
+  Rgb f = rho_t * (1.0 - s * fresnel_schlick(c, f0_diel, Rgb(1.0)));
+  if (i > 0) f = (1 - i) * f + i * rho_t * (1.0 - film.reflectance(c, eta));
+  return f;
+}
+
+Rgb CoreFresnel::volumetric_transmission(double c) const {
+  const double s = specular, i = film_weight;
+  Rgb f = rho_t * (1.0 - s * fresnel_schlick_d(c, f0_diel, Rgb(1.0), eta_i, eta_o));
+  if (i > 0) f = (1 - i) * f + i * rho_t * (1.0 - film_side(c));
+  return f;
+}
+
+Rgb CosineFactor::operator()(double c) const {
+  switch (kind_) {
+    case Kind::CoreReflection: return core_.reflection(c);
+    case Kind::ThinTransmission: return core_.thin_transmission(c);
+    case Kind::VolumetricTransmission: return core_.volumetric_transmission(c);
+    case Kind::Clearcoat: return Rgb(clearcoat_ * fresnel_clearcoat(c));
+    case Kind::Custom: return custom_(c);
+  }
+  return Rgb(0);
+}
+
+}  // namespace dspbr

@@ -1,0 +1,131 @@
+#include "dspbr/bsdf/lobe_mixture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "dspbr/bsdf/cosine_factor.h"
+
+namespace dspbr {
+
+void select_lobes(double* w, const bool* present, int n) {
+  double max_w = 0;
+  for (int k = 0; k < n; ++k) max_w = std::max(max_w, w[k]);
+  double sum = 0;
+  for (int k = 0; k < n; ++k) {
+    if (present[k]) w[k] = max_w > 0 ? std::max(w[k], kMinSelectionFraction * max_w) : 1.0;
+    sum += w[k];
+  }
+  if (sum > 0)
+    for (int k = 0; k < n; ++k) w[k] /= sum;
+}
+
+void LobeMixture::add(std::unique_ptr<Lobe> lobe, Layer layer) {
+  if (n_ == kMaxLobes) throw std::logic_error("LobeMixture: more than kMaxLobes lobes");
+  entries_[size_t(n_++)] = {std::move(lobe), layer};
+}
+
+LobeMixture::Factors LobeMixture::factors(const Vec3& v, const Vec3& l, double s) const {
+  Factors f;
+  f.coat = s;
+  double below = s;
+  if (layering_.clearcoat > 0) {
+    // Coated: GlitteryCore (1 - c max(F_c(v.n_c), F_c(l.n_c))); |cos| for a transmitted l.
+    const Vec3& nc = layering_.coat.n;
+    below *= 1.0 - layering_.clearcoat * std::max(fresnel_clearcoat(dot(v, nc)), fresnel_clearcoat(dot(l, nc)));
+  }
+  f.sheen_flake = below;
+  const Vec3& n = layering_.core.n;
+  f.core = layering_.sheen ? below * layering_.sheen->layer_scale(dot(v, n), dot(l, n)) : below;
+  return f;
+}
+
+double LobeMixture::factor(const Factors& f, Layer layer) const {
+  switch (layer) {
+    case Layer::Core: return f.core;
+    case Layer::Sheen:
+    case Layer::Flake: return f.sheen_flake;
+    case Layer::Coat: return f.coat;
+  }
+  return 0;
+}
+
+void LobeMixture::selection_weights(const Vec3& v, double s, double* w) const {
+  const Factors f = factors(v, v, s);
+  const Vec3 v_core = layering_.core.to_local(v);
+  LobeCache cache;
+  for (int k = 0; k < n_; ++k) {
+    const Entry& e = entries_[size_t(k)];
+    const Vec3 vk = e.layer == Layer::Coat ? layering_.coat.to_local(v) : v_core;
+    const double wk = e.lobe->sampling_weight(vk, cache) * factor(f, e.layer);
+    w[k] = std::isfinite(wk) ? std::max(wk, 0.0) : 0.0;
+  }
+}
+
+Rgb LobeMixture::eval(const Vec3& v, const Vec3& l, double s) const {
+  Rgb sum(0);
+  const Vec3 v_core = layering_.core.to_local(v), l_core = layering_.core.to_local(l);
+  std::optional<Factors> f;  // computed at the first lobe with a non-zero value
+  LobeCache cache;
+  for (int k = 0; k < n_; ++k) {
+    const Entry& e = entries_[size_t(k)];
+    if (e.lobe->is_delta()) continue;
+    Rgb fk;
+    if (e.layer == Layer::Coat) {
+      // The coat reflects: nothing towards the other side of the surface (its own normal n_c may
+      // differ from n; without this check f(v, l) != f(l, v) where the two planes disagree).
+      if (!(l_core.z > 0)) continue;
+      fk = e.lobe->eval(layering_.coat.to_local(v), layering_.coat.to_local(l));
+    } else {
+      fk = e.lobe->eval(v_core, l_core, cache);
+    }
+    if (fk.max_component() > 0) {
+      if (!f) f = factors(v, l, s);
+      sum += fk * factor(*f, e.layer);
+    }
+  }
+  return sum;
+}
+
+double LobeMixture::pdf(const Vec3& v, const Vec3& l, const double* probs) const {
+  double p = 0;
+  const Vec3 v_core = layering_.core.to_local(v), l_core = layering_.core.to_local(l);
+  for (int k = 0; k < n_; ++k) {
+    const Entry& e = entries_[size_t(k)];
+    if (e.lobe->is_delta() || probs[k] == 0) continue;
+    p += probs[k] * (e.layer == Layer::Coat ? e.lobe->pdf(layering_.coat.to_local(v), layering_.coat.to_local(l))
+                                            : e.lobe->pdf(v_core, l_core));
+  }
+  return p;
+}
+
+BsdfSample LobeMixture::sample_lobe(int k, const Vec3& v, const Vec3& u, double s, const double* probs) const {
+  BsdfSample out;
+  const Entry& e = entries_[size_t(k)];
+  const Frame& fr = frame(e.layer);
+  const BsdfSample ls = e.lobe->sample(fr.to_local(v), u);
+  if (!ls.valid) return out;
+  const Vec3 l = normalize(fr.to_world(ls.l));
+  if (ls.flags & kLobeDelta) {
+    if (e.layer == Layer::Coat && !(dot(l, layering_.core.n) > 0)) return out;  // as in eval
+    out.weight = ls.weight * (factor(factors(v, l, s), e.layer) / probs[k]);
+    out.pdf = probs[k] * ls.pdf;
+    out.flags = kLobeDelta | (l.z * v.z >= 0 ? kLobeReflection : kLobeTransmission);
+  } else {
+    out.pdf = pdf(v, l, probs);
+    if (!(out.pdf > 0)) return out;
+    out.weight = eval(v, l, s) * (std::abs(l.z) / out.pdf);
+    out.flags = (ls.flags & (kLobeGlossy | kLobeDiffuse)) | (l.z * v.z >= 0 ? kLobeReflection : kLobeTransmission);
+  }
+  out.l = l;
+  out.valid = true;
+  return out;
+}
+
+uint32_t LobeMixture::flags() const {
+  uint32_t f = 0;
+  for (int k = 0; k < n_; ++k) f |= entries_[size_t(k)].lobe->flags();
+  return f;
+}
+
+}  // namespace dspbr
