@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "dspbr/bsdf/material_bsdf.h"
@@ -17,6 +19,7 @@
 #include "dspbr/lut/albedo.h"
 #include "dspbr/lut/generate.h"
 #include "dspbr/lut/lut_set.h"
+#include "dspbr/lut/renderer_io.h"
 #include "dspbr/lut/renderer_luts.h"
 #include "dspbr/material.h"
 #include "dspbr/quadrature.h"
@@ -238,6 +241,32 @@ TEST(GlassRenderer, AveragesAreTheCosineAveragesOfTheLookups) {
         EXPECT_NEAR(L.E_glass_avg(r, ior, inside), avg, on_grid ? 2e-5 : 1e-3)
             << "r " << r << " ior " << ior << " inside " << inside;
       }
+}
+
+TEST(GlassRenderer, FileRoundTripAndPartialSetsRefused) {
+  const RendererLuts& L = LutSet::builtin().renderer;
+  const std::string text = renderer_json_text(L, LutOptions{}, 1);
+  const RendererLuts back = read_renderer_json_text(text, "round trip");
+  ASSERT_TRUE(back.has_glass());
+  for (const char* n : RendererLuts::glass_names()) {
+    EXPECT_EQ(back.table(n)->values, L.table(n)->values) << n;
+    ASSERT_EQ(back.table(n)->axes.size(), L.table(n)->axes.size()) << n;
+    for (size_t d = 0; d < L.table(n)->axes.size(); ++d)
+      EXPECT_EQ(int(back.table(n)->axes[d].warp.kind), int(L.table(n)->axes[d].warp.kind)) << n;
+  }
+  // Three of the four glass tables: refused, naming the missing one.
+  nlohmann::json j = nlohmann::json::parse(text);
+  j["tables"].erase("Glass_inv_E_avg");
+  try {
+    (void)read_renderer_json_value(j, "partial.json");
+    ADD_FAILURE() << "a partial glass set was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("Glass_inv_E_avg is missing"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("partial.json"), std::string::npos) << e.what();
+  }
+  // None of them: a set without glass (the BSDF then falls back to the published ones).
+  for (const char* n : RendererLuts::glass_names()) j["tables"].erase(n);
+  EXPECT_FALSE(read_renderer_json_value(j, "no_glass.json").has_glass());
 }
 
 // ---- The compensated transparent core ---------------------------------------------------------
