@@ -18,8 +18,8 @@
 #include "commands.h"
 #include "provenance.h"
 #include "dspbr/bsdf/material_bsdf.h"
-#include "dspbr/material_params.h"
 #include "dspbr/params/material_instance.h"
+#include "dspbr/params/material_params.h"
 #include "dspbr/scene/components.h"
 
 namespace dspbr::cli {
