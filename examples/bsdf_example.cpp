@@ -5,7 +5,7 @@
 
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/material.h"
-#include "dspbr/material_params.h"
+#include "dspbr/params/material_params.h"
 #include "dspbr/rng.h"
 
 int main() {

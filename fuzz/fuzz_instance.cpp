@@ -6,8 +6,8 @@
 #include <string_view>
 
 #include "dspbr/io/read_file.h"
-#include "dspbr/material_params.h"
 #include "dspbr/params/material_instance.h"
+#include "dspbr/params/material_params.h"
 #include "dspbr/params/param_defs.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dspbr/material.h"
-#include "dspbr/material_params.h"
+#include "dspbr/params/material_params.h"
 
 using namespace dspbr;
 using Json = nlohmann::json;

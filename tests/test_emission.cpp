@@ -6,12 +6,12 @@
 #include <stdexcept>
 
 #include "dspbr/bsdf/emission.h"
+#include "dspbr/constants.h"
 #include "dspbr/quadrature.h"
 
 using namespace dspbr;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 // Integral over the upper hemisphere of lum(L_e(v)) (v.n) dv: the luminous exitance in lm/m^2.
 double exitance(const Rgb& rho_e, const Vec3& n_c, double clearcoat) {

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../fits/dspbr_fits.hpp"
+#include "dspbr/constants.h"
 #include "dspbr/fit/albedo_fit.h"
 #include "dspbr/fit/albedo_forms.h"
 #include "dspbr/fit/fits_header.h"
@@ -352,14 +353,14 @@ double flake_cap_mean(const Vec3& v, const Vec3& l, double r_f, int n = 120) {
   double sum = 0;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      const double psi = (i + 0.5) / n * psi_max, beta = (j + 0.5) / n * 2 * lutref::kPi;
+      const double psi = (i + 0.5) / n * psi_max, beta = (j + 0.5) / n * 2 * kPi;
       const Vec3 r = f.to_world({std::sin(psi) * std::cos(beta), std::sin(psi) * std::sin(beta), std::cos(psi)});
       const Vec3 m = normalize(v + r);
       const double vn = dot(v, m);
       if (vn <= 0 || m.z <= 0) continue;
-      sum += std::sin(psi) * (psi_max / n) * (2 * lutref::kPi / n) * ggx_d(m, a, a) * m.z / (4 * vn);
+      sum += std::sin(psi) * (psi_max / n) * (2 * kPi / n) * ggx_d(m, a, a) * m.z / (4 * vn);
     }
-  return sum / (2 * lutref::kPi * (1 - cc));
+  return sum / (2 * kPi * (1 - cc));
 }
 
 // The far-field flake lobe of the header against the brute-force aggregate at fresh roughnesses
@@ -371,14 +372,14 @@ TEST(FitFlakes, ConeLobeMatchesTheAggregate) {
   EXPECT_LE(d["albedo_error_max"].get<double>(), 0.01);
   for (double rf : {0.06, 0.21, 0.42, 0.93})
     for (double deg : {0.0, 33.0, 61.0, 79.0}) {
-      const double t = deg * lutref::kPi / 180;
+      const double t = deg * kPi / 180;
       const Vec3 v{std::sin(t), 0, std::cos(t)};
       const Vec3 mirror{-v.x, 0, v.z};
       const double peak = flake_cap_mean(v, mirror, rf);
       const double w = 0.25 * (rf + 0.12);  // probe offsets of the order of the lobe width (rad)
       for (double dt : {-w, 0.0, 0.5 * w, w})
         for (double dp : {0.0, 0.6 * w}) {
-          const double th = std::clamp(t + dt, 0.0, 1.5), ph = lutref::kPi + dp;
+          const double th = std::clamp(t + dt, 0.0, 1.5), ph = kPi + dp;
           const Vec3 l{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
           const double ref = flake_cap_mean(v, l, rf);
           const float m = dspbr_fit_flake_lobe(float(v.x), float(v.y), float(v.z), float(l.x), float(l.y), float(l.z), float(rf));
@@ -398,7 +399,7 @@ TEST(FitFlakes, ConeLobeAlbedoMatchesClosedForm) {
   static const QuadratureRule rule = gauss_legendre(8);
   for (double rf : {0.08, 0.33, 0.77})
     for (double deg : {0.0, 45.0, 60.0}) {
-      const double t = deg * lutref::kPi / 180, a = flake_alpha_ggx(rf), cc = flake_cos_cone(rf);
+      const double t = deg * kPi / 180, a = flake_alpha_ggx(rf), cc = flake_cos_cone(rf);
       const Vec3 v{std::sin(t), 0, std::cos(t)};
       // Integrals over normals n(slope) = normalize(-x, -y, 1), slope = s (cos phi, sin phi),
       // s = c tan(pi q / 2), dn = d^2slope / (1 + s^2)^(3/2); c = the lobe's width.
@@ -407,11 +408,11 @@ TEST(FitFlakes, ConeLobeAlbedoMatchesClosedForm) {
       for (int pq = 0; pq < 24; ++pq)
         for (size_t iq = 0; iq < rule.x.size(); ++iq) {
           const double q = (pq + 0.5 + 0.5 * rule.x[iq]) / 24, wq = 0.5 / 24 * rule.w[iq];
-          const double s = c * std::tan(0.5 * lutref::kPi * q);
-          const double ds = c * 0.5 * lutref::kPi / std::pow(std::cos(0.5 * lutref::kPi * q), 2);
+          const double s = c * std::tan(0.5 * kPi * q);
+          const double ds = c * 0.5 * kPi / std::pow(std::cos(0.5 * kPi * q), 2);
           for (int pp = 0; pp < 16; ++pp)
             for (size_t ip = 0; ip < rule.x.size(); ++ip) {
-              const double ph = (pp + 0.5 + 0.5 * rule.x[ip]) / 16 * 2 * lutref::kPi, wp = 0.5 / 16 * 2 * lutref::kPi * rule.w[ip];
+              const double ph = (pp + 0.5 + 0.5 * rule.x[ip]) / 16 * 2 * kPi, wp = 0.5 / 16 * 2 * kPi * rule.w[ip];
               const Vec3 n = normalize(Vec3{-s * std::cos(ph), -s * std::sin(ph), 1.0});
               const double dn = wq * ds * s * wp / std::pow(1 + s * s, 1.5);
               const double vn = dot(v, n);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dspbr/bsdf/flakes.h"
+#include "dspbr/constants.h"
 #include "dspbr/ggx.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/rng.h"
@@ -14,7 +15,6 @@
 using namespace dspbr;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 // Fraction of the projected area of flakes with h.z > mu: Integral over {cos > mu} of D(h) h.z dh,
 // by Gauss-Legendre in cos theta (isotropic: the phi integral is 2 pi).

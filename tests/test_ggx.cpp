@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "dspbr/constants.h"
 #include "dspbr/ggx.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/rng.h"
@@ -10,7 +11,6 @@
 using namespace dspbr;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 Vec3 spherical(double cos_t, double phi) {
   const double s = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));

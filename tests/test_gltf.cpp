@@ -11,7 +11,7 @@
 
 #include "dspbr/gltf/gltf_file.h"
 #include "dspbr/gltf/gltf_material.h"
-#include "dspbr/material_params.h"
+#include "dspbr/params/material_params.h"
 #include "test_params_run.h"
 
 using namespace dspbr;

@@ -6,6 +6,7 @@
 #include <set>
 #include <tuple>
 
+#include "dspbr/constants.h"
 #include "dspbr/lut/albedo.h"
 #include "dspbr/lut/lut_set.h"
 #include "dspbr/lut/qmc.h"
@@ -196,8 +197,8 @@ TEST(LutAlbedo, MultipleScatteringLobeIntegratesToOneMinusEm) {
   const double integral = integrate_gl(
       [&](double mu_l) {
         const double e_l = ggx_E(mu_l, r, s, stream++).value;
-        const double m_ms = (1 - e_v) * (1 - e_l) / (lutref::kPi * (1 - e_avg));
-        return 2 * lutref::kPi * m_ms * mu_l;
+        const double m_ms = (1 - e_v) * (1 - e_l) / (kPi * (1 - e_avg));
+        return 2 * kPi * m_ms * mu_l;
       },
       0.0, 1.0, 4, rule);
   EXPECT_NEAR(integral, 1.0 - e_v, 2e-5 * (1.0 - e_v) / (1.0 - e_avg) + 1e-6);

@@ -3,6 +3,8 @@
 #pragma once
 #include <cmath>
 
+#include "dspbr/constants.h"
+#include "dspbr/frame.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
 #include "dspbr/quadrature.h"
@@ -10,7 +12,6 @@
 
 namespace dspbr::lutref {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // 2D composite Gauss-Legendre of f(x, y) over [0,1] x [0,1].
 template <class F>
@@ -58,7 +59,7 @@ double hemisphere_integral(G&& g, int panels_mu, int panels_phi) {
 // ~alpha around the mirror direction, so this form is for rough cells only.
 inline double ggx_albedo_quad_l(double mu, double r, double f0, int panels_mu = 64, int panels_phi = 64) {
   const double alpha = r * r;
-  const Vec3 v{std::sqrt(1 - mu * mu), 0, mu};
+  const Vec3 v = view_dir(mu);
   return hemisphere_integral(
       [&](const Vec3& l) {
         const Vec3 h = normalize(v + l);
@@ -72,7 +73,7 @@ inline double ggx_albedo_quad_l(double mu, double r, double f0, int panels_mu = 
 // dl = 4 (v.h) dh:  Integral D G2 F (v.h) / mu_v dh.
 inline double ggx_albedo_quad(double mu, double r, double f0, int panels_u = 64, int panels_phi = 32) {
   const double alpha = r * r;
-  const Vec3 v{std::sqrt(1 - mu * mu), 0, mu};
+  const Vec3 v = view_dir(mu);
   return ggx_half_vector_integral(
       alpha,
       [&](const Vec3& h) {
@@ -90,7 +91,7 @@ inline double ggx_albedo_quad(double mu, double r, double f0, int panels_u = 64,
 // Integral M_b mu_l dl for the sheen models in (mu_l, phi), phi in [0, pi] (even in phi).
 template <class Brdf>
 double sheen_albedo_quad(double mu, Brdf&& brdf, int panels_mu = 64, int panels_phi = 32) {
-  const Vec3 v{std::sqrt(1 - mu * mu), 0, mu};
+  const Vec3 v = view_dir(mu);
   return hemisphere_integral([&](const Vec3& l) { return brdf(v, l) * l.z; }, panels_mu, panels_phi);
 }
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "dspbr/material_params.h"
+#include "dspbr/params/material_params.h"
 
 using namespace dspbr;
 

@@ -11,7 +11,7 @@
 #include <set>
 
 #include "dspbr/gltf/gltf_file.h"
-#include "dspbr/material_params.h"
+#include "dspbr/params/material_params.h"
 #include "dspbr/rng.h"
 #include "dspbr/scene/components.h"
 #include "dspbr/scene/scene_analysis.h"

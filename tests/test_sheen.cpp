@@ -3,13 +3,13 @@
 
 #include <cmath>
 
+#include "dspbr/constants.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/sheen.h"
 
 using namespace dspbr;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 // Integral D_b(h) (h.n) dh = 1 in closed form ((2 + k) Int sin^(k+1) cos = 1); checked by quadrature.

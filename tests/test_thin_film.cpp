@@ -11,12 +11,12 @@
 #include <vector>
 
 #include "dspbr/bsdf/thin_film.h"
+#include "dspbr/constants.h"
 
 using namespace dspbr;
 
 namespace {
 using cplx = std::complex<double>;
-constexpr double kPi = 3.14159265358979323846;
 
 // Reflectance of air | film | base by the characteristic matrix of the film (Born & Wolf 1.6.2;
 // Macleod, "Thin-Film Optical Filters" ch. 2): [B; C] = M [1; Y3], r = (Y1 B - C) / (Y1 B + C),

@@ -15,6 +15,7 @@
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/bsdf/microfacet_reflection.h"
 #include "dspbr/bsdf/volumetric_transmission.h"
+#include "dspbr/constants.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/lut/albedo.h"
 #include "dspbr/lut/generate.h"
@@ -29,8 +30,6 @@
 
 namespace dspbr {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Integral of g(l) |l.z| over one hemisphere (sign +1 upper, -1 lower) in (mu_l, phi), for v in
 // the xz plane (g even in phi: [0, pi] counted twice). The mu axis is graded towards the horizon.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "dspbr/constants.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/validate/chi2.h"
 #include "dspbr/validate/furnace.h"

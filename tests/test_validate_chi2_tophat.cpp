@@ -9,6 +9,7 @@
 
 #include "dspbr/bsdf/flakes.h"
 #include "dspbr/bsdf/material_bsdf.h"
+#include "dspbr/frame.h"
 #include "dspbr/lut/lut_set.h"
 #include "dspbr/rng.h"
 #include "dspbr/validate/chi2.h"
@@ -29,7 +30,6 @@ Material flaky_plastic() {
   return m;
 }
 
-Vec3 view(double c) { return {std::sqrt(1 - c * c), 0.0, c}; }
 
 }  // namespace
 
@@ -43,7 +43,7 @@ TEST(ValidateChi2TopHat, FlakeConeSamplesAreUniformInSolidAngle) {
   ASSERT_EQ(flake.opacity, 1.0);
   const double cc = flake_cos_cone(m.flakeRoughness);
   for (double cv : {0.5, 0.05}) {
-    const Vec3 v = view(cv), r = reflect(v, flake.normal);
+    const Vec3 v = view_dir(cv), r = reflect(v, flake.normal);
     ASSERT_GT(r.z, 0.2);  // the 7 deg cone (sin 7 deg = 0.12) lies above the horizon
     const double frac[3] = {0.1, 0.4, 0.8};
     int inside[3] = {0, 0, 0};
@@ -73,7 +73,7 @@ TEST(ValidateChi2TopHat, FlakeConeExpectedCountsAndGoodnessOfFit) {
     s.samples = 1000000;
     s.theta_bins = 64;
     s.consistency_stride = 8;
-    const validate::Chi2Result r = validate::chi2_test(*bsdf, view(cv), s);
+    const validate::Chi2Result r = validate::chi2_test(*bsdf, view_dir(cv), s);
     // The cone integrates to 1 in closed form; the quadrature must agree to far better than the
     // 1/sqrt(N) = 1e-3 noise of the counts.
     EXPECT_NEAR(r.pdf_integral, 1.0, 1e-5) << "cos_v " << cv;

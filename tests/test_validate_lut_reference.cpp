@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "dspbr/constants.h"
+#include "dspbr/frame.h"
 #include "dspbr/ggx.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/sheen.h"
@@ -13,12 +15,11 @@ using namespace dspbr;
 using namespace dspbr::validate;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 // Integral over the upper hemisphere of brdf(v, l) l.z dl in (theta_l, phi_l), v in the xz plane.
 template <class F>
 double l_space_albedo(F&& brdf, double mu) {
-  const Vec3 v{std::sqrt(1 - mu * mu), 0, mu};
+  const Vec3 v = view_dir(mu);
   const QuadratureRule rule = gauss_legendre(8);
   const int pt = 96, pp = 48;
   double sum = 0;

@@ -8,13 +8,13 @@
 #include <vector>
 
 #include "dspbr/bsdf/volume.h"
+#include "dspbr/constants.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/rng.h"
 
 using namespace dspbr;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Chandrasekhar's H-function for isotropic scattering with single-scattering albedo w, from

@@ -6,12 +6,11 @@
 #include <limits>
 
 #include "dspbr/bsdf/bsdf.h"
+#include "dspbr/constants.h"
 #include "dspbr/ggx.h"
 #include "dspbr/bsdf/sampling.h"
 
 namespace dspbr::testing {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Lambertian reflection on the viewer's side: f = rho / pi; cosine sampling.
 class LambertLobe : public Bsdf {

@@ -18,8 +18,9 @@
 #include "commands.h"
 #include "provenance.h"
 #include "dspbr/bsdf/material_bsdf.h"
-#include "dspbr/material_params.h"
+#include "dspbr/io/json_values.h"
 #include "dspbr/params/material_instance.h"
+#include "dspbr/params/material_params.h"
 #include "dspbr/scene/components.h"
 
 namespace dspbr::cli {
@@ -160,9 +161,6 @@ BsdfOptions build_options(const EvalArgs& a) {
   o.transmission_compensation = a.transmission_compensation;
   return o;
 }
-
-Json rgb_json(const Rgb& c) { return Json::array({c.r, c.g, c.b}); }
-Json vec_json(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
 
 Json flags_json(uint32_t f) {
   Json out = Json::array();

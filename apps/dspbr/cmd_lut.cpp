@@ -5,10 +5,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -22,6 +20,7 @@
 #include "dspbr/lut/renderer_generate.h"
 #include "dspbr/lut/renderer_io.h"
 #include "dspbr/scene/scene_analysis.h"
+#include "dspbr/validate/integrator_study.h"
 #include "dspbr/validate/lookup_study.h"
 
 namespace dspbr::cli {
@@ -251,80 +250,15 @@ void run_lookup_bench(const LutArgs& a) {
   std::fflush(stdout);
 }
 
-// Speed/accuracy study: the point-of-use study, then for each table and integrator, wall time and
-// max |error| against a high-budget QMC reference (independent seed) over a range of sample
-// budgets. Runs on a small grid per table (override with --size) to keep the reference affordable.
+// Speed/accuracy study: the point-of-use study, then the integrators' study
+// (validate/integrator_study.h), printed row by row as it runs.
 void run_bench(const LutArgs& a) {
   run_lookup_bench(a);
-  LutArgs b = a;
-  LutOptions base = to_options(b);
-  std::map<std::string, std::vector<int>> bench_sizes{{"GGX_E", {8, 8}},      {"GGX_E_avg", {8}},
-                                                      {"Base_E", {4, 8, 8}},  {"Base_E_avg", {4, 8}},
-                                                      {"Sheen_E", {8, 8}},    {"Sheen_ash_E", {8, 8}},
-                                                      {"Glass_E", {4, 8, 8}}, {"Glass_inv_E", {4, 8, 8}},
-                                                      {"Glass_E_avg", {4, 8}}, {"Glass_inv_E_avg", {4, 8}}};
-  for (auto& [name, size] : bench_sizes)
-    if (!base.sizes.count(name)) base.sizes[name] = size;
-  std::printf("| table | grid | integrator | samples/cell | wall time [s] | ms/cell | max abs error | max est. std error |\n");
-  std::printf("|---|---|---|---:|---:|---:|---:|---:|\n");
-  for (const std::string& name : base.tables) {
-    LutOptions ref = base;
-    ref.tables = {name};
-    ref.integrator = Integrator::Qmc;
-    const bool avg = name.size() > 4 && name.compare(name.size() - 4, 4, "_avg") == 0;
-    ref.samples = avg ? (8 << 18) : (8 << 16);
-    ref.seed = base.seed + 1000003;  // independent of the runs it checks
-    ref.target_error = 0;
-    ref.progress = false;
-    const Table reference = generate_luts(ref).front();
-    double ref_err = 0;
-    for (double e : reference.errors) ref_err = std::max(ref_err, e);
-    std::string dims;
-    for (const Axis& ax : reference.axes) dims += (dims.empty() ? "" : "x") + std::to_string(ax.size);
-    // Runs one setting and prints its row: wall time, time per cell, max error against the reference.
-    auto measure = [&](const LutOptions& o, const std::string& integrator, const std::string& samples) {
-      const auto t0 = std::chrono::steady_clock::now();
-      const Table t = generate_luts(o).front();
-      const double wall = seconds_since(t0);
-      double max_abs = 0, max_se = 0;
-      for (size_t i = 0; i < t.size(); ++i) {
-        max_abs = std::max(max_abs, std::abs(t.values[i] - reference.values[i]));
-        max_se = std::max(max_se, t.errors[i]);
-      }
-      const size_t cells = name == "Base_E" ? t.size() / size_t(t.axes[0].size)
-                           : name == "Base_E_avg" ? size_t(t.axes[1].size) : t.size();
-      std::printf("| %s | %s | %s | %s | %.3f | %.3f | %.2e | %.2e |\n", name.c_str(), dims.c_str(),
-                  integrator.c_str(), samples.c_str(), wall, 1e3 * wall / double(cells), max_abs, max_se);
-      std::fflush(stdout);
-    };
-    for (Integrator integ : {Integrator::Qmc, Integrator::Mc, Integrator::Quad}) {
-      // Quad: (4P)^dims points for P panels per dimension; these budgets give P = 8 .. 64 (2D) and 8 .. 32 (3D).
-      const std::vector<int> budgets = integ == Integrator::Quad
-                                           ? (avg ? std::vector<int>{8 << 14, 8 << 17, 8 << 20}
-                                                  : std::vector<int>{8 << 8, 8 << 10, 8 << 12, 8 << 14})
-                                       : avg ? std::vector<int>{8 << 10, 8 << 12, 8 << 14, 8 << 16}
-                                           : std::vector<int>{8 << 8, 8 << 10, 8 << 12, 8 << 14};
-      for (int n : budgets) {
-        LutOptions o = base;
-        o.tables = {name};
-        o.integrator = integ;
-        o.samples = n;
-        o.target_error = 0;  // fixed budget
-        o.progress = false;
-        measure(o, integrator_name(integ), std::to_string(n));
-      }
-    }
-    for (Integrator integ : {Integrator::Qmc, Integrator::Quad}) {  // the adaptive settings
-      LutOptions o = base;
-      o.tables = {name};
-      o.integrator = integ;
-      o.progress = false;
-      const bool is_default = integ == lut_default_integrator(name);
-      measure(o, std::string(integrator_name(integ)) + " adaptive" + (is_default ? " (default)" : ""),
-              "<= " + std::to_string(lut_settings(name, o).samples));
-    }
-    std::printf("| %s | %s | reference (qmc) | %d | | | | %.2e |\n", name.c_str(), dims.c_str(), ref.samples, ref_err);
-  }
+  std::printf("%s\n", validate::integrator_study_markdown_header().c_str());
+  validate::run_integrator_study(to_options(a), [](const validate::IntegratorStudyRow& r) {
+    std::printf("%s\n", validate::integrator_study_markdown_row(r).c_str());
+    std::fflush(stdout);
+  });
 }
 
 }  // namespace

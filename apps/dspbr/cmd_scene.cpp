@@ -7,7 +7,7 @@
 
 #include "commands.h"
 #include "provenance.h"
-#include "dspbr/material_params.h"
+#include "dspbr/params/material_params.h"
 #include "dspbr/scene/components.h"
 #include "dspbr/scene/scene_analysis.h"
 

@@ -11,7 +11,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fmt/format.h>
+#include <memory>
 #include <string>
+#include <tbb/global_control.h>
 
 #include "commands.h"
 #include "dspbr/io/read_file.h"
@@ -35,6 +37,7 @@ struct ValidateArgs {
   std::string python = "/usr/bin/python3";
   bool html = true;
   bool allow_failures = false;
+  int threads = 0;  // 0: all cores
 };
 
 // Single-quote a string for /bin/sh.
@@ -69,6 +72,9 @@ void run_validate(const ValidateArgs& a) {
   if (ec || !fs::is_directory(a.out))
     throw UsageError("cannot create the output folder '" + a.out + "': " + (ec ? ec.message() : "not a folder"));
   const std::string script = a.html ? report_script() : std::string();
+  std::unique_ptr<tbb::global_control> threads;
+  if (a.threads > 0)
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(a.threads));
 
   validate::SuiteSettings s = validate::SuiteSettings::defaults(a.quick);
   s.seed = a.seed;
@@ -185,6 +191,9 @@ void add_validate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--python", args->python, "Python interpreter with numpy, matplotlib and jinja2")->capture_default_str();
   cmd->add_flag("--no-html", [args](int64_t) { args->html = false; }, "Write only the data (data/report.json, images/)");
+  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores); the report does not depend on it")
+      ->capture_default_str()
+      ->check(thread_count());
   cmd->add_flag("--allow-failures", args->allow_failures,
                 "Exit with status 0 even when checks fail (waived failures never fail the run)");
   cmd->callback([args] { run_validate(*args); });

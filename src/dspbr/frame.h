@@ -21,5 +21,8 @@ struct Frame {
 inline double cos_theta(const Vec3& w) { return w.z; }
 inline double abs_cos_theta(const Vec3& w) { return std::abs(w.z); }
 inline bool same_hemisphere(const Vec3& a, const Vec3& b) { return a.z * b.z > 0; }
+// The unit direction in the xz plane (azimuth 0) with cos theta = mu: the view direction of the
+// tables' and the checks' one-dimensional cuts (|mu| <= 1; mu < 0 is below the surface).
+inline Vec3 view_dir(double mu) { return {std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, mu}; }
 
 }  // namespace dspbr

@@ -2,10 +2,11 @@
 
 #include <limits>
 
+#include "dspbr/constants.h"
+
 namespace dspbr {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 double ggx_d(const Vec3& h, double alpha_u, double alpha_v) {

@@ -2,10 +2,11 @@
 
 #include <cmath>
 
+#include "dspbr/constants.h"
+
 namespace dspbr {
 
 QuadratureRule gauss_legendre(int n) {
-  constexpr double kPi = 3.14159265358979323846;
   QuadratureRule rule;
   rule.x.resize(n);
   rule.w.resize(n);

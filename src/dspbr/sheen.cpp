@@ -2,12 +2,12 @@
 
 #include <cmath>
 
+#include "dspbr/constants.h"
 #include "dspbr/quadrature.h"
 
 namespace dspbr {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 // Integral over the azimuth of max(0, A cos(phi) + B), A >= 0 (closed form).
 double azimuth_integral(double A, double B) {

@@ -1,4 +1,4 @@
-// Shared pieces of the fits (issue "Ceres refits"): error statistics, evaluation grids, the
+// Shared pieces of the fits: error statistics, evaluation grids, the
 // settings every fit receives, and a parallel map that is deterministic whatever the thread count.
 #pragma once
 #include <tbb/parallel_for.h>

@@ -4,14 +4,13 @@
 
 #include <cmath>
 
+#include "dspbr/constants.h"
 #include "dspbr/fit/albedo_forms.h"
 #include "dspbr/fit/flake_fit.h"
 
 namespace dspbr::fit {
 
 namespace {
-
-constexpr double kPiD = 3.14159265358979323846;
 
 std::string coef_list(const nlohmann::json& a) {
   std::string s;
@@ -103,9 +102,9 @@ inline float dspbr_fit_flake_lobe(float vx, float vy, float vz, float lx, float 
 }}
 )",
                      kFlakeRimPoints, fl["lobe_error_max"].get<double>(), fl["albedo_error_max"].get<double>(),
-                     fmt::format("{:.8e}", flake_tan2_half_cone()), fmt::format("{:.8e}", std::cos(2 * kPiD / kFlakeRimPoints)),
-                     fmt::format("{:.8e}", std::sin(2 * kPiD / kFlakeRimPoints)), fmt::format("{:.8e}", std::cos(kPiD / kFlakeRimPoints)),
-                     fmt::format("{:.8e}", std::sin(kPiD / kFlakeRimPoints)), kFlakeRimPoints, kFlakeRimPoints);
+                     fmt::format("{:.8e}", flake_tan2_half_cone()), fmt::format("{:.8e}", std::cos(2 * kPi / kFlakeRimPoints)),
+                     fmt::format("{:.8e}", std::sin(2 * kPi / kFlakeRimPoints)), fmt::format("{:.8e}", std::cos(kPi / kFlakeRimPoints)),
+                     fmt::format("{:.8e}", std::sin(kPi / kFlakeRimPoints)), kFlakeRimPoints, kFlakeRimPoints);
 }
 
 std::string generate_fits_header(const nlohmann::json& sl, const nlohmann::json& al, const nlohmann::json& fl) {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "dspbr/bsdf/flakes.h"
+#include "dspbr/constants.h"
 #include "dspbr/fit/minimax_fit.h"
 #include "dspbr/frame.h"
 #include "dspbr/ggx.h"
@@ -15,7 +16,6 @@
 namespace dspbr::fit {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 // A direction set for one view: l = reflect(v, h) for half vectors h on a Gauss-Legendre grid in
 // (w, phi) with theta_h = atan(c tan(pi w / 2)) (concentrates points where a lobe of width c is),

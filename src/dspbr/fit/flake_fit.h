@@ -1,4 +1,4 @@
-// Far-field flakes (issue "Ceres refits", part 3). When a pixel covers many flakes, the flake
+// Far-field flakes. When a pixel covers many flakes, the flake
 // layer's BRDF is the average of the cone BSDF over the flake-normal distribution (spec "Flakes":
 // GGX normals with alpha_ggx = sqrt(r_f^2 - alpha_cone^2), density D(n) n.z):
 //   f_agg(v, l) = Integral pdf(n) B_f(v, l; n) dn

@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dspbr/constants.h"
+#include "dspbr/frame.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/sheen.h"
 
 namespace dspbr::fit {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 struct RichResidual {
   double mu, alpha, ln_exact;
@@ -73,7 +74,7 @@ double sheen_albedo_quadrature(double mu_v, double alpha_b, const LambdaModel& l
   // phi in [0, pi] (symmetric), 32 uniform panels; 8-point Gauss-Legendre on each.
   static const QuadratureRule rule = gauss_legendre(8);
   const double mu = std::clamp(mu_v, 1e-6, 1.0);  // mu = 0: albedo limit, as lut/albedo.h (kMinCos)
-  const Vec3 v{std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, mu};
+  const Vec3 v = view_dir(mu);
   const double lam_v = lambda(mu, alpha_b);
   std::vector<double> mu_nodes, mu_weights;
   // Panel edges: geometric from 1e-4 to 1, plus 0.5 where the spec-form fits switch branch (kink).

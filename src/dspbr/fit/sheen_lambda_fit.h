@@ -1,4 +1,4 @@
-// The sheen shadowing fit (issue "Ceres refits", part 1): exact Smith Lambda of the Charlie
+// The sheen shadowing fit: exact Smith Lambda of the Charlie
 // distribution (sheen_lambda_exact) on a grid over alpha_b in [alpha_min, 1] x cos in [mu_min, mu_max],
 // Ceres fits of the spec's functional form and of our richer form (sheen_lambda_forms.h), and the
 // comparison of (a) Conty Estevez & Kulla 2017, (b) the spec's coefficients, (c) our fits, in

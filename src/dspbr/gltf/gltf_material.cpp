@@ -6,8 +6,9 @@
 #include <set>
 #include <stdexcept>
 
-#include "dspbr/material_params.h"
+#include "dspbr/constants.h"
 #include "dspbr/params/material_instance.h"
+#include "dspbr/params/material_params.h"
 #include "dspbr/params/param_defs.h"
 
 namespace dspbr::gltf {
@@ -15,7 +16,6 @@ namespace dspbr::gltf {
 namespace {
 
 using Json = nlohmann::json;
-constexpr double kPi = 3.14159265358979323846;
 
 // Material extensions this mapping reads (docs/gltf_mapping.md).
 const std::set<std::string>& known_extensions() {

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "dspbr/io/read_file.h"
-#include "dspbr/material_params.h"
+#include "dspbr/params/material_params.h"
 #include "dspbr/params/param_defs.h"
 
 namespace dspbr {

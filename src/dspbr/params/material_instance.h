@@ -1,5 +1,5 @@
-// Material instance files: {"material": "<type>", "values": {"<id>": value, ...}} (materials/scenes
-// issue), validated against the resolved parameter definitions of a parameter file
+// Material instance files: {"material": "<type>", "values": {"<id>": value, ...}} (docs/params.md),
+// validated against the resolved parameter definitions of a parameter file
 // (params-2025x.json format, see param_defs.h) and converted into the reference BSDF's Material.
 #pragma once
 #include <nlohmann/json.hpp>

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "dspbr/material_params.h"
+#include "dspbr/params/material_params.h"
 
 namespace dspbr {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "dspbr/material_params.h"
+#include "dspbr/params/material_params.h"
 
 namespace dspbr {
 

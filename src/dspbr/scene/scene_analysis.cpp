@@ -6,8 +6,8 @@
 #include "dspbr/gltf/gltf_file.h"
 #include "dspbr/gltf/gltf_material.h"
 #include "dspbr/io/read_file.h"
-#include "dspbr/material_params.h"
 #include "dspbr/params/material_instance.h"
+#include "dspbr/params/material_params.h"
 #include "dspbr/params/param_defs.h"
 #include "dspbr/scene/components.h"
 

@@ -1,4 +1,4 @@
-// Which DSPBR components and tables a scene's materials need (materials/scenes issue).
+// Which DSPBR components and tables a scene's materials need.
 // A scene is a glTF asset (.gltf / .glb, materials mapped as in docs/gltf_mapping.md) or a single
 // material instance file ({"material": ..., "values": {...}}, see params/material_instance.h).
 #pragma once

@@ -8,13 +8,13 @@
 #include <functional>
 #include <numeric>
 
+#include "dspbr/constants.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/rng.h"
 
 namespace dspbr::validate {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kChunk = 1u << 14;  // samples per independent RNG stream
 // Points per bin edge for the support-boundary test (section 2): a convex part of the support of
 // radius R that enters a bin between two edge points spaced d apart reaches in at most d^2 / (8 R);

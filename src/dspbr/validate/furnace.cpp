@@ -3,12 +3,12 @@
 #include <cmath>
 
 #include "dspbr/bsdf/sampling.h"
+#include "dspbr/constants.h"
 #include "dspbr/rng.h"
 
 namespace dspbr::validate {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 // Running sums for a mean and its standard error, per channel.
 struct Moments {

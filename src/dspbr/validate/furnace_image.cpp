@@ -4,7 +4,9 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
+#include <vector>
 
 #include "dspbr/frame.h"
 #include "dspbr/io/atomic_file.h"
@@ -17,23 +19,48 @@ RgbImage furnace_sphere(const Bsdf& bsdf, int res, std::size_t spp, uint64_t see
   img.width = img.height = res;
   img.pixels.assign(3 * std::size_t(res) * res, 1.0f);
   const Vec3 to_camera{0, 0, 1};
-  tbb::parallel_for(0, res, [&](int y) {
-    for (int x = 0; x < res; ++x) {
-      // Pixel centre on [-1, 1]^2, y up.
-      const double px = (x + 0.5) / res * 2.0 - 1.0, py = 1.0 - (y + 0.5) / res * 2.0;
-      const double r2 = px * px + py * py;
-      if (r2 >= 1.0) continue;
-      const Vec3 n{px, py, std::sqrt(1.0 - r2)};
-      // Tangent along the circle around the view axis (degenerate at the centre: from_normal).
-      const Frame f = Frame::from_normal_tangent(n, Vec3{-py, px, 0});
-      const Vec3 v = f.to_local(to_camera);
-      const SampledAlbedo a = albedo_sampled(bsdf, v, spp, seed, (stream << 24) + uint64_t(y) * res + x);
-      float* p = img.at(x, y);
-      p[0] = float(a.total.value.r);
-      p[1] = float(a.total.value.g);
-      p[2] = float(a.total.value.b);
-    }
+  // Pixel (x, y) has its centre at (a, b) / res with the odd integers a = 2x + 1 - res,
+  // b = res - 2y - 1; its ring is k = a^2 + b^2 (exact). The tangent follows the circle around the
+  // view axis, so the local view direction is (0, sin theta, cos theta) with sin^2 theta = k / res^2:
+  // every pixel of a ring sees the same v. One estimate per ring, at the ring's first pixel in
+  // raster order, fills the whole ring.
+  auto ring = [res](int x, int y) {
+    const int a = 2 * x + 1 - res, b = res - 2 * y - 1;
+    return a * a + b * b;
+  };
+  std::map<int, std::size_t> index;          // ring -> its entry below
+  std::vector<std::pair<int, int>> first;    // per ring: its first pixel
+  std::vector<int> key;                      // per ring: k
+  for (int y = 0; y < res; ++y)
+    for (int x = 0; x < res; ++x)
+      if (index.emplace(ring(x, y), first.size()).second) {
+        first.push_back({x, y});
+        key.push_back(ring(x, y));
+      }
+  std::vector<Rgb> value(first.size());
+  std::vector<char> inside(first.size(), 0);
+  tbb::parallel_for(std::size_t(0), first.size(), [&](std::size_t i) {
+    const auto [x, y] = first[i];
+    // Pixel centre on [-1, 1]^2, y up.
+    const double px = (x + 0.5) / res * 2.0 - 1.0, py = 1.0 - (y + 0.5) / res * 2.0;
+    const double r2 = px * px + py * py;
+    if (r2 >= 1.0) return;
+    const Vec3 n{px, py, std::sqrt(1.0 - r2)};
+    // Tangent along the circle around the view axis (degenerate at the centre: from_normal).
+    const Frame f = Frame::from_normal_tangent(n, Vec3{-py, px, 0});
+    const Vec3 v = f.to_local(to_camera);
+    value[i] = albedo_sampled(bsdf, v, spp, seed, (stream << 24) + uint64_t(key[i])).total.value;
+    inside[i] = 1;
   });
+  for (int y = 0; y < res; ++y)
+    for (int x = 0; x < res; ++x) {
+      const std::size_t i = index.at(ring(x, y));
+      if (!inside[i]) continue;
+      float* p = img.at(x, y);
+      p[0] = float(value[i].r);
+      p[1] = float(value[i].g);
+      p[2] = float(value[i].b);
+    }
   return img;
 }
 

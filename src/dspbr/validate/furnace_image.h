@@ -20,8 +20,10 @@ struct RgbImage {
   const float* at(int x, int y) const { return &pixels[3 * (std::size_t(y) * width + x)]; }
 };
 
-// res x res picture; spp BSDF samples per pixel (stratified, albedo_sampled); pixel (x, y) uses the
-// random stream (stream << 24) + y * res + x. Background pixels are 1.
+// res x res picture; spp BSDF samples per pixel (stratified, albedo_sampled). The pixels at one
+// distance from the centre share their local view direction and so one estimate: the ring of
+// pixel (x, y), k = a^2 + b^2 with a = 2x + 1 - res, b = res - 2y - 1, uses the random stream
+// (stream << 24) + k. Background pixels are 1.
 RgbImage furnace_sphere(const Bsdf& bsdf, int res, std::size_t spp, uint64_t seed, uint64_t stream);
 
 // Places images side by side (equal heights), separated by `gap` background (value 1) columns.

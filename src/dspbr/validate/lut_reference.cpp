@@ -2,8 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
+#include <tuple>
 #include <vector>
 
+#include "dspbr/constants.h"
+#include "dspbr/frame.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
 #include "dspbr/quadrature.h"
@@ -12,7 +17,6 @@
 namespace dspbr::validate {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kOrder = 8;
 
 const QuadratureRule& rule8() {
@@ -37,8 +41,6 @@ double gl_smooth(F&& f, double a, double b, int p) {
       },
       0.0, 1.0, p);
 }
-
-Vec3 view(double mu) { return {std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, mu}; }
 
 // For a microfacet normal at polar angle theta_h (cos cz, sin sz) and v = (s_v, 0, mu), the reflected
 // l = 2 (v.h) h - v is above the surface iff cos(phi_h) > c0 with
@@ -74,7 +76,7 @@ template <class G>
 double azimuth_integral(double mu, double cz, double sz, int panels, G&& g) {
   const double pm = phi_max(mu, cz, sz);
   if (pm <= 0) return 0.0;
-  const Vec3 v = view(mu);
+  const Vec3 v = view_dir(mu);
   return 2.0 * gl(
                    [&](double phi) {
                      const Vec3 h{sz * std::cos(phi), sz * std::sin(phi), cz};
@@ -88,7 +90,7 @@ double azimuth_integral(double mu, double cz, double sz, int panels, G&& g) {
 
 // Integral over h of D(h) G2 F (v.h) / mu, GGX isotropic alpha = r^2, in (u, phi) with
 // D cos(theta_h) dh = du dphi / (2 pi). f0 < 0: no Fresnel.
-double ggx_h_integral(double mu, double r, double f0, int panels) {
+double ggx_h_integral_uncached(double mu, double r, double f0, int panels) {
   const double alpha = roughness_to_alpha(r);
   if (alpha < 1e-9) {  // mirror limit: G2 = 1, single direction l = reflect(v, n)
     return f0 < 0 ? 1.0 : fresnel_schlick(mu, f0, 1.0);
@@ -108,6 +110,26 @@ double ggx_h_integral(double mu, double r, double f0, int panels) {
   };
   const double ua = u_of_theta(theta_where(mu, -1.0)), ub = u_of_theta(theta_where(mu, 1.0));
   return (gl(inner, 0.0, ua, panels) + gl_smooth(inner, ua, ub, panels)) / (2.0 * kPi);
+}
+
+// ggx_h_integral_uncached, remembered per (mu, r, f0, panels): the table check asks for the same
+// integrals many times (E_m(mu; r) for every f0 of Base_E, the average E_m,avg(r) for every mu and
+// f0 of Base_E and Base_E_avg). A pure function of its arguments, so the values are the same
+// bits whichever thread computes them first.
+double ggx_h_integral(double mu, double r, double f0, int panels) {
+  using Key = std::tuple<double, double, double, int>;
+  static std::mutex mutex;
+  static std::map<Key, double> memo;
+  const Key key{mu, r, f0, panels};
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    const auto it = memo.find(key);
+    if (it != memo.end()) return it->second;
+  }
+  const double value = ggx_h_integral_uncached(mu, r, f0, panels);
+  const std::lock_guard<std::mutex> lock(mutex);
+  memo.emplace(key, value);
+  return value;
 }
 
 // Integral over h of the sheen albedo integrand, in (x = cos theta_h, phi).

@@ -2,12 +2,12 @@
 
 #include <cmath>
 
+#include "dspbr/constants.h"
 #include "dspbr/rng.h"
 
 namespace dspbr::validate {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 // Uniform direction on the hemisphere of the given sign (density 1 / (2 pi)).
 Vec3 uniform_hemisphere(Pcg32& rng, double sign) {

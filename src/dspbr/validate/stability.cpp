@@ -2,12 +2,12 @@
 
 #include <cmath>
 
+#include "dspbr/constants.h"
 #include "dspbr/rng.h"
 
 namespace dspbr::validate {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 Vec3 from_cos_phi(double c, double phi) {
   const double s = std::sqrt(std::max(0.0, 1.0 - c * c));

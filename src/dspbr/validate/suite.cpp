@@ -12,7 +12,9 @@
 #include <tbb/global_control.h>
 #include <ctime>
 
+#include "dspbr/frame.h"
 #include "dspbr/io/atomic_file.h"
+#include "dspbr/io/json_values.h"
 #include "dspbr/progress.h"
 #include "dspbr/validate/furnace_image.h"
 #include "dspbr/validate/provenance.h"
@@ -23,11 +25,6 @@ namespace dspbr::validate {
 using nlohmann::json;
 
 namespace {
-
-json rgb_json(const Rgb& c) { return json::array({c.r, c.g, c.b}); }
-json vec_json(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
-
-Vec3 view_dir(double c) { return {std::sqrt(std::max(0.0, 1.0 - c * c)), 0.0, c}; }
 
 const char* claim_name(EnergyClaim c) {
   switch (c) {
@@ -478,34 +475,49 @@ json run_convergence(const Catalog& cat, const SuiteSettings& s) {
   // a non-delta part (roughness 0 of a single specular lobe: both estimators are exactly 0 there).
   const int repeats = 8;
   const Vec3 v = view_dir(0.5);
+  std::vector<std::size_t> cases;
   for (std::size_t c = 0; c < cat.cases.size(); ++c) {
     const auto& comps = s.convergence_components;
-    if (std::find(comps.begin(), comps.end(), cat.cases[c].component) == comps.end()) continue;
+    if (std::find(comps.begin(), comps.end(), cat.cases[c].component) != comps.end()) cases.push_back(c);
+  }
+  const std::size_t nmax = s.convergence_samples.back(), nn = s.convergence_samples.size();
+  // Reference per case: sampled estimator (non-delta part, the integral both estimators share) with
+  // 16x the largest budget. Then both estimators per (case, budget, repeat). Each with its own
+  // random stream; all of them in one parallel loop (the references first: the largest items).
+  std::vector<AlbedoEstimate> refs(cases.size());
+  std::vector<double> de(cases.size() * nn * repeats), ds(de.size());
+  tbb::parallel_for(std::size_t(0), refs.size() + de.size(), [&](std::size_t item) {
+    if (item < refs.size()) {
+      refs[item] = albedo_sampled(*cat.cases[cases[item]].bsdf, v, 16 * nmax, s.seed, 900000 + cases[item]).non_delta;
+      return;
+    }
+    const std::size_t idx = item - refs.size(), k = idx / (nn * repeats), ni = (idx / repeats) % nn;
+    const int r = int(idx % repeats);
+    const std::size_t c = cases[k], n = s.convergence_samples[ni];
     const Bsdf& b = *cat.cases[c].bsdf;
-    const std::size_t nmax = s.convergence_samples.back();
-    // Reference: sampled estimator (non-delta part, the integral both estimators share) with 16x the largest budget.
-    const AlbedoEstimate ref_est = albedo_sampled(b, v, 16 * nmax, s.seed, 900000 + c).non_delta;
-    const double ref = ref_est.value.g;
+    const int strata = std::max(1, int(std::lround(std::sqrt(n / 2.0))));
+    de[idx] = albedo_eval(b, v, strata, s.seed + 17 + r, 800000 + c).value.g;
+    ds[idx] = albedo_sampled(b, v, n, s.seed + 17 + r, 700000 + c).non_delta.value.g;
+  });
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const double ref = refs[k].value.g;
     if (ref < 1e-3) continue;
     json ns = json::array(), e_eval = json::array(), e_samp = json::array();
-    for (std::size_t n : s.convergence_samples) {
-      std::vector<double> de(repeats), ds(repeats);
-      tbb::parallel_for(0, repeats, [&](int r) {
-        const int strata = std::max(1, int(std::lround(std::sqrt(n / 2.0))));
-        de[r] = albedo_eval(b, v, strata, s.seed + 17 + r, 800000 + c).value.g - ref;
-        ds[r] = albedo_sampled(b, v, n, s.seed + 17 + r, 700000 + c).non_delta.value.g - ref;
-      });
+    for (std::size_t ni = 0; ni < nn; ++ni) {
       double se = 0, ss = 0;
-      for (int r = 0; r < repeats; ++r) {
-        se += de[r] * de[r];
-        ss += ds[r] * ds[r];
+      for (int r = 0; r < repeats; ++r) {  // fixed order
+        const std::size_t idx = (k * nn + ni) * repeats + r;
+        const double e = de[idx] - ref, d = ds[idx] - ref;
+        se += e * e;
+        ss += d * d;
       }
-      ns.push_back(n);
+      ns.push_back(s.convergence_samples[ni]);
       e_eval.push_back(std::sqrt(se / repeats));
       e_samp.push_back(std::sqrt(ss / repeats));
     }
-    arr.push_back({{"case", cat.cases[c].name}, {"component", cat.cases[c].component}, {"cos", 0.5},
-                   {"reference", ref}, {"reference_se", ref_est.std_error.g}, {"repeats", repeats},
+    const BsdfCase& bc = cat.cases[cases[k]];
+    arr.push_back({{"case", bc.name}, {"component", bc.component}, {"cos", 0.5},
+                   {"reference", ref}, {"reference_se", refs[k].std_error.g}, {"repeats", repeats},
                    {"samples", ns}, {"rms_error_eval", e_eval}, {"rms_error_sampled", e_samp}});
   }
   return arr;
@@ -605,10 +617,12 @@ SuiteResult run_suite(const Catalog& cat, const LutSet* luts, const SuiteSetting
   // Wall-clock time per phase: reported on stderr only (the report stays bit-identical).
   auto timed = [&](const char* name, auto&& f) {
     const auto t0 = std::chrono::steady_clock::now();
+    const std::clock_t c0 = std::clock();  // processor time of all threads
     report[name] = f();
     if (s.progress)
-      std::fprintf(stderr, "  %-16s %6.1fs\n", name,
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      std::fprintf(stderr, "  %-16s %6.1fs  (cpu %6.1fs)\n", name,
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
+                   double(std::clock() - c0) / CLOCKS_PER_SEC);
   };
   timed("energy", [&] { return run_energy(cat, s, verdicts); });
   timed("reciprocity", [&] { return run_reciprocity(cat, s, verdicts); });

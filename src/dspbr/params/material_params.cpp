@@ -1,4 +1,4 @@
-#include "dspbr/material_params.h"
+#include "dspbr/params/material_params.h"
 
 #include <array>
 #include <cmath>

@@ -1,0 +1,27 @@
+// The speed/accuracy study of the table integrators (`dspbr lut --bench`, docs/luts.md): for each
+// table and integrator (QMC, MC, deterministic quadrature), the wall time and the max |error|
+// against a high-budget QMC reference with an independent seed, over a range of sample budgets,
+// then the adaptive settings. Runs on a small grid per table (the options' sizes override it) to
+// keep the reference affordable. Wall times are measurements, not reproducible bytes.
+#pragma once
+#include <functional>
+#include <string>
+
+#include "dspbr/lut/generate.h"
+
+namespace dspbr::validate {
+
+struct IntegratorStudyRow {
+  std::string table, grid, integrator, samples;  // samples: per cell ("<= N" for the adaptive settings)
+  double wall_s = 0, ms_per_cell = 0, max_abs_error = 0, max_std_error = 0;
+  bool reference = false;  // the reference itself: only samples and max_std_error are meaningful
+};
+
+// Runs the study for base.tables; calls on_row for each row as soon as it is measured.
+void run_integrator_study(const LutOptions& base, const std::function<void(const IntegratorStudyRow&)>& on_row);
+
+// The Markdown header of the study's table, and one row.
+std::string integrator_study_markdown_header();
+std::string integrator_study_markdown_row(const IntegratorStudyRow& r);
+
+}  // namespace dspbr::validate
