@@ -1,5 +1,4 @@
-// Mathematical constants of the reference (double precision), defined once. Included by .cpp files
-// (and tests), not by headers that bsdf/ and lut/ include: those folders still define their own.
+// Mathematical constants of the reference (double precision), defined once.
 #pragma once
 
 namespace dspbr {

@@ -10,7 +10,7 @@ namespace dspbr {
 DiffuseBase::DiffuseBase(const DiffuseParams& p, const LutSet& luts)
     : p_(p), e_base_(AlbedoSlice::E_base(luts, p.r_uv, p.f0_max)) {
   const double missing_avg = 1.0 - luts.E_base_avg(p_.r_uv, p_.f0_max);
-  inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kBsdfPi * missing_avg) : 0.0;
+  inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kPi * missing_avg) : 0.0;
 }
 
 double DiffuseBase::missing(double cos_theta, LobeCache& cache) const {

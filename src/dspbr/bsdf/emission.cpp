@@ -3,12 +3,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dspbr/constants.h"
 #include "dspbr/fresnel.h"
 
 namespace dspbr {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 bool non_negative_finite(double x) { return x >= 0 && std::isfinite(x); }
 }  // namespace
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "dspbr/constants.h"
 #include "dspbr/frame.h"
 #include "dspbr/ggx.h"
 #include "dspbr/rng.h"
@@ -10,7 +11,6 @@
 namespace dspbr {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 // frac(x) = x - floor(x) in [0, 1). x - floor(x) rounds to 1.0 for tiny negative x; 1 is
 // equivalent to 0 on the periodic texture, so it is mapped to 0.

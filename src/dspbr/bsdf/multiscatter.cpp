@@ -9,7 +9,7 @@ namespace dspbr {
 MultiScatterReflection::MultiScatterReflection(double r_uv, const Rgb& f_ms, const LutSet& luts)
     : f_ms_(f_ms), e_m_(AlbedoSlice::E_m(luts, r_uv)) {
   const double missing_avg = luts.missing_E_m_avg(r_uv);
-  inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kBsdfPi * missing_avg) : 0.0;
+  inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kPi * missing_avg) : 0.0;
 }
 
 double MultiScatterReflection::missing(double cos_theta, LobeCache& cache) const {

@@ -3,20 +3,20 @@
 #pragma once
 #include <cmath>
 
+#include "dspbr/constants.h"
 #include "dspbr/vec3.h"
 
 namespace dspbr {
 
-constexpr double kBsdfPi = 3.14159265358979323846;
-constexpr double kBsdfInvPi = 1.0 / kBsdfPi;
+constexpr double kBsdfInvPi = 1.0 / kPi;
 
 // Concentric map of [0,1)^2 to the unit disk (Shirley & Chiu 1997).
 inline void concentric_disk(double u1, double u2, double& x, double& y) {
   const double a = 2 * u1 - 1, b = 2 * u2 - 1;
   if (a == 0 && b == 0) { x = y = 0; return; }
   double r, phi;
-  if (std::abs(a) > std::abs(b)) { r = a; phi = (kBsdfPi / 4) * (b / a); }
-  else { r = b; phi = kBsdfPi / 2 - (kBsdfPi / 4) * (a / b); }
+  if (std::abs(a) > std::abs(b)) { r = a; phi = (kPi / 4) * (b / a); }
+  else { r = b; phi = kPi / 2 - (kPi / 4) * (a / b); }
   x = r * std::cos(phi);
   y = r * std::sin(phi);
 }
@@ -31,7 +31,7 @@ inline double cosine_hemisphere_pdf(const Vec3& w) { return std::max(0.0, w.z) *
 
 // Uniform direction in the upper hemisphere: pdf = 1 / (2 pi) for z > 0.
 inline Vec3 sample_uniform_hemisphere(double u1, double u2) {
-  const double z = u1, r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2 * kBsdfPi * u2;
+  const double z = u1, r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2 * kPi * u2;
   return {r * std::cos(phi), r * std::sin(phi), z};
 }
 inline double uniform_hemisphere_pdf(const Vec3& w) { return w.z > 0 ? 0.5 * kBsdfInvPi : 0.0; }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dspbr/bsdf/thin_film_optics.h"
+#include "dspbr/constants.h"
 #include "dspbr/quadrature.h"
 
 namespace dspbr {
@@ -17,7 +18,6 @@ using namespace thin_film_detail;
 namespace {
 
 using cplx = std::complex<double>;
-constexpr double kPi = 3.14159265358979323846;
 
 // Spectral range of the CIE 1931 tables (nm); the fitted CMFs are < 1e-3 outside it.
 constexpr double kLambdaMin = 360.0, kLambdaMax = 830.0;

@@ -11,7 +11,7 @@ TransmissionCompensation::TransmissionCompensation(bool transmission, const Rgb&
                                                    double e_l_avg)
     : transmission_(transmission), c_(c), e_v_(std::move(e_v)), e_l_(std::move(e_l)) {
   const double missing_avg = 1.0 - e_l_avg;
-  inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kBsdfPi * missing_avg) : 0.0;
+  inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kPi * missing_avg) : 0.0;
 }
 
 double TransmissionCompensation::missing_v(double c) const { return std::clamp(1.0 - e_v_(std::abs(c)), 0.0, 1.0); }

@@ -3,12 +3,12 @@
 #include <cmath>
 #include <limits>
 
+#include "dspbr/constants.h"
 #include "dspbr/frame.h"
 
 namespace dspbr {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // x * y with the convention inf * 0 = 0 (see VolumeCoefficients).

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dspbr/constants.h"
+#include "dspbr/frame.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
 #include "dspbr/lut/glass_quadrature.h"
@@ -17,7 +19,6 @@ namespace dspbr {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Replicate means of K integrals: `reps` holds one array of K means per replicate (Qmc, Mc), or
 // for the deterministic Quad integrator {fine, coarse}: the rule with P panels per dimension and
@@ -193,7 +194,6 @@ void check_settings(const IntegratorSettings& s) {
 }
 
 double clamp_cos(double mu) { return std::clamp(mu, kMinCos, 1.0); }
-Vec3 view_dir(double mu) { return {std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, mu}; }
 Vec3 hemisphere_dir(double cos_t, double phi) {
   const double s = std::sqrt(std::max(0.0, 1.0 - cos_t * cos_t));
   return {s * std::cos(phi), s * std::sin(phi), cos_t};

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "dspbr/constants.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
 #include "dspbr/quadrature.h"
@@ -12,7 +13,6 @@ namespace dspbr {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxDepth = 3;  // at most 2^3 panels per segment between kinks
 
 struct Glass {
