@@ -9,8 +9,9 @@
 // Sheen_E: alpha_b[32] power(p=0.25, lo=0.00390625) x cos_theta[32] power(p=0.25, lo=0.001)
 // Sheen_ash_E: alpha_b[32] power(p=0.25, lo=0.00390625) x cos_theta[32] power(p=0.25, lo=0.001)
 // With DSPBR_LOOKUP_TEXTURES defined, the tables are read from single-channel float
-// textures (R32F; width = fastest axis, height = slowest axis or 1), fetched with texelFetch /
-// Load at integer texel coordinates (no filtering, no sampler state needed):
+// textures (R32F; width = fastest axis, height = slowest axis or 1; a three-axis table's
+// planes stacked: row = plane * rows + row), fetched with texelFetch / Load at integer texel
+// coordinates (no filtering, no sampler state needed):
 //   dspbr_GGX_E_tex  binding 0  64 x 32
 //   dspbr_GGX_beta_tex  binding 1  32 x 32
 //   dspbr_GGX_E_avg_tex  binding 2  32 x 1

@@ -13,7 +13,7 @@ namespace dspbr {
 
 namespace {
 
-constexpr int kMaxDepth = 3;  // at most 2^3 panels per segment between kinks
+constexpr int kMaxDepth = 6;  // at most 2^6 panels per segment between kinks
 
 struct Glass {
   Vec3 v;
