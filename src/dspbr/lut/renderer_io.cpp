@@ -170,7 +170,8 @@ RendererLuts read_renderer_json_value(const nlohmann::json& j, const std::string
         if (a.warp.kind == WarpKind::GlassIor && !(d == 0 && ref.back().name == "cos_theta"))
           throw std::runtime_error(std::string(name) + ": the glass_ior warp needs a cos_theta axis after it");
         if (!(a.warp.p > 0 && a.warp.p <= 16) || !(a.warp.lo >= 0 && a.warp.lo < 1) ||
-            (a.warp.kind == WarpKind::LogRoughness && !(a.warp.lo > 0)))
+            (a.warp.kind == WarpKind::LogRoughness && !(a.warp.lo > 0)) ||
+            (a.warp.kind == WarpKind::GlassIor && !(a.warp.p >= 1e-3)))  // k mu^2 stays >= 1e-15
           throw std::runtime_error(at + " has a bad warp");
         cells *= size_t(a.size);
         if (cells > limits::kTableCells)

@@ -28,7 +28,7 @@
 // default set, absent from sets written before them):
 //   Glass_E         [ior][roughness][cos_theta]  E_g(mu; r, ior), v outside   ior axis glass_ior(mu), cos ggx_cos
 //   Glass_inv_E     [ior][roughness][cos_theta]  E_g, v inside (total internal reflection included)
-//   Glass_E_avg     [ior_x][roughness]           2 Integral E^_g mu dmu of the lookup, outside
+//   Glass_E_avg     [ior_x][roughness]           2 Integral E^_g mu dmu of the lookup, outside   ior_x axis x^0.5
 //   Glass_inv_E_avg [ior_x][roughness]           the same, inside
 // ior in [1, 3] (above 3 evaluates at 3); the r = 0 samples hold the limit at fixed mu / alpha
 // as for GGX_E.
