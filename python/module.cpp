@@ -509,11 +509,10 @@ py::dict lut_load(const py::object& path_obj) {
   }
   py::dict d;
   if (set.layout == LutLayout::Renderer) {
-    for (const auto* names : {&RendererLuts::names(), &RendererLuts::glass_names()})
-      for (const char* name : *names) {
-        const WarpedTable& t = *set.renderer.table(name);
-        if (!t.values.empty()) d[py::str(name)] = array_of(t.values, t.axes);
-      }
+    for (const char* name : set.renderer.held_names()) {
+      const WarpedTable& t = *set.renderer.table(name);
+      d[py::str(name)] = array_of(t.values, t.axes);
+    }
   } else {
     for (const Table* t : {&set.ggx_e, &set.ggx_e_avg, &set.base_e, &set.base_e_avg, &set.sheen_e, &set.sheen_ash_e,
                            &set.glass_e, &set.glass_inv_e, &set.glass_e_avg, &set.glass_inv_e_avg})

@@ -185,9 +185,7 @@ void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& for
         write_text_atomically((fs::path(a.out) / glass_lookup_file_name(d)).string(),
                               glass_lookup_code(luts, d, provenance));
     }
-  std::vector<const char*> held = RendererLuts::names();
-  if (luts.has_glass()) held.insert(held.end(), RendererLuts::glass_names().begin(), RendererLuts::glass_names().end());
-  for (const char* name : held) {
+  for (const char* name : luts.held_names()) {
     const WarpedTable& t = *luts.table(name);
     double max_err = 0;
     for (double e : t.errors) max_err = std::max(max_err, e);

@@ -54,12 +54,6 @@ std::string decode_text(const WarpedTable& t) {
 }
 
 // The tables a set holds: the DSPBR 2025x ones, then the glass ones when present.
-std::vector<const char*> held_tables(const RendererLuts& luts) {
-  std::vector<const char*> n = RendererLuts::names();
-  if (luts.has_glass()) n.insert(n.end(), RendererLuts::glass_names().begin(), RendererLuts::glass_names().end());
-  return n;
-}
-
 }  // namespace
 
 std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, int scale) {
@@ -86,7 +80,7 @@ std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, 
     j["glass_integrator"] = {{"name", integrator_name(g.integrator)}, {"target_error", g.target_error}};
   }
   ojson jt = ojson::object();
-  for (const char* name : held_tables(luts)) {
+  for (const char* name : luts.held_names()) {
     const WarpedTable& t = *luts.table(name);
     ojson e;
     ojson axes = ojson::array();
@@ -211,7 +205,7 @@ std::vector<float> split_sum_pixels(const RendererLuts& luts, int size) {
 
 void write_renderer_images(const RendererLuts& luts, const std::string& dir, bool half, int split_sum_size,
                            const std::string& command) {
-  for (const char* name : held_tables(luts)) {
+  for (const char* name : luts.held_names()) {
     const WarpedTable& t = *luts.table(name);
     // Rank 3: the planes of the slowest axis stacked vertically (height = n0 n1).
     const int width = t.axes.back().size, height = int(t.size() / size_t(width));

@@ -61,6 +61,12 @@ const std::vector<const char*>& RendererLuts::glass_names() {
   return n;
 }
 
+std::vector<const char*> RendererLuts::held_names() const {
+  std::vector<const char*> n = names();
+  if (has_glass()) n.insert(n.end(), glass_names().begin(), glass_names().end());
+  return n;
+}
+
 const WarpedTable* RendererLuts::table(const std::string& name) const {
   return const_cast<RendererLuts*>(this)->table(name);
 }

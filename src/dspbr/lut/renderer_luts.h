@@ -48,6 +48,8 @@ struct RendererLuts {
   // by name (nullptr when unknown).
   static const std::vector<const char*>& names();
   static const std::vector<const char*>& glass_names();
+  // The tables this set holds: names(), then glass_names() when has_glass().
+  std::vector<const char*> held_names() const;
   const WarpedTable* table(const std::string& name) const;
   WarpedTable* table(const std::string& name);
   size_t stored_values() const;        // number of stored samples of the DSPBR 2025x tables

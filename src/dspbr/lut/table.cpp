@@ -19,11 +19,6 @@ double Axis::coord(int i) const {
   return size > 1 ? lo + double(i) / (size - 1) * (hi - lo) : 0.5 * (lo + hi);
 }
 
-double Axis::index(double x) const {
-  const double t = (x - lo) / (hi - lo);
-  if (kind == GridKind::CellCentred) return t * size - 0.5;
-  return t * (size - 1);
-}
 
 size_t Table::size() const {
   size_t n = 1;
@@ -42,20 +37,29 @@ double Table::lookup(const std::vector<double>& x) const { return lookup(x.data(
 
 namespace {
 
-// Cell index (clamped to [0, n - 2]) and fraction of position x on an axis (clamp-to-edge).
+// Cell index i in [0, max(0, n - 2)] and fraction f of position x on an axis, clamped to the
+// outermost samples (clamp-to-edge). The continuous index is Axis::index written out.
 inline void locate(const Axis& a, double x, int& i, double& f) {
   const int n = a.size;
-  const double c = std::clamp(a.index(x), 0.0, double(n - 1));
-  i = std::min(int(std::floor(c)), std::max(0, n - 2));
+  const double t = (x - a.lo) / (a.hi - a.lo);
+  const double u = a.kind == GridKind::CellCentred ? t * n - 0.5 : t * (n - 1);
+  const double c = u > 0.0 ? std::min(u, double(n - 1)) : 0.0;  // NaN -> 0
+  i = std::min(int(c), std::max(0, n - 2));  // c >= 0: truncation is floor
   f = n > 1 ? c - i : 0.0;
 }
 
 }  // namespace
 
+double Axis::index(double x) const {
+  const double t = (x - lo) / (hi - lo);
+  return kind == GridKind::CellCentred ? t * size - 0.5 : t * (size - 1);
+}
+
 double Table::lookup(const double* x, size_t x_rank) const {
   const size_t rank = axes.size();
   if (x_rank != rank || rank > 3) throw std::invalid_argument("Table::lookup: wrong coordinate rank for " + name);
   const Axis* ax = axes.data();
+  const double* v = values.data();
   if (rank == 2) {
     // The corner loop below written out for two axes (same products and order).
     int i0, i1;
@@ -63,17 +67,12 @@ double Table::lookup(const double* x, size_t x_rank) const {
     locate(ax[0], x[0], i0, f0);
     locate(ax[1], x[1], i1, f1);
     const size_t n1 = size_t(ax[1].size);
-    const size_t r0 = size_t(i0), r1 = size_t(std::min(i0 + 1, ax[0].size - 1));
+    const size_t r0 = size_t(i0) * n1, r1 = size_t(std::min(i0 + 1, ax[0].size - 1)) * n1;
     const size_t c0 = size_t(i1), c1 = size_t(std::min(i1 + 1, ax[1].size - 1));
     const double w00 = (1.0 - f0) * (1.0 - f1), w10 = f0 * (1.0 - f1);
     const double w01 = (1.0 - f0) * f1, w11 = f0 * f1;
-    const double* v = values.data();
-    double result = 0;
-    if (w00 != 0) result += w00 * v[r0 * n1 + c0];
-    if (w10 != 0) result += w10 * v[r1 * n1 + c0];
-    if (w01 != 0) result += w01 * v[r0 * n1 + c1];
-    if (w11 != 0) result += w11 * v[r1 * n1 + c1];
-    return result;
+    // Zero weights add +0 (the values are finite): no branches, the same sum as the loop below.
+    return ((w00 * v[r0 + c0] + w10 * v[r1 + c0]) + w01 * v[r0 + c1]) + w11 * v[r1 + c1];
   }
   int i0[3] = {0, 0, 0};
   double f[3] = {0, 0, 0};
@@ -87,7 +86,7 @@ double Table::lookup(const double* x, size_t x_rank) const {
       w *= bit ? f[d] : 1.0 - f[d];
       o = o * size_t(axes[d].size) + size_t(std::min(i0[d] + bit, axes[d].size - 1));
     }
-    if (w != 0) result += w * values[o];
+    result += w * v[o];  // +0 for a zero weight (finite values)
   }
   return result;
 }

@@ -118,56 +118,64 @@ double extended(At&& at, int k, int n) {
 
 }  // namespace
 
+namespace {
+
+// One Catmull-Rom axis of a lookup: the first of the four samples (i - 1, may be -1) and their
+// weights.
+struct Taps {
+  int first;
+  double w[4];
+};
+Taps taps(double x, int n) {
+  Taps t;
+  double f;
+  locate(x, n, &t.first, &f);
+  t.first -= 1;
+  catmull_rom_weights(f, t.w);
+  return t;
+}
+// Whether the four samples lie inside the row (no extended sample needed).
+bool inside(const Taps& t, int n) { return t.first >= 0 && t.first + 3 < n; }
+
+// sum_k w[k] at(first + k), the samples beyond the ends extended linearly (see the header).
+template <class At>
+double weighted_sum(const Taps& t, int n, At&& at) {
+  double s = 0;
+  if (inside(t, n))
+    for (int k = 0; k < 4; ++k) s += t.w[k] * at(t.first + k);
+  else
+    for (int k = 0; k < 4; ++k) s += t.w[k] * extended(at, t.first + k, n);
+  return s;
+}
+
+}  // namespace
+
 double WarpedTable::interpolate(double x0, double x1, double x2) const {
   if (axes.empty() || axes.size() > 3) throw std::invalid_argument("WarpedTable: rank must be 1, 2 or 3 (" + name + ")");
+  const double* v = values.data();
   const int n0 = axes[0].size;
-  int i0;
-  double f0, w0[4];
-  locate(x0, n0, &i0, &f0);
-  catmull_rom_weights(f0, w0);
-  if (axes.size() == 1) {
-    auto at = [&](int k) { return values[size_t(k)]; };
-    double s = 0;
-    for (int a = 0; a < 4; ++a) s += w0[a] * extended(at, i0 - 1 + a, n0);
-    return s;
-  }
+  const Taps t0 = taps(x0, n0);
+  if (axes.size() == 1) return weighted_sum(t0, n0, [&](int k) { return v[k]; });
+  // Higher ranks: interpolate along the fastest axis first, then across rows (and planes).
   const int n1 = axes[1].size;
-  int i1;
-  double f1, w1[4];
-  locate(x1, n1, &i1, &f1);
-  catmull_rom_weights(f1, w1);
+  const Taps t1 = taps(x1, n1);
   if (axes.size() == 2) {
-    // Interpolate along the fast axis in each of the four (extended) rows, then across the rows.
     auto row = [&](int r) {
-      auto at = [&](int k) { return values[size_t(r) * size_t(n1) + size_t(k)]; };
-      double s = 0;
-      for (int b = 0; b < 4; ++b) s += w1[b] * extended(at, i1 - 1 + b, n1);
-      return s;
+      const double* p = v + size_t(r) * size_t(n1);
+      return weighted_sum(t1, n1, [&](int k) { return p[k]; });
     };
-    double s = 0;
-    for (int a = 0; a < 4; ++a) s += w0[a] * extended(row, i0 - 1 + a, n0);
-    return s;
+    return weighted_sum(t0, n0, row);
   }
   const int n2 = axes[2].size;
-  int i2;
-  double f2, w2[4];
-  locate(x2, n2, &i2, &f2);
-  catmull_rom_weights(f2, w2);
-  // Rank 3: the same per axis, fastest first (rows of each plane, then the planes).
-  auto plane = [&](int p) {
+  const Taps t2 = taps(x2, n2);
+  auto plane = [&](int q) {
     auto row = [&](int r) {
-      auto at = [&](int k) { return values[(size_t(p) * size_t(n1) + size_t(r)) * size_t(n2) + size_t(k)]; };
-      double s = 0;
-      for (int c = 0; c < 4; ++c) s += w2[c] * extended(at, i2 - 1 + c, n2);
-      return s;
+      const double* p = v + (size_t(q) * size_t(n1) + size_t(r)) * size_t(n2);
+      return weighted_sum(t2, n2, [&](int k) { return p[k]; });
     };
-    double s = 0;
-    for (int b = 0; b < 4; ++b) s += w1[b] * extended(row, i1 - 1 + b, n1);
-    return s;
+    return weighted_sum(t1, n1, row);
   };
-  double s = 0;
-  for (int a = 0; a < 4; ++a) s += w0[a] * extended(plane, i0 - 1 + a, n0);
-  return s;
+  return weighted_sum(t0, n0, plane);
 }
 
 WarpedTable WarpedTable::slice(double x0) const {
