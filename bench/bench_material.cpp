@@ -3,7 +3,8 @@
 // film and the full material (every component on), against a bare isotropic GGX reflection eval
 // (D, height-correlated G2, Schlick F) in the same run. BM_Eval/<material> and
 // BM_Sample/<material> use the component mask derived from the material (active_components);
-// .../all_components evaluates every layer even at zero weight.
+// .../all_components evaluates every layer even at zero weight. BM_(Eval|Sample)/rough_glass_compensated:
+// the glass at roughness 0.5 with the transmission-compensation option (the glass subtype is smooth).
 //   dspbr_bench --benchmark_filter='BM_(Eval|Sample)/'
 // Figures: docs/bsdf.md ("Speed"), docs/params.md ("Cost of inactive components").
 #include <benchmark/benchmark.h>
@@ -59,6 +60,16 @@ Material thin_film_material() {
   return m;
 }
 
+Material rough_glass() {
+  Material m = subtype("glass");
+  m.roughness = 0.5;
+  return m;
+}
+
+const char* kNames[] = {"plastic", "metal", "glass", "carpaint", "thin_film", "full"};
+constexpr int kMaterials = 6;
+constexpr int kRoughGlassCompensated = kMaterials;  // not in the all_components rows
+
 Material material(int index) {
   switch (index) {
     case 0: return subtype("plastic");
@@ -66,12 +77,11 @@ Material material(int index) {
     case 2: return subtype("glass");
     case 3: return subtype("carpaint");
     case 4: return thin_film_material();
+    case kRoughGlassCompensated: return rough_glass();
     default: return full_material();
   }
 }
 
-const char* kNames[] = {"plastic", "metal", "glass", "carpaint", "thin_film", "full"};
-constexpr int kMaterials = 6;
 
 // Fixed sets of directions / random numbers (upper hemisphere for v, both for l).
 struct Inputs {
@@ -98,7 +108,9 @@ const Inputs& inputs() {
 
 MaterialBsdf make(int index, bool masked) {
   const Material m = material(index);
-  return MaterialBsdf(m, LutSet::builtin(), BsdfOptions{}, masked ? active_components(m) : kAllComponents);
+  BsdfOptions opt;
+  opt.transmission_compensation = index == kRoughGlassCompensated;
+  return MaterialBsdf(m, LutSet::builtin(), opt, masked ? active_components(m) : kAllComponents);
 }
 
 void eval(benchmark::State& state, int index, bool masked) {
@@ -146,6 +158,8 @@ void bare_ggx(benchmark::State& state) {
     benchmark::RegisterBenchmark(("BM_Eval/" + name).c_str(), eval, m, true);
     benchmark::RegisterBenchmark(("BM_Sample/" + name).c_str(), sample, m, true);
   }
+  benchmark::RegisterBenchmark("BM_Eval/rough_glass_compensated", eval, kRoughGlassCompensated, true);
+  benchmark::RegisterBenchmark("BM_Sample/rough_glass_compensated", sample, kRoughGlassCompensated, true);
   for (int m = 0; m < kMaterials; ++m) {
     const std::string name = kNames[m];
     benchmark::RegisterBenchmark(("BM_Eval/" + name + "/all_components").c_str(), eval, m, false);

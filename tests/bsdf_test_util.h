@@ -7,7 +7,7 @@
 
 #include "dspbr/bsdf/bsdf.h"
 #include "dspbr/lut/lut_set.h"
-#include "dspbr/quadrature.h"
+#include "light_space_albedo.h"
 
 namespace dspbr::test {
 
@@ -20,21 +20,10 @@ inline Vec3 dir_from_angles(double theta_deg, double phi_deg) {
 }
 
 // Integral over the sphere of g(l) dl, split into the two hemispheres (the BSDF is discontinuous
-// at the horizon), composite Gauss-Legendre in mu = cos theta and phi.
+// at the horizon), composite Gauss-Legendre in mu = cos theta and phi (light_space_albedo.h).
 inline double integrate_sphere(const std::function<double(const Vec3&)>& g, int mu_panels = 48, int phi_panels = 96) {
-  static const QuadratureRule rule = gauss_legendre(8);
   double total = 0;
-  for (int hemi = 0; hemi < 2; ++hemi) {
-    const double sign = hemi == 0 ? 1.0 : -1.0;
-    total += integrate_gl(
-        [&](double mu) {
-          const double s = std::sqrt(std::max(0.0, 1 - mu * mu));
-          return integrate_gl(
-              [&](double phi) { return g({s * std::cos(phi), s * std::sin(phi), sign * mu}); }, 0.0, 2 * M_PI,
-              phi_panels, rule);
-        },
-        0.0, 1.0, mu_panels, rule);
-  }
+  for (const double sign : {1.0, -1.0}) total += hemisphere_integral(g, sign, mu_panels, phi_panels);
   return total;
 }
 

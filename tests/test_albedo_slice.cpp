@@ -1,6 +1,10 @@
-// AlbedoSlice (a table cut at fixed roughness / f0 / alpha_b) against the full LutSet lookups it
+// AlbedoSlice (a table cut at fixed roughness / f0 / alpha_b / ior) against the full LutSet lookups it
 // replaces in the lobes, for both layouts: the same interpolant, so equal to rounding.
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
 
 #include "dspbr/lut/albedo_slice.h"
 #include "dspbr/rng.h"
@@ -25,4 +29,39 @@ TEST(AlbedoSlice, EqualsTheFullLookups) {
       }
     }
   }
+}
+
+// The glass slices (E_g at fixed roughness and ior; the renderer layout's ior coordinate depends
+// on mu, so its slice keeps the ior rows its lookups reach) against LutSet::E_glass, both layouts
+// and both sides, over the whole domain (ior 1 to beyond the tables' 3, r 0 to 1, mu 0 to 1).
+TEST(AlbedoSlice, GlassSlicesEqualTheFullLookups) {
+  for (const LutSet* luts : {&LutSet::builtin(), &LutSet::published()}) {
+    ASSERT_TRUE(luts->has_glass());
+    Pcg32 rng(7, 1);
+    double worst = 0;
+    for (int i = 0; i < 40; ++i) {
+      const double r = i == 0 ? 0.0 : i == 1 ? 1.0 : rng.next_double();
+      const double ior = i == 2 ? 1.0 : i == 3 ? 3.0 : i == 4 ? 3.5 : i % 3 == 0 ? 1.0 + 0.05 * rng.next_double()
+                                                                               : 1.0 + 2.0 * rng.next_double();
+      for (const bool inside : {false, true}) {
+        const AlbedoSlice g = AlbedoSlice::E_glass(*luts, r, ior, inside);
+        for (int k = 0; k < 50; ++k) {
+          const double mu = k == 0 ? 0.0 : k == 1 ? 1.0 : k == 2 ? 1e-7 : k % 3 == 0 ? std::pow(rng.next_double(), 4)
+                                                                                     : rng.next_double();
+          const double full = luts->E_glass(mu, r, ior, inside);
+          worst = std::max(worst, std::abs(g(mu) - full));
+          EXPECT_NEAR(g(mu), full, 1e-12) << lut_layout_name(luts->layout) << " r " << r << " ior " << ior << " inside "
+                                          << inside << " mu " << mu;
+        }
+      }
+    }
+    std::printf("Glass slices, %s layout: max |slice - full lookup| %.1e\n", lut_layout_name(luts->layout), worst);
+  }
+}
+
+TEST(AlbedoSlice, GlassSliceNeedsGlassTables) {
+  LutSet none = LutSet::builtin();
+  none.renderer.glass_E = WarpedTable{};
+  ASSERT_FALSE(none.has_glass());
+  EXPECT_THROW(AlbedoSlice::E_glass(none, 0.5, 1.5, false), std::runtime_error);
 }

@@ -1,5 +1,8 @@
-// Independent reference values for the LUT tests: deterministic composite Gauss-Legendre
-// quadrature of the defining integrals (no sampling, no code shared with src/dspbr/lut/).
+// Independent reference values for the LUT, glass and fit tests: deterministic composite
+// Gauss-Legendre quadrature of the defining integrals (no sampling, no code shared with
+// src/dspbr/lut/ or src/dspbr/validate/): over the GGX half vector in its slope parametrisation
+// (sharp lobes), and over the light direction by the tests' one light-space rule
+// (light_space_albedo.h) for rough GGX lobes and the sheen.
 #pragma once
 #include <cmath>
 
@@ -9,6 +12,7 @@
 #include "dspbr/ggx.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/sheen.h"
+#include "light_space_albedo.h"
 
 namespace dspbr::lutref {
 
@@ -43,30 +47,19 @@ double ggx_half_vector_integral(double alpha, G&& g, int panels_u, int panels_ph
       panels_u, panels_phi);
 }
 
-// Integral over the light hemisphere of g(l) dl in (mu_l, phi), phi in [0, pi] (even in phi).
-template <class G>
-double hemisphere_integral(G&& g, int panels_mu, int panels_phi) {
-  return integrate_unit_square(
-      [&](double ml, double t) {
-        const double phi = kPi * t, s = std::sqrt(std::max(0.0, 1 - ml * ml));
-        return 2.0 * kPi * g(Vec3{s * std::cos(phi), s * std::sin(phi), ml});
-      },
-      panels_mu, panels_phi);
-}
-
-// Same integral as ggx_albedo_quad in the light domain (mu_l, phi): the integrand M_r F mu_l has
-// no kink inside the hemisphere (v.h > 0 for any l above it), but the lobe is a spike of width
-// ~alpha around the mirror direction, so this form is for rough cells only.
+// Same integral as ggx_albedo_quad in the light domain (mu_l, phi) (light_space_albedo.h: phi
+// over [0, 2 pi] with twice the panels, the nodes of [0, pi] mirrored): the integrand M_r F mu_l
+// has no kink inside the hemisphere (v.h > 0 for any l above it), but the lobe is a spike of
+// width ~alpha around the mirror direction, so this form is for rough cells only.
 inline double ggx_albedo_quad_l(double mu, double r, double f0, int panels_mu = 64, int panels_phi = 64) {
   const double alpha = r * r;
-  const Vec3 v = view_dir(mu);
-  return hemisphere_integral(
-      [&](const Vec3& l) {
+  return test::light_space_albedo(
+      [&](const Vec3& v, const Vec3& l) {
         const Vec3 h = normalize(v + l);
         const double F = f0 + (1 - f0) * std::pow(1 - dot(v, h), 5);
-        return ggx_d(h, alpha, alpha) * ggx_g2(v, l, h, alpha, alpha) / (4 * mu * l.z) * F * l.z;
+        return ggx_d(h, alpha, alpha) * ggx_g2(v, l, h, alpha, alpha) / (4 * mu * l.z) * F;
       },
-      panels_mu, panels_phi);
+      mu, panels_mu, 2 * panels_phi, test::MuGrading::Linear);
 }
 
 // Integral M_r F(v.h) mu_l dl with F = f0 + (1 - f0) (1 - v.h)^5, using
@@ -88,11 +81,11 @@ inline double ggx_albedo_quad(double mu, double r, double f0, int panels_u = 64,
       panels_u, panels_phi);
 }
 
-// Integral M_b mu_l dl for the sheen models in (mu_l, phi), phi in [0, pi] (even in phi).
+// Integral M_b mu_l dl for the sheen models in (mu_l, phi) (light_space_albedo.h: phi over
+// [0, 2 pi] with twice the panels, the nodes of [0, pi] mirrored).
 template <class Brdf>
 double sheen_albedo_quad(double mu, Brdf&& brdf, int panels_mu = 64, int panels_phi = 32) {
-  const Vec3 v = view_dir(mu);
-  return hemisphere_integral([&](const Vec3& l) { return brdf(v, l) * l.z; }, panels_mu, panels_phi);
+  return test::light_space_albedo(brdf, mu, panels_mu, 2 * panels_phi, test::MuGrading::Linear);
 }
 
 }  // namespace dspbr::lutref

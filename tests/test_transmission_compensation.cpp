@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,27 +28,40 @@
 #include "dspbr/quadrature.h"
 #include "dspbr/rng.h"
 #include "dspbr/scene/components.h"
+#include "light_space_albedo.h"
 #include "test_lut_reference.h"
 
 namespace dspbr {
 namespace {
 
-// Integral of g(l) |l.z| over one hemisphere (sign +1 upper, -1 lower) in (mu_l, phi), for v in
-// the xz plane (g even in phi: [0, pi] counted twice). The mu axis is graded towards the horizon.
+// Integral of g(l) |l.z| over one hemisphere (sign +1 upper, -1 lower) in (mu_l, phi), the mu
+// axis graded towards the horizon (light_space_albedo.h; v in the xz plane, phi over [0, 2 pi]
+// with twice the panels: the nodes of [0, pi] mirrored).
 template <class G>
 double hemisphere_albedo(G&& g, double sign, int panels) {
-  static const QuadratureRule rule = gauss_legendre(8);
-  return 2.0 * integrate_gl(
-                   [&](double t) {
-                     const double mu = t * t, s = std::sqrt(std::max(0.0, 1.0 - mu * mu));  // dmu = 2t dt
-                     return 2.0 * t * integrate_gl(
-                                          [&](double phi) {
-                                            const Vec3 l{s * std::cos(phi), s * std::sin(phi), sign * mu};
-                                            return g(l) * mu;
-                                          },
-                                          0.0, kPi, panels, rule);
-                   },
-                   0.0, 1.0, panels, rule);
+  return test::hemisphere_integral([&](const Vec3& l) { return g(l) * std::abs(l.z); }, sign, panels, 2 * panels,
+                                   test::MuGrading::Horizon);
+}
+
+// The integrand of ggx_half_vector_integral (measure D(h) (h.n) dh) for the light-space
+// integrand f(l) |l.z| at the directions of half vector h: f_r at l = reflect(v, h), Jacobian
+// dl/dh = 4 |v.h|, and (refract) f_t at l = refract(v, h), Jacobian (eta_i v.h + eta_o l.h)^2 /
+// (eta_o^2 |l.h|) (Walter et al. 2007 eq. 14 and 17).
+template <class R, class T>
+double half_vector_terms(const Vec3& v, const Vec3& h, double alpha, double eta_i, double eta_o, bool refract, R&& f_r,
+                         T&& f_t) {
+  const double vh = dot(v, h);
+  if (vh <= 0) return 0.0;
+  const double dh = ggx_d(h, alpha, alpha) * h.z;
+  double sum = 0;
+  const Vec3 lr = reflect(v, h);
+  if (lr.z > 0) sum += f_r(lr) * lr.z * 4.0 * vh / dh;
+  Vec3 lt;
+  if (refract && refract_dir(v, h, eta_i / eta_o, lt) && lt.z < 0) {
+    const double lh = dot(lt, h), den = eta_i * vh + eta_o * lh;
+    sum += f_t(lt) * -lt.z * den * den / (eta_o * eta_o * std::abs(lh)) / dh;
+  }
+  return sum;
 }
 
 // E_g from the BSDF's own lobes over the half vector (the slope parametrisation of test_lut_reference.h, graded
@@ -66,18 +81,9 @@ double glass_albedo_half_vector(double mu, double r, double ior, bool inside, in
   return lutref::ggx_half_vector_integral(
       alpha,
       [&](const Vec3& h) {
-        const double vh = dot(v, h);
-        if (vh <= 0) return 0.0;
-        const double dh = ggx_d(h, alpha, alpha) * h.z;
-        double sum = 0;
-        const Vec3 lr = reflect(v, h);
-        if (lr.z > 0) sum += refl.eval(v, lr).r * lr.z * 4.0 * vh / dh;
-        Vec3 lt;
-        if (refract_dir(v, h, eta_i / eta_o, lt) && lt.z < 0) {
-          const double lh = dot(lt, h), den = eta_i * vh + eta_o * lh;
-          sum += trans.eval(v, lt).r * -lt.z * den * den / (eta_o * eta_o * std::abs(lh)) / dh;
-        }
-        return sum;
+        return half_vector_terms(
+            v, h, alpha, eta_i, eta_o, true, [&](const Vec3& l) { return refl.eval(v, l).r; },
+            [&](const Vec3& l) { return trans.eval(v, l).r; });
       },
       panels, panels);
 }
@@ -300,25 +306,14 @@ double compensated_furnace(const MaterialBsdf& on, const MaterialBsdf& off, doub
   auto eval = [&](const MaterialBsdf& b, const Vec3& vl, const Vec3& ll) {
     return inside ? b.eval(-1.0 * vl, -1.0 * ll).r : b.eval(vl, ll).r;
   };
+  // Thin-walled: the lower hemisphere through the mirrored reflection (same Jacobian).
   const double sharp = lutref::ggx_half_vector_integral(
       alpha,
       [&](const Vec3& h) {
-        const double vh = dot(v, h);
-        if (vh <= 0) return 0.0;
-        const double dh = ggx_d(h, alpha, alpha) * h.z;
-        double sum = 0;
-        const Vec3 lr = reflect(v, h);
-        if (lr.z > 0) sum += eval(off, v, lr) * lr.z * 4.0 * vh / dh;
-        if (thin) {
-          if (lr.z > 0) sum += eval(off, v, Vec3{lr.x, lr.y, -lr.z}) * lr.z * 4.0 * vh / dh;
-        } else {
-          Vec3 lt;
-          if (refract_dir(v, h, eta_i / eta_o, lt) && lt.z < 0) {
-            const double lh = dot(lt, h), den = eta_i * vh + eta_o * lh;
-            sum += eval(off, v, lt) * -lt.z * den * den / (eta_o * eta_o * std::abs(lh)) / dh;
-          }
-        }
-        return sum;
+        return half_vector_terms(
+            v, h, alpha, eta_i, eta_o, !thin,
+            [&](const Vec3& l) { return eval(off, v, l) + (thin ? eval(off, v, Vec3{l.x, l.y, -l.z}) : 0.0); },
+            [&](const Vec3& l) { return eval(off, v, l); });
       },
       48, 48);
   auto diff = [&](const Vec3& l) { return eval(on, v, l) - eval(off, v, l); };
@@ -406,6 +401,72 @@ TEST(TransmissionCompensation, SceneTablesAddTheGlassTablesForVolumetricGlassOnl
   EXPECT_FALSE(has(tables_for_components(kVolumetricTransparent, false), "Glass_E"));
   EXPECT_FALSE(has(tables_for_components(kThinTransparent, true), "Glass_E"));
   for (const std::string& n : vol) EXPECT_TRUE(is_lut_table_name(n)) << n;  // dspbr lut --scene can make them
+}
+
+}  // namespace
+}  // namespace dspbr
+
+namespace dspbr {
+namespace {
+
+// Every stored value of a set (both layouts' tables, the glass tables included) set to NaN.
+void poison(LutSet& s) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (Table* t : {&s.ggx_e, &s.ggx_e_avg, &s.base_e, &s.base_e_avg, &s.sheen_e, &s.sheen_ash_e, &s.glass_e,
+                   &s.glass_inv_e, &s.glass_e_avg, &s.glass_inv_e_avg})
+    std::fill(t->values.begin(), t->values.end(), nan);
+  for (const auto* names : {&RendererLuts::names(), &RendererLuts::glass_names()})
+    for (const char* n : *names) std::fill(s.renderer.table(n)->values.begin(), s.renderer.table(n)->values.end(), nan);
+}
+
+// Lobes own what they read (docs/bsdf.md, "Structure"): a BSDF built from a temporary table set
+// (parsed from the built-in text, destroyed before any evaluation), or from a copy that is then
+// overwritten with NaN and destroyed, evaluates, samples and reports pdfs bit for bit as the same
+// BSDF built from the built-in set. Rough glass with the compensation (volumetric and
+// thin-walled), and a plastic with sheen and clearcoat (diffuse base, multiple scattering, sheen).
+TEST(TransmissionCompensation, LobesOwnWhatTheyRead) {
+  BsdfOptions on;
+  on.transmission_compensation = true;
+  Material plastic;
+  plastic.roughness = 0.4;
+  plastic.sheenColor = Rgb(0.5);
+  plastic.sheenRoughness = 0.3;
+  plastic.clearcoat = 0.5;
+  Material tinted = white_glass(0.45, 1.7, false);
+  tinted.albedo = Rgb(0.9, 0.6, 0.3);
+  tinted.specularTint = Rgb(0.8, 1.0, 0.9);
+  const Material materials[] = {white_glass(0.6, 1.5, false), tinted, white_glass(0.7, 1.33, true), plastic};
+  Pcg32 rng(5, 9);
+  auto dir = [&]() {
+    const double z = 2.0 * rng.next_double() - 1.0, phi = 2.0 * kPi * rng.next_double();
+    const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+    return Vec3{s * std::cos(phi), s * std::sin(phi), z};
+  };
+  for (const LutLayout layout : {LutLayout::Renderer, LutLayout::Published})
+    for (const Material& m : materials) {
+      const MaterialBsdf expected(m, LutSet::of_layout(layout), on);
+      const MaterialBsdf from_temporary(m, LutSet::from_text(LutSet::builtin_text(layout), "copy"), on);
+      std::optional<LutSet> copy(LutSet::of_layout(layout));
+      const MaterialBsdf from_poisoned(m, *copy, on);
+      poison(*copy);
+      copy.reset();
+      int nonzero = 0;
+      for (int i = 0; i < 300; ++i) {
+        const Vec3 v = dir(), l = dir(), u{rng.next_double(), rng.next_double(), rng.next_double()};
+        const Rgb f = expected.eval(v, l);
+        nonzero += f.max_component() > 0;
+        for (const MaterialBsdf* b : {&from_temporary, &from_poisoned}) {
+          const Rgb g = b->eval(v, l);
+          EXPECT_TRUE(g.r == f.r && g.g == f.g && g.b == f.b) << lut_layout_name(layout) << " eval " << i;
+          EXPECT_EQ(b->pdf(v, l), expected.pdf(v, l)) << lut_layout_name(layout) << " pdf " << i;
+          const BsdfSample s = b->sample(v, u), t = expected.sample(v, u);
+          EXPECT_TRUE(s.valid == t.valid && s.l.x == t.l.x && s.l.y == t.l.y && s.l.z == t.l.z && s.pdf == t.pdf &&
+                      s.weight.r == t.weight.r && s.weight.g == t.weight.g && s.weight.b == t.weight.b)
+              << lut_layout_name(layout) << " sample " << i;
+        }
+      }
+      EXPECT_GT(nonzero, 100) << lut_layout_name(layout);  // the lobes are evaluated, not skipped
+    }
 }
 
 }  // namespace

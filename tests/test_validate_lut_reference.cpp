@@ -10,32 +10,18 @@
 #include "dspbr/quadrature.h"
 #include "dspbr/sheen.h"
 #include "dspbr/validate/lut_reference.h"
+#include "light_space_albedo.h"
 
 using namespace dspbr;
 using namespace dspbr::validate;
 
 namespace {
 
-// Integral over the upper hemisphere of brdf(v, l) l.z dl in (theta_l, phi_l), v in the xz plane.
+// Integral over the upper hemisphere of brdf(v, l) l.z dl in (theta_l, phi_l), v in the xz plane
+// (light_space_albedo.h: 96 panels in theta, 96 in phi over [0, 2 pi], 8 nodes each).
 template <class F>
 double l_space_albedo(F&& brdf, double mu) {
-  const Vec3 v = view_dir(mu);
-  const QuadratureRule rule = gauss_legendre(8);
-  const int pt = 96, pp = 48;
-  double sum = 0;
-  for (int a = 0; a < pt; ++a)
-    for (size_t i = 0; i < rule.x.size(); ++i) {
-      const double th = (a + 0.5 + 0.5 * rule.x[i]) * (kPi / 2) / pt;
-      const double wt = 0.5 * rule.w[i] * (kPi / 2) / pt;
-      for (int b = 0; b < pp; ++b)
-        for (size_t j = 0; j < rule.x.size(); ++j) {
-          const double ph = (b + 0.5 + 0.5 * rule.x[j]) * kPi / pp;
-          const double wp = 0.5 * rule.w[j] * kPi / pp;
-          const Vec3 l{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
-          sum += 2 * wt * wp * brdf(v, l) * l.z * std::sin(th);
-        }
-    }
-  return sum;
+  return test::light_space_albedo(brdf, mu, 96, 96, test::MuGrading::Polar);
 }
 }  // namespace
 

@@ -48,27 +48,20 @@ void add_transmission_compensation(LobeMixture& out, const LutSet& luts, bool th
   // Share of the missing energy that leaves through the other side: the average transmittance of
   // Schlick's Fresnel, 1 - F_avg (spec eq. fr_avg), on the side of the viewer outside.
   double x_out = 1.0 - fresnel_avg(F0, 1.0), x_in = x_out;
-  TransmissionCompensation::AlbedoFn e_v, e_other;
+  // The lobes own what they read: slices cut here at (r_uv, eta), the averages as numbers.
+  CoreAlbedo e_v{AlbedoSlice::E_m(luts, r_uv), std::nullopt, f_ms}, e_other = e_v;
   double avg_v, avg_other;
   if (thin_walled) {
     // Thin-walled: E = E_m + F_ms (1 - E_m) on both sides (reflection F, transmission 1 - F of
     // the same M_r), so 1 - E = (1 - E_m)(1 - F_ms): no table beyond GGX_E / GGX_E_avg.
-    const LutSet* lp = &luts;  // the caller's set outlives the BSDF (as for the other lobes)
-    e_v = e_other = [lp, r_uv, f_ms](double c) { return 1.0 - (1.0 - f_ms) * (1.0 - lp->E_m(c, r_uv)); };
     avg_v = avg_other = 1.0 - (1.0 - f_ms) * missing_m_avg;
   } else {
     // The glass tables of the set, or the built-in published ones when it has none (a renderer
     // file written without them).
-    const LutSet* gp = luts.has_glass() ? &luts : &LutSet::published();
-    if (!gp->has_glass()) throw std::runtime_error("transmission compensation: no Glass tables (dspbr lut)");
-    const LutSet* lp = &luts;
-    auto side_fn = [gp, lp, r_uv, eta, f_ms](bool in) -> TransmissionCompensation::AlbedoFn {
-      return [gp, lp, r_uv, eta, f_ms, in](double c) {
-        return gp->E_glass(c, r_uv, eta, in) + f_ms * (1.0 - lp->E_m(c, r_uv));
-      };
-    };
-    const double avg_out = gp->E_glass_avg(r_uv, eta, false) + f_ms * missing_m_avg;
-    const double avg_in = gp->E_glass_avg(r_uv, eta, true) + f_ms * missing_m_avg;
+    const LutSet& g = luts.has_glass() ? luts : LutSet::published();
+    if (!g.has_glass()) throw std::runtime_error("transmission compensation: no Glass tables (dspbr lut)");
+    const double avg_out = g.E_glass_avg(r_uv, eta, false) + f_ms * missing_m_avg;
+    const double avg_in = g.E_glass_avg(r_uv, eta, true) + f_ms * missing_m_avg;
     // Reciprocity of the transmission parts, f(v, l) / eta_o^2 = f(l, v) / eta_i^2 (docs/bsdf.md):
     // x_in (1 - E_in,avg) eta^2 = x_out (1 - E_out,avg); x_in <= 1 bounds x_out.
     const double m_out = std::max(1.0 - avg_out, 0.0), m_in = std::max(1.0 - avg_in, 0.0);
@@ -81,8 +74,8 @@ void add_transmission_compensation(LobeMixture& out, const LutSet& luts, bool th
     } else {
       x_out = x_in = 0.0;
     }
-    e_v = side_fn(inside);
-    e_other = side_fn(!inside);
+    e_v.glass = AlbedoSlice::E_glass(g, r_uv, eta, inside);
+    e_other.glass = AlbedoSlice::E_glass(g, r_uv, eta, !inside);
     avg_v = inside ? avg_in : avg_out;
     avg_other = inside ? avg_out : avg_in;
   }
@@ -91,7 +84,8 @@ void add_transmission_compensation(LobeMixture& out, const LutSet& luts, bool th
   if (refl.max_component() > 0)
     out.add(std::make_unique<TransmissionCompensation>(false, refl, e_v, e_v, avg_v), Layer::Core);
   if (trans.max_component() > 0)
-    out.add(std::make_unique<TransmissionCompensation>(true, trans, e_v, e_other, avg_other), Layer::Core);
+    out.add(std::make_unique<TransmissionCompensation>(true, trans, std::move(e_v), std::move(e_other), avg_other),
+            Layer::Core);
 }
 
 // The lobes of one side (spec "Putting It All Together"), without the flake lobe.

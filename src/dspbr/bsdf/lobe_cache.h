@@ -16,7 +16,7 @@ class LobeCache {
   // slice(cos_theta), its E_m part computed once per (E_m identity, cos_theta).
   double albedo(const AlbedoSlice& slice, double cos_theta) {
     const AlbedoSlice::EmKey key = slice.e_m_key();
-    if (!key.table) return slice(cos_theta);
+    if (!key.fingerprint) return slice(cos_theta);
     for (int k = 0; k < n_; ++k)
       if (entries_[size_t(k)].key == key && entries_[size_t(k)].cos_theta == cos_theta)
         return slice.from_e_m_part(cos_theta, entries_[size_t(k)].part);

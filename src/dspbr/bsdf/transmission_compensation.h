@@ -8,30 +8,47 @@
 // transmission), E_l,avg = 2 Integral E_l mu dmu. Its directional albedo is c (1 - E_v(v.n))
 // exactly. Cosine-weighted sampling of l in the lobe's hemisphere.
 #pragma once
-#include <functional>
+#include <optional>
 
 #include "dspbr/bsdf/lobe.h"
+#include "dspbr/lut/albedo_slice.h"
 
 namespace dspbr {
 
+// The albedo of the uncompensated white core (specular 1) on one side, cut from the tables at the
+// material's roughness (and ior) when the lobe is built (docs/bsdf.md):
+//   E(mu) = E_g(mu) + F_ms (1 - E_m(mu)),  E_g = E_m thin-walled (no glass slice), else the glass
+// albedo of that side; F_ms (1 - E_m) is the albedo of the spec's M_r,ms F_ms (closed form).
+struct CoreAlbedo {
+  AlbedoSlice e_m;                  // E_m(mu; r_uv)
+  std::optional<AlbedoSlice> glass;  // E_g(mu; r_uv, ior) of the side (volumetric)
+  double f_ms = 0;                   // F_ms(F_0, 1; E_m,avg)
+  // E(mu), the E_m part through the mixture's per-call memo (bsdf/lobe_cache.h).
+  double operator()(double cos_theta, LobeCache& cache) const;
+};
+
 class TransmissionCompensation : public Lobe {
  public:
-  using AlbedoFn = std::function<double(double cos_theta)>;
+  using Lobe::eval;
+  using Lobe::sampling_weight;
   // transmission: l in the lower hemisphere; c: colour (split fraction times tint); e_l_avg: the
   // cosine average of e_l. The lobe is zero when 1 - e_l_avg < kMinMissingEnergy (multiscatter.h).
-  TransmissionCompensation(bool transmission, const Rgb& c, AlbedoFn e_v, AlbedoFn e_l, double e_l_avg);
+  TransmissionCompensation(bool transmission, const Rgb& c, CoreAlbedo e_v, CoreAlbedo e_l, double e_l_avg);
   Rgb eval(const Vec3& v, const Vec3& l) const override;
+  Rgb eval(const Vec3& v, const Vec3& l, LobeCache& cache) const override;
   double pdf(const Vec3& v, const Vec3& l) const override;
   BsdfSample sample(const Vec3& v, const Vec3& u) const override;
   uint32_t flags() const override;
   double sampling_weight(const Vec3& v) const override;
+  double sampling_weight(const Vec3& v, LobeCache& cache) const override;
 
  private:
-  double missing_v(double c) const;  // 1 - E_v, clamped to [0, 1]
-  double missing_l(double c) const;  // 1 - E_l, clamped to [0, 1]
+  // 1 - E, clamped to [0, 1], on v's side and on l's side.
+  double missing_v(double c, LobeCache& cache) const;
+  double missing_l(double c, LobeCache& cache) const;
   bool transmission_;
   Rgb c_;
-  AlbedoFn e_v_, e_l_;
+  CoreAlbedo e_v_, e_l_;
   double inv_norm_;  // 1 / (pi (1 - E_l,avg)), 0 when nothing is missing
 };
 

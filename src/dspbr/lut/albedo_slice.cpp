@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <stdexcept>
 
 namespace dspbr {
 
@@ -48,15 +50,44 @@ AlbedoSlice::Padded AlbedoSlice::Padded::of(const WarpedTable& t) {
   return s;
 }
 
-double AlbedoSlice::Padded::at_grid(double x) const {
-  // The cell and fraction of WarpedTable::interpolate.
+void AlbedoSlice::Padded::locate(double x, int n, int* i, double* f) {
   const double g = std::clamp(x, 0.0, 1.0) * (n - 1);
-  const int i = std::min(int(g), n - 2);
-  const double f = g - i;
+  *i = std::min(int(g), n - 2);
+  *f = g - *i;
+}
+
+double AlbedoSlice::Padded::cubic(int i, double f) const {
   const double* k = c.data() + 4 * size_t(i);
-  const double s = ((k[0] * f + k[1]) * f + k[2]) * f + k[3];
+  return ((k[0] * f + k[1]) * f + k[2]) * f + k[3];
+}
+
+double AlbedoSlice::Padded::at_grid(double x) const {
+  int i;
+  double f;
+  locate(x, n, &i, &f);
+  const double s = cubic(i, f);
   return encoding == Encoding::LogOneMinus ? 1.0 - std::exp(s) : s;
 }
+
+namespace {
+
+// The E_m part's fingerprint (AlbedoSlice::EmKey): splitmix64 steps over the bits of the values
+// it is computed from; never 0.
+uint64_t mix(uint64_t h, uint64_t v) {
+  h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+  h ^= h >> 30;
+  h *= 0xbf58476d1ce4e5b9ULL;
+  h ^= h >> 27;
+  h *= 0x94d049bb133111ebULL;
+  return h ^ (h >> 31);
+}
+uint64_t bits(double x) {
+  uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+
+}  // namespace
 
 AlbedoSlice AlbedoSlice::E_m(const LutSet& luts, double roughness) {
   AlbedoSlice s;
@@ -69,7 +100,10 @@ AlbedoSlice AlbedoSlice::E_m(const LutSet& luts, double roughness) {
   const WarpedTable& t = luts.renderer.ggx_E;
   s.table_ = Padded::of(t.slice(t.axes[0].warp.to_grid(r)));
   s.alpha_ = r * r;
-  s.em_key_ = {&t, r};
+  uint64_t h = mix(uint64_t(s.table_.n), uint64_t(s.table_.warp.kind));
+  for (double v : {s.table_.warp.p, s.table_.warp.lo, s.alpha_}) h = mix(h, bits(v));
+  for (double v : s.table_.c) h = mix(h, bits(v));
+  s.em_key_ = {h == 0 ? 1 : h, r};
   return s;
 }
 
@@ -103,14 +137,71 @@ AlbedoSlice AlbedoSlice::E_sheen(const LutSet& luts, double alpha_b, bool altern
   return s;
 }
 
+AlbedoSlice AlbedoSlice::E_glass(const LutSet& luts, double roughness, double ior, bool inside) {
+  if (!luts.has_glass()) throw std::runtime_error("albedo slice: the table set has no Glass tables (dspbr lut)");
+  AlbedoSlice s;
+  if (luts.layout == LutLayout::Published) {
+    s.published_ = published_slice(inside ? luts.glass_inv_e : luts.glass_e, {glass_x_of_ior(ior), roughness});
+    return s;
+  }
+  // RendererLuts::E_glass: grid coordinates (ior at mu, r, mu at alpha = r^2).
+  s.kind_ = Kind::RendererGlass;
+  const WarpedTable& t = inside ? luts.renderer.glass_inv_E : luts.renderer.glass_E;
+  const double r = std::clamp(roughness, 0.0, 1.0);
+  const WarpedTable cut = t.slice_middle(t.axes[1].warp.to_grid(r));
+  auto g = std::make_shared<GlassRows>();
+  g->n = cut.axes[0].size;
+  g->warp = cut.axes[0].warp;
+  g->ior = ior;
+  g->encoding = cut.encoding;
+  // The ior grid coordinate at this ior grows monotonically as mu falls (GlassIor warp:
+  // ln(1 + x_F / s) / ln(1 + 1 / s) decreases with s = k mu^2 for x_F in [0, 1]), so the lookups
+  // reach the cells between those at mu = 1 and mu = 0 and their Catmull-Rom neighbours (one
+  // more cell each way for rounding at a cell boundary).
+  int i_lo, i_hi;
+  double f;
+  Padded::locate(g->warp.to_grid(ior, 1.0), g->n, &i_lo, &f);
+  Padded::locate(g->warp.to_grid(ior, 0.0), g->n, &i_hi, &f);
+  g->first = std::clamp(std::min(i_lo, i_hi) - 2, 0, g->n - 2);
+  const int last = std::clamp(std::max(i_lo, i_hi) + 3, 1, g->n - 1);
+  const int n2 = cut.axes[1].size;
+  for (int p = g->first; p <= last; ++p) {
+    WarpedTable row{cut.name, {cut.axes[1]}, {}, {}, Encoding::Value};
+    row.values.assign(cut.values.begin() + ptrdiff_t(p) * n2, cut.values.begin() + ptrdiff_t(p + 1) * n2);
+    g->rows.push_back(Padded::of(row));
+  }
+  s.alpha_ = r * r;
+  s.glass_ = std::move(g);
+  return s;
+}
+
+double AlbedoSlice::glass_at(double cos_theta) const {
+  const GlassRows& g = *glass_;
+  const double mu = std::clamp(cos_theta, 0.0, 1.0);
+  const Padded& row0 = g.rows.front();
+  int i2, i0;
+  double f2, f0, w0[4];
+  Padded::locate(row0.warp.to_grid_fast(mu, alpha_), row0.n, &i2, &f2);
+  // Across the ior samples as WarpedTable::interpolate: cell, weights, linear extension.
+  Padded::locate(g.warp.to_grid(g.ior, mu), g.n, &i0, &f0);
+  catmull_rom_weights(f0, w0);
+  auto row = [&](int p) { return g.rows[size_t(p - g.first)].cubic(i2, f2); };
+  double v = 0;
+  for (int a = 0; a < 4; ++a) {
+    const int p = i0 - 1 + a;
+    v += w0[a] * (p < 0 ? 2.0 * row(0) - row(1) : p >= g.n ? 2.0 * row(g.n - 1) - row(g.n - 2) : row(p));
+  }
+  return g.encoding == Encoding::LogOneMinus ? 1.0 - std::exp(v) : v;
+}
+
 AlbedoSlice::EmPart AlbedoSlice::e_m_part(double cos_theta) const {
-  if (!em_key_.table) return {0, (*this)(cos_theta)};
+  if (!em_key_.fingerprint) return {0, (*this)(cos_theta)};
   const double x = table_.warp.to_grid_fast(std::clamp(cos_theta, 0.0, 1.0), alpha_);
   return {x, table_.at_grid(x)};
 }
 
 double AlbedoSlice::from_e_m_part(double cos_theta, const EmPart& part) const {
-  if (!em_key_.table) return part.e_m;
+  if (!em_key_.fingerprint) return part.e_m;
   if (kind_ == Kind::Renderer) return part.e_m;
   const double mu = std::clamp(cos_theta, 0.0, 1.0);
   const double xb = shared_warp_ ? part.x : beta_.warp.to_grid_fast(mu, alpha_);
@@ -126,6 +217,8 @@ double AlbedoSlice::operator()(double cos_theta) const {
       return table_.at_grid(table_.warp.to_grid_fast(cos_theta, alpha_));
     case Kind::RendererBase:
       return from_e_m_part(cos_theta, e_m_part(cos_theta));
+    case Kind::RendererGlass:
+      return glass_at(cos_theta);
   }
   return 0;
 }

@@ -6,8 +6,14 @@
 // slices keep the Catmull-Rom spline of each cell as its cubic's coefficients (the outside
 // samples extrapolated linearly as in warped_table.h), so that a lookup is one Horner evaluation
 // (equal to the weighted sum of WarpedTable::interpolate to rounding), and evaluate the warp with
-// Warp::to_grid_fast.
+// Warp::to_grid_fast. The renderer glass slices keep, instead of one row, the rows of the ior
+// samples their lookups reach (the ior axis' grid coordinate depends on mu), and interpolate
+// across them per lookup as WarpedTable::interpolate does; these rows are shared, immutable, by
+// the copies of a slice.
 #pragma once
+#include <cstdint>
+#include <memory>
+
 #include "dspbr/lut/lut_set.h"
 
 namespace dspbr {
@@ -21,6 +27,9 @@ class AlbedoSlice {
   static AlbedoSlice E_base(const LutSet& luts, double roughness, double f0);
   // E_b(mu; alpha_b) of the main (Sheen_E) or the alternative (Sheen_ash_E) sheen.
   static AlbedoSlice E_sheen(const LutSet& luts, double alpha_b, bool alternative);
+  // E_g(mu; r, ior) of the rough dielectric interface with v outside (Glass_E) or inside
+  // (Glass_inv_E); throws std::runtime_error when the set has no glass tables (has_glass()).
+  static AlbedoSlice E_glass(const LutSet& luts, double roughness, double ior, bool inside);
 
   double operator()(double cos_theta) const;
 
@@ -31,9 +40,12 @@ class AlbedoSlice {
     double x = 0, e_m = 0;
   };
   struct EmKey {
-    const void* table = nullptr;  // the GGX_E table the slice was cut from (compared, never read)
+    // Fingerprint of what the E_m part is computed from (the slice's GGX_E cubics, warp and
+    // alpha; 0: no E_m part), a value of the slice's own, so that the slice holds nothing of the
+    // set it was cut from.
+    uint64_t fingerprint = 0;
     double roughness = 0;
-    bool operator==(const EmKey& o) const { return table == o.table && roughness == o.roughness; }
+    bool operator==(const EmKey& o) const { return fingerprint == o.fingerprint && roughness == o.roughness; }
   };
   EmKey e_m_key() const { return em_key_; }
   EmPart e_m_part(double cos_theta) const;
@@ -49,13 +61,29 @@ class AlbedoSlice {
     Warp warp;
     Encoding encoding = Encoding::Value;
     static Padded of(const WarpedTable& t);
+    // The cell i and fraction f of grid coordinate x on n samples (those of
+    // WarpedTable::interpolate).
+    static void locate(double x, int n, int* i, double* f);
+    // The cubic of cell i at fraction f, not decoded.
+    double cubic(int i, double f) const;
     // Catmull-Rom at grid coordinate x, decoded (equal to WarpedTable::lookup_grid).
     double at_grid(double x) const;
   };
-  enum class Kind { Published, Renderer, RendererBase };
+  // RendererGlass: the table cut at the roughness (WarpedTable::slice_middle), its rows
+  // first .. first + rows.size() - 1 of the n ior samples, each over cos theta (not decoded).
+  struct GlassRows {
+    std::vector<Padded> rows;
+    int first = 0, n = 0;
+    Warp warp;  // the ior axis' (GlassIor: depends on mu)
+    double ior = 1;
+    Encoding encoding = Encoding::Value;
+  };
+  double glass_at(double cos_theta) const;
+  enum class Kind { Published, Renderer, RendererBase, RendererGlass };
   Kind kind_ = Kind::Published;
   Table published_;  // 1-D over cos theta
   Padded table_;     // 1-D over cos theta: E_m, E_b
+  std::shared_ptr<const GlassRows> glass_;  // RendererGlass
   Padded beta_;      // 1-D over cos theta: GGX_beta (RendererBase)
   double alpha_ = 0;   // GgxCos warp parameter r^2
   EmKey em_key_;      // E_m and E_base of the renderer layout

@@ -191,6 +191,30 @@ WarpedTable WarpedTable::slice(double x0) const {
   return s;
 }
 
+WarpedTable WarpedTable::slice_middle(double x1) const {
+  if (axes.size() != 3) throw std::invalid_argument("WarpedTable::slice_middle: needs a 3-D table (" + name + ")");
+  WarpedTable s;
+  s.name = name;
+  s.axes = {axes[0], axes[2]};
+  s.encoding = encoding;
+  const int n0 = axes[0].size, n1 = axes[1].size, n2 = axes[2].size;
+  int i1;
+  double f1, w1[4];
+  locate(x1, n1, &i1, &f1);
+  catmull_rom_weights(f1, w1);
+  // The interpolant is linear in the samples, so the middle axis can be interpolated first: at
+  // each (slow, fast) sample, the Catmull-Rom sum over the middle axis (extended as in interpolate).
+  s.values.reserve(size_t(n0) * size_t(n2));
+  for (int p = 0; p < n0; ++p)
+    for (int k = 0; k < n2; ++k) {
+      auto at = [&](int r) { return values[(size_t(p) * size_t(n1) + size_t(r)) * size_t(n2) + size_t(k)]; };
+      double v = 0;
+      for (int b = 0; b < 4; ++b) v += w1[b] * extended(at, i1 - 1 + b, n1);
+      s.values.push_back(v);
+    }
+  return s;
+}
+
 double WarpedTable::lookup_grid(double x0, double x1, double x2) const {
   const double s = interpolate(x0, x1, x2);
   return encoding == Encoding::LogOneMinus ? 1.0 - std::exp(s) : s;

@@ -75,6 +75,10 @@ struct WarpedTable {
   // lookups equal lookup_grid(x0, x1) to rounding (the slow axis is interpolated first). Errors
   // are not carried over.
   WarpedTable slice(double x0) const;
+  // A 3-D table at fixed middle-axis grid coordinate x1, as the 2-D table over its slow and fast
+  // axes whose lookups equal lookup_grid(x0, x1, x2) to rounding (the middle axis is interpolated
+  // first, at each (slow, fast) sample). Errors are not carried over.
+  WarpedTable slice_middle(double x1) const;
 };
 
 // Catmull-Rom weights of the four samples around fractional position f in [0, 1].
