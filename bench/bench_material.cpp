@@ -3,9 +3,10 @@
 // film and the full material (every component on), against a bare isotropic GGX reflection eval
 // (D, height-correlated G2, Schlick F) in the same run. BM_Eval/<material> and
 // BM_Sample/<material> use the component mask derived from the material (active_components);
-// .../all_components evaluates every layer even at zero weight. BM_(Eval|Sample)/rough_glass_compensated:
-// the glass at roughness 0.5 with the transmission-compensation option (the glass subtype is smooth).
-//   dspbr_bench --benchmark_filter='BM_(Eval|Sample)/'
+// .../all_components evaluates every layer even at zero weight; BM_Construct/<material> builds
+// the BSDF. BM_(Eval|Sample)/rough_glass_compensated: the glass at roughness 0.5 with the
+// transmission-compensation option (the glass subtype is smooth).
+//   dspbr_bench --benchmark_filter='BM_(Eval|Sample|Construct)/'
 // Figures: docs/bsdf.md ("Speed"), docs/params.md ("Cost of inactive components").
 #include <benchmark/benchmark.h>
 
@@ -135,6 +136,18 @@ void sample(benchmark::State& state, int index, bool masked) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// Construction of the BSDF (lobe assembly: table slices, and the thin film's per-material tables
+// of R, bsdf/thin_film_table.h).
+void construct(benchmark::State& state, int index) {
+  const Material m = material(index);
+  const uint32_t mask = active_components(m);
+  for (auto _ : state) {
+    MaterialBsdf bsdf(m, LutSet::builtin(), BsdfOptions{}, mask);
+    benchmark::DoNotOptimize(bsdf);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 // The yardstick: f = D G2 F / (4 |v.n| |l.n|) of one isotropic GGX lobe with Schlick's F, the
 // plastic's roughness, on the same directions.
 void bare_ggx(benchmark::State& state) {
@@ -157,6 +170,7 @@ void bare_ggx(benchmark::State& state) {
     const std::string name = kNames[m];
     benchmark::RegisterBenchmark(("BM_Eval/" + name).c_str(), eval, m, true);
     benchmark::RegisterBenchmark(("BM_Sample/" + name).c_str(), sample, m, true);
+    benchmark::RegisterBenchmark(("BM_Construct/" + name).c_str(), construct, m);
   }
   benchmark::RegisterBenchmark("BM_Eval/rough_glass_compensated", eval, kRoughGlassCompensated, true);
   benchmark::RegisterBenchmark("BM_Sample/rough_glass_compensated", sample, kRoughGlassCompensated, true);

@@ -7,10 +7,12 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
 #include "dspbr/bsdf/thin_film.h"
+#include "dspbr/bsdf/thin_film_table.h"
 #include "dspbr/constants.h"
 
 using namespace dspbr;
@@ -242,30 +244,111 @@ TEST(ThinFilm, GamutClampingIsRare) {
 // whole legal range and beyond: thickness 0-2 um, film IOR 1-2.5, dielectric bases (also seen from
 // the dense side) and metal bases through eta_rho, all angles. Both XYZ and the clamped linear sRGB
 // the BSDF uses, within 1e-3 per channel (the maximum is printed; docs/components.md).
+// The per-material table the BSDF reads (thin_film_table.h) is held to the same tolerance on the
+// same cases.
 TEST(ThinFilm, FourierMatchesQuadrature) {
   std::vector<double> bases = {1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 0.6667, 0.9};
   for (double rho : {0.3, 0.6, 0.9, 0.98}) bases.push_back(thin_film_metal_eta(Rgb(rho)));
-  double max_xyz = 0, max_rgb = 0;
+  double max_xyz = 0, max_rgb = 0, max_table = 0;
   int n = 0;
   for (double eb : bases)
     for (int di = 0; di <= 40; ++di)
-      for (double ef : {1.0, 1.05, 1.3, 1.5, 1.8, 2.2, 2.5})
+      for (double ef : {1.0, 1.05, 1.3, 1.5, 1.8, 2.2, 2.5}) {
+        const double d = di == 0 ? 1e-4 : 0.05 * di;
+        const ThinFilmTable table(eb, d, ef);
         for (double mu : {1.0, 0.95, 0.8, 0.6, 0.4, 0.25, 0.1, 0.03, 0.01, 1e-3, 1e-5, 0.0}) {
           // Near grazing incidence the reference needs its finest rules (sharp Airy resonances):
           // a coarser grid there keeps the test short.
           if (mu <= 0.01 && mu > 0 && (di % 5 != 0 || ef == 1.3 || ef == 1.8 || ef == 2.2)) continue;
-          const double d = di == 0 ? 1e-4 : 0.05 * di;
           const Rgb a = thin_film_reflectance_xyz(mu, eb, d, ef, ThinFilmIntegration::Fourier);
           const Rgb b = thin_film_reflectance_xyz(mu, eb, d, ef, ThinFilmIntegration::Quadrature);
           const Rgb ra = thin_film_reflectance(mu, eb, d, ef, ThinFilmIntegration::Fourier);
           const Rgb rb = thin_film_reflectance(mu, eb, d, ef, ThinFilmIntegration::Quadrature);
+          const Rgb rt = table(mu);
           for (int k = 0; k < 3; ++k) {
             max_xyz = std::max(max_xyz, std::abs(a[k] - b[k]));
             max_rgb = std::max(max_rgb, std::abs(ra[k] - rb[k]));
+            max_table = std::max(max_table, std::abs(rt[k] - rb[k]));
             ASSERT_NEAR(ra[k], rb[k], 1e-3) << eb << " " << d << " " << ef << " " << mu;
+            ASSERT_NEAR(rt[k], rb[k], 1e-3) << "table " << eb << " " << d << " " << ef << " " << mu;
           }
           ++n;
         }
-  std::printf("thin film Fourier vs quadrature over %d cases: max |dXYZ| %.2e, max |dRGB| %.2e\n", n, max_xyz, max_rgb);
+      }
+  std::printf("thin film Fourier vs quadrature over %d cases: max |dXYZ| %.2e, max |dRGB| %.2e; table: max |dRGB| %.2e\n",
+              n, max_xyz, max_rgb, max_table);
   EXPECT_LT(max_xyz, 1e-3);
+}
+
+// The same comparison on a dense cosine grid (steps of 5e-4) for thick films over dielectric and
+// metal bases: the series runs up to the end of the tabulated sensitivity there, and a scan this
+// fine sees a failure confined to a narrow window of angles (one term's argument m P just below
+// the table's end), which the coarse grid above can step over; and the per-material table between
+// its nodes.
+TEST(ThinFilm, FourierAndTableMatchQuadratureOnDenseCosines) {
+  struct Film {
+    double eta_base, thickness_um, eta_film;
+  };
+  const Film films[] = {{thin_film_metal_eta(Rgb(0.9)), 2.0, 1.3}, {thin_film_metal_eta(Rgb(0.6)), 1.0, 1.5},
+                        {1.5, 2.0, 2.5}, {thin_film_metal_eta(Rgb(0.98)), 1.0, 1.8}};
+  double max_rgb = 0, max_table = 0;
+  for (const Film& f : films) {
+    const ThinFilmTable table(f.eta_base, f.thickness_um, f.eta_film);
+    for (int k = 40; k <= 2000; ++k) {
+      const double mu = k / 2000.0;
+      const Rgb a = thin_film_reflectance(mu, f.eta_base, f.thickness_um, f.eta_film, ThinFilmIntegration::Fourier);
+      const Rgb b = thin_film_reflectance(mu, f.eta_base, f.thickness_um, f.eta_film, ThinFilmIntegration::Quadrature);
+      const Rgb t = table(mu);
+      for (int c = 0; c < 3; ++c) {
+        max_rgb = std::max(max_rgb, std::abs(a[c] - b[c]));
+        max_table = std::max(max_table, std::abs(t[c] - b[c]));
+        ASSERT_NEAR(a[c], b[c], 1e-3) << f.eta_base << " " << f.thickness_um << " " << f.eta_film << " " << mu;
+        ASSERT_NEAR(t[c], b[c], 1e-3) << "table " << f.eta_base << " " << f.thickness_um << " " << f.eta_film << " " << mu;
+      }
+    }
+  }
+  std::printf("thin film vs quadrature, dense cosines: Fourier max |dRGB| %.2e, table %.2e\n", max_rgb, max_table);
+}
+
+// The table between its nodes against the Fourier evaluation it interpolates, over the legal range
+// and beyond (thickness 0.01-2 um, film IOR 1.01-2.5, dielectric bases 1-3, metal bases up to
+// max(rho) = 0.999), at 4 points inside every cell: within a few times the midpoint tolerance
+// it is built to (the grazing cell and the cells that miss it evaluate R directly: equal).
+TEST(ThinFilm, TableMatchesFourierInsideCells) {
+  std::vector<double> bases = {1.0, 1.2, 1.5, 2.0, 2.5, 3.0};
+  for (double rho : {0.3, 0.6, 0.9, 0.98, 0.995, 0.999}) bases.push_back(thin_film_metal_eta(Rgb(rho)));
+  double max_err = 0;
+  int films = 0, direct = 0, cells = 0;
+  for (double eb : bases)
+    for (int di = 0; di <= 20; ++di)
+      for (double ef : {1.01, 1.05, 1.3, 1.5, 1.8, 2.2, 2.5}) {
+        const double d = di == 0 ? 0.01 : 0.1 * di;
+        const ThinFilmTable table(eb, d, ef);
+        const int n = table.cells();
+        ASSERT_GE(n, 16);
+        ++films, cells += n, direct += table.direct_cells();
+        for (int i = 0; i < n; ++i)
+          for (double f : {0.13, 0.37, 0.61, 0.89}) {
+            // Cell i covers t in [i, i + 1] / n, cos theta = 2 t^2 / (1 + t) (thin_film_table.h).
+            const double t = (i + f) / n, mu = 2 * t * t / (1 + t);
+            const Rgb a = table(mu), b = thin_film_reflectance(mu, eb, d, ef, ThinFilmIntegration::Fourier);
+            for (int k = 0; k < 3; ++k) {
+              max_err = std::max(max_err, std::abs(a[k] - b[k]));
+              ASSERT_NEAR(a[k], b[k], 3 * kThinFilmTableTolerance) << eb << " " << d << " " << ef << " " << mu;
+            }
+          }
+      }
+  std::printf("thin film table vs Fourier inside cells: %d films, %.1f cells each on average, %d direct cells, "
+              "max |dRGB| %.2e\n", films, double(cells) / films, direct, max_err);
+}
+
+// Films that vanish optically or lie on a perfect mirror have no table: exactly the closed forms.
+TEST(ThinFilm, TableOfAVanishingFilmIsExact) {
+  for (double mu : {0.0, 0.3, 1.0}) {
+    EXPECT_EQ(ThinFilmTable(1.5, 0.0, 1.3)(mu).g, fresnel_dielectric_exact(mu, 1.5));
+    EXPECT_EQ(ThinFilmTable(1.5, 0.4, 1.0)(mu).r, fresnel_dielectric_exact(mu, 1.5));
+    EXPECT_EQ(ThinFilmTable(std::numeric_limits<double>::infinity(), 0.4, 1.3)(mu).b, 1.0);
+  }
+  EXPECT_EQ(ThinFilmTable(1.5, 0.0, 1.3).cells(), 0);
+  EXPECT_THROW(ThinFilmTable(1.5, -1.0, 1.3), std::invalid_argument);
 }

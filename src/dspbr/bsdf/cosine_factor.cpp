@@ -7,7 +7,19 @@
 
 namespace dspbr {
 
+FilmLayer FilmLayer::tabulated(double thickness_um, double eta_film, std::initializer_list<double> eta_bases) {
+  FilmLayer f{thickness_um, eta_film, {}};
+  std::size_t k = 0;
+  for (double eta : eta_bases) {
+    if (k == f.tables.size() || std::isinf(eta) || (k > 0 && f.tables[0]->eta_base() == eta)) continue;
+    f.tables[k++] = std::make_shared<const ThinFilmTable>(eta, thickness_um, eta_film);
+  }
+  return f;
+}
+
 Rgb FilmLayer::reflectance(double cos_theta, double eta_base) const {
+  for (const auto& t : tables)
+    if (t && t->eta_base() == eta_base) return (*t)(cos_theta);
   return thin_film_reflectance(cos_theta, eta_base, thickness_um, eta_film);
 }
 

@@ -4,10 +4,14 @@
 // tests and experiments). Evaluating one is a switch, not a call through std::function, and each
 // thin-film reflectance R it needs is computed once per cosine.
 #pragma once
+#include <array>
 #include <functional>
+#include <initializer_list>
+#include <memory>
 #include <type_traits>
 #include <utility>
 
+#include "dspbr/bsdf/thin_film_table.h"
 #include "dspbr/vec3.h"
 
 namespace dspbr {
@@ -18,7 +22,14 @@ using CosineFn = std::function<Rgb(double cos_theta)>;
 // The thin film over the core (spec "Thin Film"): air | film (eta_film, thickness) | base.
 struct FilmLayer {
   double thickness_um = 0, eta_film = 1;
-  // R(cos theta, eta_base, d_i, eta_i) (bsdf/thin_film.h, Fourier evaluation).
+  // R over cos theta for the bases the lobes read (the base IOR and the metal's eta_rho), built
+  // once by the lobe assembly and shared by the lobes (bsdf/thin_film_table.h).
+  std::array<std::shared_ptr<const ThinFilmTable>, 2> tables;
+
+  // The film with tables for the given bases (an infinite or repeated base gets none).
+  static FilmLayer tabulated(double thickness_um, double eta_film, std::initializer_list<double> eta_bases);
+  // R(cos theta, eta_base, d_i, eta_i): the table of that base, else the Fourier evaluation
+  // (bsdf/thin_film.h).
   Rgb reflectance(double cos_theta, double eta_base) const;
 };
 

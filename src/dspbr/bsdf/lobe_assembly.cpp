@@ -34,6 +34,7 @@ struct SideInputs {
   bool flake_opaque;
   bool compensate_transmission;
   const std::optional<SheenLobe>& sheen;
+  const FilmLayer& film;  // with the tables of R when the film is on
   const AssembledLobes& a;
 };
 
@@ -129,7 +130,7 @@ LobeMixture assemble_side(const Material& m, const LutSet& luts, const SideInput
   core.eta = eta, core.eta_i = eta_i, core.eta_o = eta_o;
   // Thin-film reflectance R(cos theta, eta_base, d_i, eta_i) with air above the film; a metal base
   // enters through its equivalent IOR.
-  core.film = {m.thinFilmThickness, m.thinFilmIor};
+  core.film = in.film;
   core.eta_rho = thin_film_metal_eta(rho);
   const Rgb rho_d = (rho * (1 - l) + rho_l * l) * w_opaque;
 
@@ -209,7 +210,15 @@ AssembledLobes assemble_lobes(const Material& m, const LutSet& luts, const BsdfO
   if ((mask & kSheen) && m.sheenColor.max_component() > 0 && !flake_opaque)
     sheen.emplace(m.sheenColor, m.sheenRoughness, opt.sheen_model, luts);
   if ((mask & kEmission) && m.emissionValue > 0) a.rho_e = emission_rho_e(m, opt.object_area_m2);
-  const SideInputs in{mask, a.eta, flake_opaque, opt.transmission_compensation, sheen, a};
+  // The film's R tabulated once for both sides, over the bases the core reads: the base IOR
+  // (dielectric parts) and the metal's equivalent IOR (bsdf/thin_film_table.h).
+  FilmLayer film{m.thinFilmThickness, m.thinFilmIor, {}};
+  if ((mask & kThinFilm) && m.thinFilm > 0) {
+    if (m.metallic <= 0) film = FilmLayer::tabulated(m.thinFilmThickness, m.thinFilmIor, {a.eta});
+    else if (m.metallic >= 1) film = FilmLayer::tabulated(m.thinFilmThickness, m.thinFilmIor, {thin_film_metal_eta(m.albedo)});
+    else film = FilmLayer::tabulated(m.thinFilmThickness, m.thinFilmIor, {a.eta, thin_film_metal_eta(m.albedo)});
+  }
+  const SideInputs in{mask, a.eta, flake_opaque, opt.transmission_compensation, sheen, film, a};
   for (int side = 0; side < 2; ++side) {
     a.sides[size_t(side)] = assemble_side(m, luts, in, side == 1);
     // The flake lobe needs the flake normal (same on both sides).

@@ -53,7 +53,7 @@ Rgb thin_film_xyz_to_linear_srgb(const Rgb& xyz);
 // R(cos theta, eta_base, d_i, eta_i) of the spec as linear sRGB, each channel clamped to [0, 1]
 // (interference colours can lie outside the sRGB gamut). Exactly fresnel_dielectric_exact in all
 // three channels when thickness_um == 0 or eta_film == 1 (the film vanishes optically).
-// The BSDF uses the Fourier evaluation.
+// The BSDF reads R from per-material tables of the Fourier evaluation (thin_film_table.h).
 Rgb thin_film_reflectance(double cos_theta, double eta_base, double thickness_um, double eta_film,
                           ThinFilmIntegration how = ThinFilmIntegration::Fourier);
 

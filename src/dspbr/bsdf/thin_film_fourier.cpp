@@ -63,7 +63,9 @@ const Sensitivity& sensitivity() {
       rot_im[i] = std::sin(kSensitivityStep / rule.lambda[i]);
     }
     int last_significant = 0;
-    const int n_samples = int(kSensitivityMaxX / kSensitivityStep) + 1;
+    // Samples up to kSensitivityMaxX, and 3 beyond: the Catmull-Rom support of a lookup just
+    // below x_end reaches 2 samples past the last significant one (and the trim keeps 3).
+    const int n_table = int(kSensitivityMaxX / kSensitivityStep) + 1, n_samples = n_table + 3;
     for (int k = 0; k < n_samples; ++k) {
       double sr[3] = {0, 0, 0}, si[3] = {0, 0, 0};
       for (std::size_t i = 0; i < n_nodes; ++i) {
@@ -83,7 +85,7 @@ const Sensitivity& sensitivity() {
         t.env[c][1].push_back(sr[c] * di + si[c] * dr);
         mag = std::max(mag, std::hypot(sr[c], si[c]));
       }
-      if (mag >= kSensitivityFloor) last_significant = k;
+      if (k < n_table && mag >= kSensitivityFloor) last_significant = k;
     }
     // Trimmed after the last significant sample, with margin for the Catmull-Rom support.
     for (int c = 0; c < 3; ++c)
