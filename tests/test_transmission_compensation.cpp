@@ -68,7 +68,7 @@ double glass_albedo_half_vector(double mu, double r, double ior, bool inside, in
       [&](const Vec3& h) {
         const double vh = dot(v, h);
         if (vh <= 0) return 0.0;
-        const double dh = ggx_d(h, alpha, alpha) * h.z;
+        const double dh = GgxDistribution(alpha, alpha).D(h) * h.z;
         double sum = 0;
         const Vec3 lr = reflect(v, h);
         if (lr.z > 0) sum += refl.eval(v, lr).r * lr.z * 4.0 * vh / dh;
@@ -305,7 +305,7 @@ double compensated_furnace(const MaterialBsdf& on, const MaterialBsdf& off, doub
       [&](const Vec3& h) {
         const double vh = dot(v, h);
         if (vh <= 0) return 0.0;
-        const double dh = ggx_d(h, alpha, alpha) * h.z;
+        const double dh = GgxDistribution(alpha, alpha).D(h) * h.z;
         double sum = 0;
         const Vec3 lr = reflect(v, h);
         if (lr.z > 0) sum += eval(off, v, lr) * lr.z * 4.0 * vh / dh;

@@ -76,7 +76,7 @@ TEST(ValidateFurnace, GgxAlbedoMatchesQuadrature) {
           const double ph = (b + 0.5 + 0.5 * rule.x[j]) * 2 * kPi / pp;
           const double wp = 0.5 * rule.w[j] * 2 * kPi / pp;
           const Vec3 l{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
-          ref += wt * wp * ggx_microfacet_brdf(v, l, alpha, alpha) * l.z * std::sin(th);
+          ref += wt * wp * GgxDistribution(alpha, alpha).M_r(v, l) * l.z * std::sin(th);
         }
     }
   const Furnace f = furnace(GgxReflectionLobe(alpha), v);
