@@ -64,7 +64,7 @@ namespace {
 double probability_reflected_below(const Vec3& v, double au, double av) {
   return integrate_sphere([&](const Vec3& h) {
     if (h.z <= 0) return 0.0;
-    return reflect(v, h).z <= 0 ? ggx_vndf_pdf(v, h, au, av) : 0.0;
+    return reflect(v, h).z <= 0 ? GgxDistribution(au, av).PDF(v, h) : 0.0;
   }, 96, 256);
 }
 }  // namespace
@@ -111,7 +111,7 @@ TEST(BsdfLobes, ThinTransmissionIsTheMirroredReflection) {
   const ThinTransmission lobe(au, av, constant(0.7));
   const Vec3 v = dir_from_angles(35, 20), l = dir_from_angles(150, 250);
   const Vec3 lp{l.x, l.y, -l.z};
-  EXPECT_NEAR(lobe.eval(v, l).r, 0.7 * ggx_microfacet_brdf(v, lp, au, av), 1e-14);
+  EXPECT_NEAR(lobe.eval(v, l).r, 0.7 * GgxDistribution(au, av).M_r(v, lp), 1e-14);
   EXPECT_EQ(lobe.eval(v, lp).r, 0.0);  // nothing in the upper hemisphere
   EXPECT_NEAR(integrate_sphere([&](const Vec3& w) { return lobe.pdf(v, w); }, 64, 128),
               1.0 - probability_reflected_below(v, au, av), 2e-4);
@@ -254,7 +254,7 @@ TEST(BsdfLobes, VolumetricTransmissionFromInsideLosesExactlyTheTotallyReflectedF
   const double p_tir = integrate_sphere([&](const Vec3& h) {
     if (h.z <= 0) return 0.0;
     const double c = dot(v, h);
-    return eta * eta * (1 - c * c) >= 1 ? ggx_vndf_pdf(v, h, a, a) : 0.0;
+    return eta * eta * (1 - c * c) >= 1 ? GgxDistribution(a, a).PDF(v, h) : 0.0;
   }, 96, 128);
   EXPECT_GT(p_tir, 0.01);
   EXPECT_NEAR(integrate_sphere([&](const Vec3& w) { return lobe.pdf(v, w); }, 96, 128), 1.0 - p_tir, 2e-3);

@@ -170,7 +170,7 @@ TEST(BsdfMaterial, ClearcoatLayering) {
   const auto fc = [](double c) { return 0.04 + 0.96 * std::pow(1 - c, 5); };
   const Vec3 h = normalize(v + l);
   const double a = 0.4 * 0.4;
-  const double coat = ggx_microfacet_brdf(v, l, a, a) * 0.6 * fc(dot(h, v));
+  const double coat = GgxDistribution(a, a).M_r(v, l) * 0.6 * fc(dot(h, v));
   const double scale = 1 - 0.6 * std::max(fc(v.z), fc(l.z));
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(b.eval(v, l)[c], core.eval(v, l)[c] * scale + coat, 1e-14);
 }
@@ -189,7 +189,7 @@ TEST(BsdfMaterial, ThinFilmOfZeroThicknessIsTheExactFresnelBase) {
   const Vec3 v = dir_from_angles(35, 0), l = dir_from_angles(55, 140);
   const double a = 0.45 * 0.45, f0 = f0_from_ior(1, 1.6);
   const Vec3 h = normalize(v + l);
-  const double mr = ggx_microfacet_brdf(v, l, a, a) * fresnel_dielectric_exact(dot(v, h), 1.6);
+  const double mr = GgxDistribution(a, a).M_r(v, l) * fresnel_dielectric_exact(dot(v, h), 1.6);
   const double fms = fresnel_ms(f0, 1.0, luts.E_m_avg(0.45));
   const double ms = (1 - luts.E_m(v.z, 0.45)) * (1 - luts.E_m(l.z, 0.45)) / (M_PI * (1 - luts.E_m_avg(0.45))) * fms;
   const double rmax = std::max(fresnel_dielectric_exact(v.z, 1.6), fresnel_dielectric_exact(l.z, 1.6));
@@ -217,7 +217,7 @@ TEST(BsdfMaterial, ThinWalledSoapBubbleReflects) {
   const Rgb R_fourier = thin_film_reflectance(v.z, 1.5, m.thinFilmThickness, m.thinFilmIor);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(R[c], R_fourier[c], 3 * kThinFilmTableTolerance);
   EXPECT_GT(R.max_component(), 0.01);
-  const double mr = ggx_microfacet_brdf(v, l, a, a);
+  const double mr = GgxDistribution(a, a).M_r(v, l);
   const LutSet& luts = bsdf_luts();
   const double ms = (1 - luts.E_m(v.z, 0.3)) * (1 - luts.E_m(l.z, 0.3)) / (M_PI * (1 - luts.E_m_avg(0.3))) *
                     fresnel_ms(0.04, 1.0, luts.E_m_avg(0.3));

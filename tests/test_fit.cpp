@@ -358,7 +358,7 @@ double flake_cap_mean(const Vec3& v, const Vec3& l, double r_f, int n = 120) {
       const Vec3 m = normalize(v + r);
       const double vn = dot(v, m);
       if (vn <= 0 || m.z <= 0) continue;
-      sum += std::sin(psi) * (psi_max / n) * (2 * kPi / n) * ggx_d(m, a, a) * m.z / (4 * vn);
+      sum += std::sin(psi) * (psi_max / n) * (2 * kPi / n) * GgxDistribution(a, a).D(m) * m.z / (4 * vn);
     }
   return sum / (2 * kPi * (1 - cc));
 }

@@ -1,5 +1,5 @@
 // Flakes against independent numbers: closed forms of the cone, quadrature of the GGX density
-// (ggx_d), a brute-force Voronoi search, binomial bounds on the coverage, hand-computed mappings.
+// (GgxDistribution::D), a brute-force Voronoi search, binomial bounds on the coverage, hand-computed mappings.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,7 +25,7 @@ double ggx_projected_cdf_above(double mu, double alpha) {
   return integrate_gl([&](double t) {
     const double c = 1.0 - t * t;
     const Vec3 h{std::sqrt(std::max(0.0, 1 - c * c)), 0, c};
-    return 2 * kPi * ggx_d(h, alpha, alpha) * c * 2 * t;
+    return 2 * kPi * GgxDistribution(alpha, alpha).D(h) * c * 2 * t;
   }, 0.0, tmax, 16, r);
 }
 

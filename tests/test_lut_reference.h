@@ -57,7 +57,7 @@ inline double ggx_albedo_quad_l(double mu, double r, double f0, int panels_mu = 
       [&](const Vec3& v, const Vec3& l) {
         const Vec3 h = normalize(v + l);
         const double F = f0 + (1 - f0) * std::pow(1 - dot(v, h), 5);
-        return ggx_d(h, alpha, alpha) * ggx_g2(v, l, h, alpha, alpha) / (4 * mu * l.z) * F;
+        return GgxDistribution(alpha, alpha).M_r(v, l, h) * F;
       },
       mu, panels_mu, 2 * panels_phi, test::MuGrading::Linear);
 }
@@ -74,7 +74,8 @@ inline double ggx_albedo_quad(double mu, double r, double f0, int panels_u = 64,
         if (vh <= 0) return 0.0;
         const Vec3 l = 2 * vh * h - v;
         if (l.z <= 0) return 0.0;
-        const double G2 = 1.0 / (1.0 + smith_lambda(v, alpha, alpha) + smith_lambda(l, alpha, alpha));
+        const GgxDistribution ggx(alpha, alpha);
+        const double G2 = 1.0 / (1.0 + ggx.Lambda(v) + ggx.Lambda(l));
         const double F = f0 + (1 - f0) * std::pow(1 - vh, 5);
         return G2 * F * vh / (mu * h.z);
       },

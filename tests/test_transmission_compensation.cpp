@@ -52,7 +52,7 @@ double half_vector_terms(const Vec3& v, const Vec3& h, double alpha, double eta_
                          T&& f_t) {
   const double vh = dot(v, h);
   if (vh <= 0) return 0.0;
-  const double dh = ggx_d(h, alpha, alpha) * h.z;
+  const double dh = GgxDistribution(alpha, alpha).D(h) * h.z;
   double sum = 0;
   const Vec3 lr = reflect(v, h);
   if (lr.z > 0) sum += f_r(lr) * lr.z * 4.0 * vh / dh;

@@ -44,16 +44,16 @@ class LambertLobe : public Bsdf {
 class GgxReflectionLobe : public Bsdf {
  public:
   explicit GgxReflectionLobe(double alpha) : a_(alpha) {}
-  Rgb eval(const Vec3& v, const Vec3& l) const override { return Rgb(ggx_microfacet_brdf(v, l, a_, a_)); }
+  Rgb eval(const Vec3& v, const Vec3& l) const override { return Rgb(GgxDistribution(a_, a_).M_r(v, l)); }
   double pdf(const Vec3& v, const Vec3& l) const override {
     if (v.z <= 0 || l.z <= 0) return 0.0;
     const Vec3 h = normalize(v + l);
-    return ggx_vndf_pdf(v, h, a_, a_) / (4.0 * dot(v, h));
+    return GgxDistribution(a_, a_).PDF(v, h) / (4.0 * dot(v, h));
   }
   BsdfSample sample(const Vec3& v, const Vec3& u) const override {
     BsdfSample s;
     if (v.z <= 0) return s;
-    const Vec3 h = ggx_sample_vndf(v, a_, a_, u.y, u.z);
+    const Vec3 h = GgxDistribution(a_, a_).Sample_wm(v, u.y, u.z);
     s.l = reflect(v, h);
     if (s.l.z <= 0) return s;  // reflected below the horizon: the lobe's energy loss
     s.pdf = pdf(v, s.l);
@@ -221,7 +221,7 @@ class UnguardedGgx : public GgxReflectionLobe {
   Rgb eval(const Vec3& v, const Vec3& l) const override {
     if (v.z < 0 || l.z < 0) return Rgb(0.0);
     const Vec3 h = normalize(v + l);
-    return Rgb(ggx_d(h, a_, a_) * ggx_g2(v, l, h, a_, a_) / (4.0 * v.z * l.z));
+    return Rgb(GgxDistribution(a_, a_).M_r(v, l, h));  // D G2 / (4 v.z l.z), unguarded
   }
 };
 

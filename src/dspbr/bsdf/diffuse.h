@@ -24,7 +24,7 @@ struct DiffuseParams {
   double film_eta_base = 1.5;  // the base IOR under the film: R(cos) = film.reflectance(cos, film_eta_base)
 };
 
-class DiffuseBase : public Lobe {
+class DiffuseBase final : public Lobe {
  public:
   DiffuseBase(const DiffuseParams& p, const LutSet& luts);
   Rgb eval(const Vec3& v, const Vec3& l) const override;

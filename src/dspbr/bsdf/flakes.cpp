@@ -76,7 +76,7 @@ Vec3 flake_normal_sample(double alpha_ggx, double u1, double u2) {
 
 double flake_normal_pdf(const Vec3& h, double alpha_ggx) {
   if (!(alpha_ggx > 0)) return 0.0;  // Dirac at +z
-  return ggx_d(h, alpha_ggx, alpha_ggx) * std::max(0.0, h.z);
+  return GgxDistribution(alpha_ggx, alpha_ggx).D(h) * std::max(0.0, h.z);
 }
 
 Flake flake_at(const Vec3& p, const Vec3& n, double f, double s_f, double r_f) {

@@ -47,7 +47,7 @@ FlakeUv flake_triplanar_uv(const Vec3& p, const Vec3& n);
 // Flake normal K(r_f, xi_1, xi_2) of the spec: a sample of the GGX normal distribution with
 // density D(h) (h.n) (flake_normal_pdf) for alpha = alpha_ggx; (u1, u2) in [0, 1)^2.
 Vec3 flake_normal_sample(double alpha_ggx, double u1, double u2);
-// Density of flake_normal_sample over the solid angle of h: ggx_d(h, a, a) h.z (0 for alpha = 0:
+// Density of flake_normal_sample over the solid angle of h: D(h) h.z of GgxDistribution(a, a) (0 for alpha = 0:
 // then every normal is +z, a Dirac).
 double flake_normal_pdf(const Vec3& h, double alpha_ggx);
 

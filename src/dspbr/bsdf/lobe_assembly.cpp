@@ -145,7 +145,7 @@ LobeMixture assemble_side(const Material& m, const LutSet& luts, const SideInput
     // M_r,ms F_ms(rho_s,r,0, rho_s,r,90) (same for every film weight). A mirror (delta M_r) has
     // E_m = 1 exactly: no compensation (the tables' first roughness sample is not at r = 0).
     const Rgb f_ms = fresnel_ms(core.rho_sr0, core.rho_sr90, std::clamp(luts.E_m_avg(r_uv), 0.0, 1.0));
-    const bool mirror = std::max(alpha_u, alpha_v) < kDeltaAlpha;
+    const bool mirror = GgxDistribution(alpha_u, alpha_v).effectively_smooth();
     if (f_ms.max_component() > 0 && !mirror)
       out.add(std::make_unique<MultiScatterReflection>(r_uv, f_ms, luts), Layer::Core);
     // Transmission: rho_t M_t' (1 - s F) (thin) or rho_t M_t (1 - s F_d) (volumetric); with a film

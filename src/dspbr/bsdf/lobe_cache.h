@@ -5,33 +5,36 @@
 // empty one, so the values are the same either way. Keyed by the slice's E_m identity and the
 // cosine, so a hit returns exactly what the slice computes.
 #pragma once
-#include <array>
-
 #include "dspbr/lut/albedo_slice.h"
 
 namespace dspbr {
 
 class LobeCache {
  public:
+  LobeCache() {}  // entries_ stay uninitialised: only the first n_ are read
+
   // slice(cos_theta), its E_m part computed once per (E_m identity, cos_theta).
   double albedo(const AlbedoSlice& slice, double cos_theta) {
     const AlbedoSlice::EmKey key = slice.e_m_key();
     if (!key.fingerprint) return slice(cos_theta);
-    for (int k = 0; k < n_; ++k)
-      if (entries_[size_t(k)].key == key && entries_[size_t(k)].cos_theta == cos_theta)
-        return slice.from_e_m_part(cos_theta, entries_[size_t(k)].part);
+    for (int k = 0; k < n_; ++k) {
+      const Entry& e = entries_[k];
+      if (e.fingerprint == key.fingerprint && e.roughness == key.roughness && e.cos_theta == cos_theta)
+        return slice.from_e_m_part(cos_theta, {e.x, e.e_m});
+    }
     const AlbedoSlice::EmPart part = slice.e_m_part(cos_theta);
-    if (n_ < int(entries_.size())) entries_[size_t(n_++)] = {key, cos_theta, part};
+    if (n_ < kEntries) entries_[n_++] = {key.fingerprint, key.roughness, cos_theta, part.x, part.e_m};
     return slice.from_e_m_part(cos_theta, part);
   }
 
  private:
+  // An EmKey, the cosine and its EmPart, as plain members (no per-call zeroing of the memo).
   struct Entry {
-    AlbedoSlice::EmKey key;
-    double cos_theta;
-    AlbedoSlice::EmPart part;
+    uint64_t fingerprint;
+    double roughness, cos_theta, x, e_m;
   };
-  std::array<Entry, 4> entries_;
+  static constexpr int kEntries = 4;
+  Entry entries_[kEntries];
   int n_ = 0;
 };
 

@@ -5,6 +5,9 @@
 #include <stdexcept>
 
 #include "dspbr/bsdf/cosine_factor.h"
+#include "dspbr/bsdf/diffuse.h"
+#include "dspbr/bsdf/microfacet_reflection.h"
+#include "dspbr/bsdf/multiscatter.h"
 
 namespace dspbr {
 
@@ -20,9 +23,50 @@ void select_lobes(double* w, const bool* present, int n) {
     for (int k = 0; k < n; ++k) w[k] /= sum;
 }
 
+LobeMixture::LobeMixture(Layering layering) : layering_(std::move(layering)) {
+  const Frame& f = layering_.core;
+  core_identity_ = f.t.x == 1 && f.t.y == 0 && f.t.z == 0 && f.b.x == 0 && f.b.y == 1 && f.b.z == 0 && f.n.x == 0 &&
+                   f.n.y == 0 && f.n.z == 1;
+}
+
 void LobeMixture::add(std::unique_ptr<Lobe> lobe, Layer layer) {
   if (n_ == kMaxLobes) throw std::logic_error("LobeMixture: more than kMaxLobes lobes");
-  entries_[size_t(n_++)] = {std::move(lobe), layer};
+  Kind kind = Kind::Other;
+  if (dynamic_cast<const MicrofacetReflection*>(lobe.get())) kind = Kind::Reflection;
+  else if (dynamic_cast<const MultiScatterReflection*>(lobe.get())) kind = Kind::MultiScatter;
+  else if (dynamic_cast<const DiffuseBase*>(lobe.get())) kind = Kind::Diffuse;
+  const bool delta = lobe->is_delta();
+  entries_[size_t(n_++)] = {std::move(lobe), layer, kind, delta};
+}
+
+Rgb LobeMixture::eval_lobe(const Entry& e, const Vec3& v, const Vec3& l, LobeCache& cache) {
+  switch (e.kind) {
+    case Kind::Reflection: return static_cast<const MicrofacetReflection&>(*e.lobe).eval(v, l);
+    case Kind::MultiScatter: return static_cast<const MultiScatterReflection&>(*e.lobe).eval(v, l, cache);
+    case Kind::Diffuse: return static_cast<const DiffuseBase&>(*e.lobe).eval(v, l, cache);
+    case Kind::Other: break;
+  }
+  return e.lobe->eval(v, l, cache);
+}
+
+double LobeMixture::pdf_lobe(const Entry& e, const Vec3& v, const Vec3& l) {
+  switch (e.kind) {
+    case Kind::Reflection: return static_cast<const MicrofacetReflection&>(*e.lobe).pdf(v, l);
+    case Kind::MultiScatter: return static_cast<const MultiScatterReflection&>(*e.lobe).pdf(v, l);
+    case Kind::Diffuse: return static_cast<const DiffuseBase&>(*e.lobe).pdf(v, l);
+    case Kind::Other: break;
+  }
+  return e.lobe->pdf(v, l);
+}
+
+double LobeMixture::weight_lobe(const Entry& e, const Vec3& v, LobeCache& cache) {
+  switch (e.kind) {
+    case Kind::Reflection: return static_cast<const MicrofacetReflection&>(*e.lobe).sampling_weight(v);
+    case Kind::MultiScatter: return static_cast<const MultiScatterReflection&>(*e.lobe).sampling_weight(v, cache);
+    case Kind::Diffuse: return static_cast<const DiffuseBase&>(*e.lobe).sampling_weight(v, cache);
+    case Kind::Other: break;
+  }
+  return e.lobe->sampling_weight(v, cache);
 }
 
 LobeMixture::Factors LobeMixture::factors(const Vec3& v, const Vec3& l, double s) const {
@@ -52,32 +96,32 @@ double LobeMixture::factor(const Factors& f, Layer layer) const {
 
 void LobeMixture::selection_weights(const Vec3& v, double s, double* w) const {
   const Factors f = factors(v, v, s);
-  const Vec3 v_core = layering_.core.to_local(v);
+  const Vec3 v_core = to_core(v);
   LobeCache cache;
   for (int k = 0; k < n_; ++k) {
     const Entry& e = entries_[size_t(k)];
     const Vec3 vk = e.layer == Layer::Coat ? layering_.coat.to_local(v) : v_core;
-    const double wk = e.lobe->sampling_weight(vk, cache) * factor(f, e.layer);
+    const double wk = weight_lobe(e, vk, cache) * factor(f, e.layer);
     w[k] = std::isfinite(wk) ? std::max(wk, 0.0) : 0.0;
   }
 }
 
 Rgb LobeMixture::eval(const Vec3& v, const Vec3& l, double s) const {
   Rgb sum(0);
-  const Vec3 v_core = layering_.core.to_local(v), l_core = layering_.core.to_local(l);
+  const Vec3 v_core = to_core(v), l_core = to_core(l);
   std::optional<Factors> f;  // computed at the first lobe with a non-zero value
   LobeCache cache;
   for (int k = 0; k < n_; ++k) {
     const Entry& e = entries_[size_t(k)];
-    if (e.lobe->is_delta()) continue;
+    if (e.delta) continue;
     Rgb fk;
     if (e.layer == Layer::Coat) {
       // The coat reflects: nothing towards the other side of the surface (its own normal n_c may
       // differ from n; without this check f(v, l) != f(l, v) where the two planes disagree).
       if (!(l_core.z > 0)) continue;
-      fk = e.lobe->eval(layering_.coat.to_local(v), layering_.coat.to_local(l));
+      fk = eval_lobe(e, layering_.coat.to_local(v), layering_.coat.to_local(l), cache);
     } else {
-      fk = e.lobe->eval(v_core, l_core, cache);
+      fk = eval_lobe(e, v_core, l_core, cache);
     }
     if (fk.max_component() > 0) {
       if (!f) f = factors(v, l, s);
@@ -89,12 +133,12 @@ Rgb LobeMixture::eval(const Vec3& v, const Vec3& l, double s) const {
 
 double LobeMixture::pdf(const Vec3& v, const Vec3& l, const double* probs) const {
   double p = 0;
-  const Vec3 v_core = layering_.core.to_local(v), l_core = layering_.core.to_local(l);
+  const Vec3 v_core = to_core(v), l_core = to_core(l);
   for (int k = 0; k < n_; ++k) {
     const Entry& e = entries_[size_t(k)];
-    if (e.lobe->is_delta() || probs[k] == 0) continue;
-    p += probs[k] * (e.layer == Layer::Coat ? e.lobe->pdf(layering_.coat.to_local(v), layering_.coat.to_local(l))
-                                            : e.lobe->pdf(v_core, l_core));
+    if (e.delta || probs[k] == 0) continue;
+    p += probs[k] * (e.layer == Layer::Coat ? pdf_lobe(e, layering_.coat.to_local(v), layering_.coat.to_local(l))
+                                            : pdf_lobe(e, v_core, l_core));
   }
   return p;
 }

@@ -11,7 +11,9 @@
 // Sampling: a lobe is chosen with probability proportional to its selection weight
 // (Lobe::sampling_weight times its layer factor at (v, v)), each present lobe at least
 // kMinSelectionFraction of the largest (select_lobes); pdf(v, l) is the mixture density over the
-// non-delta lobes. Fixed capacity: no allocation per call.
+// non-delta lobes. Fixed capacity: no allocation per call. The core's reflection, multiple-scattering
+// and diffuse lobes (a closed set) are called without virtual dispatch, the others through Lobe;
+// the local directions of an identity core frame are the world ones (no transform).
 #pragma once
 #include <array>
 #include <memory>
@@ -46,7 +48,7 @@ class LobeMixture {
   };
 
   LobeMixture() = default;
-  explicit LobeMixture(Layering layering) : layering_(std::move(layering)) {}
+  explicit LobeMixture(Layering layering);
 
   // Appends a lobe of a layer (at most kMaxLobes; std::logic_error beyond).
   void add(std::unique_ptr<Lobe> lobe, Layer layer);
@@ -66,10 +68,19 @@ class LobeMixture {
   uint32_t flags() const;
 
  private:
+  // The lobe types called directly (final classes); Other: through the virtual interface.
+  enum class Kind { Reflection, MultiScatter, Diffuse, Other };
   struct Entry {
     std::unique_ptr<Lobe> lobe;
     Layer layer = Layer::Core;
+    Kind kind = Kind::Other;
+    bool delta = false;  // lobe->is_delta(), fixed once the lobe is built
   };
+  static Rgb eval_lobe(const Entry& e, const Vec3& v, const Vec3& l, LobeCache& cache);
+  static double pdf_lobe(const Entry& e, const Vec3& v, const Vec3& l);
+  static double weight_lobe(const Entry& e, const Vec3& v, LobeCache& cache);
+  // w in the core frame (the identity frame: w itself).
+  Vec3 to_core(const Vec3& w) const { return core_identity_ ? w : layering_.core.to_local(w); }
   // The layer factors for (v, l), times s.
   struct Factors {
     double core, sheen_flake, coat;
@@ -79,6 +90,7 @@ class LobeMixture {
   const Frame& frame(Layer layer) const { return layer == Layer::Coat ? layering_.coat : layering_.core; }
 
   Layering layering_;
+  bool core_identity_ = true;  // core frame == (x, y, z)
   std::array<Entry, kMaxLobes> entries_;
   int n_ = 0;
 };

@@ -3,22 +3,17 @@
 #include <algorithm>
 
 #include "dspbr/bsdf/sampling.h"
-#include "dspbr/ggx.h"
 
 namespace dspbr {
 
 MicrofacetReflection::MicrofacetReflection(double alpha_u, double alpha_v, CosineFactor fresnel)
-    : au_(std::max(alpha_u, kMinAlpha)),
-      av_(std::max(alpha_v, kMinAlpha)),
-      delta_(std::max(alpha_u, alpha_v) < kDeltaAlpha),
-      fresnel_(std::move(fresnel)) {}
+    : ggx_(alpha_u, alpha_v), delta_(ggx_.effectively_smooth()), fresnel_(std::move(fresnel)) {}
 
 Rgb MicrofacetReflection::eval(const Vec3& v, const Vec3& l) const {
   if (delta_ || v.z <= 0 || l.z <= 0) return Rgb(0);
   const Vec3 h = normalize(v + l);
-  // M_r = D G / (4 |v.n| |l.n|) (ggx_microfacet_brdf with this h) times the Fresnel factor at
-  // cos theta_r = v.h_r.
-  return fresnel_(dot(v, h)) * (ggx_d(h, au_, av_) * ggx_g2(v, l, h, au_, av_) / (4.0 * v.z * l.z));
+  // M_r = D G / (4 |v.n| |l.n|) times the Fresnel factor at cos theta_r = v.h_r.
+  return fresnel_(dot(v, h)) * ggx_.M_r(v, l, h);
 }
 
 double MicrofacetReflection::pdf(const Vec3& v, const Vec3& l) const {
@@ -31,7 +26,7 @@ double MicrofacetReflection::pdf(const Vec3& v, const Vec3& l) const {
   const Vec3 h = s / len;
   const double vh = dot(v, h);
   if (h.z <= 0 || vh <= 0) return 0.0;
-  return ggx_vndf_pdf(v, h, au_, av_) / (4.0 * vh);
+  return ggx_.PDF(v, h) / (4.0 * vh);
 }
 
 BsdfSample MicrofacetReflection::sample(const Vec3& v, const Vec3& u) const {
@@ -45,7 +40,7 @@ BsdfSample MicrofacetReflection::sample(const Vec3& v, const Vec3& u) const {
     s.valid = true;
     return s;
   }
-  const Vec3 h = ggx_sample_vndf(v, au_, av_, u.y, u.z);
+  const Vec3 h = ggx_.Sample_wm(v, u.y, u.z);
   if (dot(v, h) <= 0) return s;
   s.l = normalize(reflect(v, h));
   // Below the horizon pdf() is 0, so make_sample returns a failed sample (bsdf.h).

@@ -13,7 +13,7 @@ namespace dspbr {
 // denominator both vanish: the single-scattering lobe already reflects everything).
 constexpr double kMinMissingEnergy = 1e-9;
 
-class MultiScatterReflection : public Lobe {
+class MultiScatterReflection final : public Lobe {
  public:
   // r_uv: isotropic roughness sqrt(r_u r_v) (table coordinate); f_ms: the F_ms colour.
   MultiScatterReflection(double r_uv, const Rgb& f_ms, const LutSet& luts);

@@ -4,17 +4,15 @@
 #include <cmath>
 
 #include "dspbr/bsdf/sampling.h"
-#include "dspbr/ggx.h"
 
 namespace dspbr {
 
 VolumetricTransmission::VolumetricTransmission(double alpha_u, double alpha_v, double eta_i, double eta_o,
                                                CosineFactor factor)
-    : au_(std::max(alpha_u, kMinAlpha)),
-      av_(std::max(alpha_v, kMinAlpha)),
+    : ggx_(alpha_u, alpha_v),
       eta_i_(eta_i),
       eta_o_(eta_o),
-      delta_(std::max(alpha_u, alpha_v) < kDeltaAlpha || std::abs(eta_i / eta_o - 1.0) < kIndexMatched),
+      delta_(ggx_.effectively_smooth() || std::abs(eta_i / eta_o - 1.0) < kIndexMatched),
       factor_(std::move(factor)) {}
 
 bool VolumetricTransmission::half_vector(const Vec3& v, const Vec3& l, Vec3& h) const {
@@ -35,9 +33,9 @@ Rgb VolumetricTransmission::eval(const Vec3& v, const Vec3& l) const {
   const double denom = eta_i_ * vh + eta_o_ * lh;
   if (denom == 0) return Rgb(0);
   // Height-correlated G for transmission: the chi+ factors are the facet-side checks above.
-  const double g = 1.0 / (1.0 + smith_lambda(v, au_, av_) + smith_lambda(l, au_, av_));
+  const double g = ggx_.G2(v, l);
   const double mt = std::abs(lh) * std::abs(vh) / (std::abs(l.z) * std::abs(v.z)) * eta_o_ * eta_o_ *
-                    ggx_d(h, au_, av_) * g / (denom * denom);
+                    ggx_.D(h) * g / (denom * denom);
   return factor_(vh) * mt;
 }
 
@@ -50,7 +48,7 @@ double VolumetricTransmission::pdf(const Vec3& v, const Vec3& l) const {
   const double vh = dot(v, h), lh = dot(l, h);
   const double denom = eta_i_ * vh + eta_o_ * lh;
   if (denom == 0) return 0.0;
-  return ggx_vndf_pdf(v, h, au_, av_) * eta_o_ * eta_o_ * std::abs(lh) / (denom * denom);
+  return ggx_.PDF(v, h) * eta_o_ * eta_o_ * std::abs(lh) / (denom * denom);
 }
 
 BsdfSample VolumetricTransmission::sample(const Vec3& v, const Vec3& u) const {
@@ -65,7 +63,7 @@ BsdfSample VolumetricTransmission::sample(const Vec3& v, const Vec3& u) const {
     s.valid = true;
     return s;
   }
-  const Vec3 h = ggx_sample_vndf(v, au_, av_, u.y, u.z);
+  const Vec3 h = ggx_.Sample_wm(v, u.y, u.z);
   if (dot(v, h) <= 0 || !refract_dir(v, h, eta, s.l)) return s;  // TIR: the sample fails
   return make_sample(*this, v, s.l, kLobeTransmission | kLobeGlossy);
 }

@@ -7,7 +7,7 @@
 // factor itself (no (eta_i/eta_o)^2 radiance scaling): generalized reciprocity reads
 // f(v, l) / eta_o^2 = f(l, v) / eta_i^2. See docs/bsdf.md.
 //
-// Smooth limit (max alpha < kDeltaAlpha) or index-matched media (|eta_i/eta_o - 1| < kIndexMatched):
+// Smooth limit (an effectively smooth distribution, ggx.h) or index-matched media (|eta_i/eta_o - 1| < kIndexMatched):
 // a Dirac along the refracted direction (l = -v when index-matched), weight factor(v.z).
 // Under total internal reflection at the sampled microfacet the sample fails (valid = false).
 #pragma once
@@ -16,7 +16,7 @@
 
 namespace dspbr {
 
-class VolumetricTransmission : public Lobe {
+class VolumetricTransmission final : public Lobe {
  public:
   VolumetricTransmission(double alpha_u, double alpha_v, double eta_i, double eta_o, CosineFactor factor);
   Rgb eval(const Vec3& v, const Vec3& l) const override;
@@ -29,7 +29,8 @@ class VolumetricTransmission : public Lobe {
  private:
   // h_t for (v, l), oriented to +z; false when undefined or not a refraction configuration.
   bool half_vector(const Vec3& v, const Vec3& l, Vec3& h) const;
-  double au_, av_, eta_i_, eta_o_;
+  GgxDistribution ggx_;
+  double eta_i_, eta_o_;
   bool delta_;
   CosineFactor factor_;
 };

@@ -61,7 +61,7 @@ struct LobeResidual {  // parameters: r_eq, the view's scale s_v
   double target, sqrt_w;
   bool operator()(const double* r_eq, const double* scale, double* r) const {
     const double alpha = std::max(1e-4, r_eq[0] * r_eq[0]);  // floor avoids a Dirac lobe
-    r[0] = sqrt_w * (scale[0] * ggx_microfacet_brdf(v, l, alpha, alpha) - target) * l.z;
+    r[0] = sqrt_w * (scale[0] * GgxDistribution(alpha, alpha).M_r(v, l) - target) * l.z;
     return true;
   }
 };
@@ -83,7 +83,7 @@ double flake_conv_lobe(const Vec3& v, const Vec3& l, double a, double cos_cone, 
   if (flake_cone_is_delta(cos_cone)) {  // mirror flakes: the reflected GGX density
     const Vec3 h = normalize(v + l);
     const double vh = dot(v, h);
-    return vh > 0 && h.z > 0 ? ggx_d(h, a, a) * h.z / (4.0 * vh) : 0.0;
+    return vh > 0 && h.z > 0 ? GgxDistribution(a, a).D(h) * h.z / (4.0 * vh) : 0.0;
   }
   const double sn = std::sqrt(std::max(0.0, 1.0 - cos_cone * cos_cone));
   Vec3 p = v - dot(v, l) * l;
@@ -178,12 +178,13 @@ FlakeLobeFit fit_flake_lobe(double r_f, bool quick) {
   out.converged = summary.termination_type == ceres::CONVERGENCE;
   out.r_eq = r_eq;
   const double alpha = std::max(1e-4, r_eq * r_eq);
+  const GgxDistribution ggx(alpha, alpha);
   for (size_t k = 0; k < views.size(); ++k) {
     const View& vw = views[k];
     double num = 0, den = 0, e_agg = 0, e_ggx = 0;
     for (size_t i = 0; i < vw.dirs.size(); ++i) {
       const auto& d = vw.dirs[i];
-      const double g = ggx_microfacet_brdf(vw.v, d.l, alpha, alpha), m = scales[k] * g;
+      const double g = ggx.M_r(vw.v, d.l), m = scales[k] * g;
       num += d.weight * (m - vw.agg[i]) * (m - vw.agg[i]) * d.l.z * d.l.z;
       den += d.weight * vw.agg[i] * vw.agg[i] * d.l.z * d.l.z;
       e_agg += d.weight * vw.agg[i] * d.l.z;
@@ -309,7 +310,7 @@ nlohmann::json flake_roughness_fit(const FitContext& ctx) {
         sl["theta_offset"].push_back(t);
         sl["aggregate"].push_back(flake_aggregate_brdf(v, l, rf) * l.z);
         sl["cone_lobe"].push_back(flake_conv_lobe(v, l, flake_alpha_ggx(rf), flake_cos_cone(rf), kFlakeRimPoints) * l.z);
-        sl["ggx"].push_back(ggx_microfacet_brdf(v, l, alpha, alpha) * l.z);
+        sl["ggx"].push_back(GgxDistribution(alpha, alpha).M_r(v, l) * l.z);
       }
       d["lobe_slices"].push_back(sl);
     }

@@ -205,24 +205,24 @@ double schlick_factor(double cos_vh) { return fresnel_schlick(cos_vh, 0.0, 1.0);
 // The two GGX moments at view cosine mu: acc[0] += weight of Integral M_r mu_l dl,
 // acc[1] += weight of Integral M_r (1 - v.h)^5 mu_l dl.
 // Qmc: l = reflect(v, h), h ~ visible normals; weight M_r mu_l / pdf(l) = G2 / G1(v) (Heitz 2018).
-void ggx_moments_qmc(const Vec3& v, double alpha, double u0, double u1, std::array<double, 2>& acc) {
-  const Vec3 h = ggx_sample_vndf(v, alpha, alpha, u0, u1);
+void ggx_moments_qmc(const Vec3& v, const GgxDistribution& ggx, double u0, double u1, std::array<double, 2>& acc) {
+  const Vec3 h = ggx.Sample_wm(v, u0, u1);
   const double vh = dot(v, h);
   if (vh <= 0) return;
   const Vec3 l = reflect(v, h);
   if (l.z <= 0) return;  // reflected below the horizon: M_r = 0 there
-  const double g1 = ggx_g1(v, h, alpha, alpha);
+  const double g1 = ggx.G1(v);
   if (g1 <= 0) return;
-  const double w = ggx_g2(v, l, h, alpha, alpha) / g1;
+  const double w = ggx.G2(v, l) / g1;  // l.h = v.h > 0
   acc[0] += w;
   acc[1] += w * schlick_factor(vh);
 }
 
 // Mc: l uniform on the hemisphere (pdf 1 / 2pi); weight 2 pi M_r mu_l.
-void ggx_moments_mc(const Vec3& v, double alpha, double u0, double u1, std::array<double, 2>& acc) {
+void ggx_moments_mc(const Vec3& v, const GgxDistribution& ggx, double u0, double u1, std::array<double, 2>& acc) {
   const Vec3 l = hemisphere_dir(u0, 2.0 * kPi * u1);
   if (l.z <= 0) return;
-  const double w = 2.0 * kPi * ggx_microfacet_brdf(v, l, alpha, alpha) * l.z;
+  const double w = 2.0 * kPi * ggx.M_r(v, l) * l.z;
   if (w == 0) return;
   acc[0] += w;
   acc[1] += w * schlick_factor(dot(v, normalize(v + l)));
@@ -235,14 +235,15 @@ Means<2> ggx_moments(double mu, double r, const IntegratorSettings& s, uint64_t 
   mu = clamp_cos(mu);
   const double alpha = roughness_to_alpha(std::clamp(r, 0.0, 1.0));
   const Vec3 v = view_dir(mu);
+  const GgxDistribution ggx(alpha, alpha);
   if (alpha == 0 && s.integrator == Integrator::Mc)
     return {std::vector<std::array<double, 2>>(size_t(s.randomizations), {1.0, schlick_factor(mu)})};
   if (s.integrator != Integrator::Mc)
     return replicate_means<2>(s, stream, 2, [&](const double* u, std::array<double, 2>& acc) {
-      ggx_moments_qmc(v, alpha, u[0], u[1], acc);
+      ggx_moments_qmc(v, ggx, u[0], u[1], acc);
     });
   return replicate_means<2>(s, stream, 2, [&](const double* u, std::array<double, 2>& acc) {
-    ggx_moments_mc(v, alpha, u[0], u[1], acc);
+    ggx_moments_mc(v, ggx, u[0], u[1], acc);
   });
 }
 
@@ -252,17 +253,18 @@ Means<2> ggx_moments(double mu, double r, const IntegratorSettings& s, uint64_t 
 Means<2> ggx_avg_moments(double r, const IntegratorSettings& s, uint64_t stream) {
   check_settings(s);
   const double alpha = roughness_to_alpha(std::clamp(r, 0.0, 1.0));
+  const GgxDistribution ggx(alpha, alpha);
   if (alpha == 0 && s.integrator == Integrator::Mc)  // mirror: E_m,avg = 1, 2 Integral (1-mu)^5 mu = 1/21
     return {std::vector<std::array<double, 2>>(size_t(s.randomizations), {1.0, 1.0 / 21.0})};
   if (s.integrator != Integrator::Mc)
     return replicate_means<2>(s, stream, 3, [&](const double* u, std::array<double, 2>& acc) {
       const double mu = clamp_cos(std::sqrt(u[0]));
-      ggx_moments_qmc(view_dir(mu), alpha, u[1], u[2], acc);
+      ggx_moments_qmc(view_dir(mu), ggx, u[1], u[2], acc);
     });
   return replicate_means<2>(s, stream, 3, [&](const double* u, std::array<double, 2>& acc) {
     const double mu = clamp_cos(u[0]);
     std::array<double, 2> a{};
-    ggx_moments_mc(view_dir(mu), alpha, u[1], u[2], a);
+    ggx_moments_mc(view_dir(mu), ggx, u[1], u[2], a);
     acc[0] += 2.0 * mu * a[0];
     acc[1] += 2.0 * mu * a[1];
   });
@@ -273,20 +275,20 @@ Means<2> ggx_avg_moments(double r, const IntegratorSettings& s, uint64_t stream)
 // (1 - F_d) G2(v, l_t) / G1(v) for the refraction l_t below it (the VNDF weight of
 // M_t |l.n| / pdf: Walter et al. 2007 with the spec's eta_o^2, whose eta factors cancel);
 // G2 height-correlated, as in the BSDF.
-void glass_weight(const Vec3& v, double alpha, double f0, double eta_i, double eta_o, double u0, double u1,
-                  std::array<double, 1>& acc) {
-  const Vec3 h = ggx_sample_vndf(v, alpha, alpha, u0, u1);
+void glass_weight(const Vec3& v, const GgxDistribution& ggx, double f0, double eta_i, double eta_o, double u0,
+                  double u1, std::array<double, 1>& acc) {
+  const Vec3 h = ggx.Sample_wm(v, u0, u1);
   const double vh = dot(v, h);
   if (vh <= 0) return;
-  const double g1 = ggx_g1(v, h, alpha, alpha);
+  const double g1 = ggx.G1(v);
   if (g1 <= 0) return;
   const double F = fresnel_schlick_d(vh, f0, 1.0, eta_i, eta_o);
   const Vec3 lr = reflect(v, h);
   double w = 0;
-  if (lr.z > 0) w += F * ggx_g2(v, lr, h, alpha, alpha) / g1;
+  if (lr.z > 0) w += F * ggx.G2(v, lr) / g1;  // l_r.h = v.h > 0
   Vec3 lt;  // at eta_i = eta_o: l_t = -v, the limit eta -> 1+ (glass_E)
   if (F < 1 && refract_dir(v, h, eta_i / eta_o, lt) && lt.z < 0)
-    w += (1.0 - F) / ((1.0 + smith_lambda(v, alpha, alpha) + smith_lambda(lt, alpha, alpha)) * g1);
+    w += (1.0 - F) / ((1.0 + ggx.Lambda(v) + ggx.Lambda(lt)) * g1);
   acc[0] += w;
 }
 
@@ -428,6 +430,7 @@ Estimate glass_E(double mu, double r, double ior, bool inside, const IntegratorS
   const Vec3 v = view_dir(clamp_cos(mu));
   const double alpha = roughness_to_alpha(std::clamp(r, 0.0, 1.0)), eta = std::max(ior, 1.0);
   const double eta_i = inside ? eta : 1.0, eta_o = inside ? 1.0 : eta, f0 = f0_from_ior(1.0, eta);
+  const GgxDistribution ggx(alpha, alpha);
   if (s.integrator == Integrator::Quad) {
     // Smooth interface: F_d + (1 - F_d) = 1 (also under total internal reflection, F_d = 1).
     if (alpha == 0) return {1.0, 0.0};
@@ -435,7 +438,7 @@ Estimate glass_E(double mu, double r, double ior, bool inside, const IntegratorS
   }
   return combine<1>(replicate_means<1>(s, stream, 2,
                                        [&](const double* u, std::array<double, 1>& acc) {
-                                         glass_weight(v, alpha, f0, eta_i, eta_o, u[0], u[1], acc);
+                                         glass_weight(v, ggx, f0, eta_i, eta_o, u[0], u[1], acc);
                                        }),
                     [](const std::array<double, 1>& m) { return m[0]; });
 }
@@ -444,6 +447,7 @@ Estimate glass_E_avg(double r, double ior, bool inside, const IntegratorSettings
   check_settings(s);
   const double alpha = roughness_to_alpha(std::clamp(r, 0.0, 1.0)), eta = std::max(ior, 1.0);
   const double eta_i = inside ? eta : 1.0, eta_o = inside ? 1.0 : eta, f0 = f0_from_ior(1.0, eta);
+  const GgxDistribution ggx(alpha, alpha);
   if (s.integrator == Integrator::Quad) {
     if (alpha == 0) return {1.0, 0.0};
     // 2 Integral E_g mu dmu: Gauss-Legendre in mu, 2 panels of 8 nodes per segment (4 nodes for
@@ -468,7 +472,7 @@ Estimate glass_E_avg(double r, double ior, bool inside, const IntegratorSettings
   // mu = sqrt(u0) has density 2 mu: the weights are the directional ones.
   return combine<1>(replicate_means<1>(s, stream, 3,
                                        [&](const double* u, std::array<double, 1>& acc) {
-                                         glass_weight(view_dir(clamp_cos(std::sqrt(u[0]))), alpha, f0, eta_i,
+                                         glass_weight(view_dir(clamp_cos(std::sqrt(u[0]))), ggx, f0, eta_i,
                                                       eta_o, u[1], u[2], acc);
                                        }),
                     [](const std::array<double, 1>& m) { return m[0]; });

@@ -18,6 +18,7 @@ constexpr int kMaxDepth = 6;  // at most 2^6 panels per segment between kinks
 struct Glass {
   Vec3 v;
   double mu, sv, alpha, f0, eta_i, eta_o, eta;  // eta = eta_i / eta_o
+  GgxDistribution ggx;  // isotropic alpha
   double lambda_v;
 };
 
@@ -36,11 +37,11 @@ double integrand(const Glass& g, double cz, double sz, double phi) {
   const double F = fresnel_schlick_d(vh, g.f0, 1.0, g.eta_i, g.eta_o);
   double w = 0;
   const Vec3 lr = reflect(g.v, h);
-  if (lr.z > 0) w += F / (1.0 + g.lambda_v + smith_lambda(lr, g.alpha, g.alpha));
+  if (lr.z > 0) w += F / (1.0 + g.lambda_v + g.ggx.Lambda(lr));
   if (F < 1) {
     Vec3 lt;
     if (refract_dir(g.v, h, g.eta, lt) && lt.z < 0)
-      w += (1.0 - F) / (1.0 + g.lambda_v + smith_lambda(lt, g.alpha, g.alpha));
+      w += (1.0 - F) / (1.0 + g.lambda_v + g.ggx.Lambda(lt));
   }
   return w * vh / (g.mu * cz);
 }
@@ -176,7 +177,8 @@ Estimate glass_albedo_quadrature(double mu, double alpha, double f0, double eta_
   g.eta_i = eta_i;
   g.eta_o = eta_o;
   g.eta = eta_i / eta_o;
-  g.lambda_v = smith_lambda(g.v, alpha, alpha);
+  g.ggx = GgxDistribution(alpha, alpha);
+  g.lambda_v = g.ggx.Lambda(g.v);
   double value = 0, error = 0;
   // Panels in w between the kinks (w -> 0 is the grazing-normal end), refined where needed.
   std::vector<double> ws = {0.0};

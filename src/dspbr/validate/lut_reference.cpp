@@ -95,6 +95,7 @@ double ggx_h_integral_uncached(double mu, double r, double f0, int panels) {
   if (alpha < 1e-9) {  // mirror limit: G2 = 1, single direction l = reflect(v, n)
     return f0 < 0 ? 1.0 : fresnel_schlick(mu, f0, 1.0);
   }
+  const GgxDistribution ggx(alpha, alpha);
   auto u_of_theta = [&](double t) {
     const double t2 = std::tan(t) * std::tan(t);
     return t2 / (alpha * alpha + t2);
@@ -102,8 +103,8 @@ double ggx_h_integral_uncached(double mu, double r, double f0, int panels) {
   auto inner = [&](double u) {
     const double tan2 = alpha * alpha * u / (1.0 - u);
     const double cz = 1.0 / std::sqrt(1.0 + tan2), sz = std::sqrt(std::max(0.0, 1.0 - cz * cz));
-    return azimuth_integral(mu, cz, sz, panels, [&](const Vec3& v, const Vec3& h, double vh, const Vec3& l) {
-      const double g = ggx_g2(v, l, h, alpha, alpha);
+    return azimuth_integral(mu, cz, sz, panels, [&](const Vec3& v, const Vec3& /*h*/, double vh, const Vec3& l) {
+      const double g = ggx.G2(v, l);  // l = reflect(v, h), v.h > 0: l.h = v.h > 0
       const double fr = f0 < 0 ? 1.0 : fresnel_schlick(vh, f0, 1.0);
       return g * fr * vh / (mu * cz);
     });
