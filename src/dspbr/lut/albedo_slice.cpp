@@ -5,6 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "dspbr/cubic_spline.h"
+
 namespace dspbr {
 
 namespace {
@@ -50,21 +52,12 @@ AlbedoSlice::Padded AlbedoSlice::Padded::of(const WarpedTable& t) {
   return s;
 }
 
-void AlbedoSlice::Padded::locate(double x, int n, int* i, double* f) {
-  const double g = std::clamp(x, 0.0, 1.0) * (n - 1);
-  *i = std::min(int(g), n - 2);
-  *f = g - *i;
-}
-
-double AlbedoSlice::Padded::cubic(int i, double f) const {
-  const double* k = c.data() + 4 * size_t(i);
-  return ((k[0] * f + k[1]) * f + k[2]) * f + k[3];
-}
+double AlbedoSlice::Padded::cubic(int i, double f) const { return cubic_at(c.data() + 4 * size_t(i), f); }
 
 double AlbedoSlice::Padded::at_grid(double x) const {
   int i;
   double f;
-  locate(x, n, &i, &f);
+  grid_cell(x, n, &i, &f);
   const double s = cubic(i, f);
   return encoding == Encoding::LogOneMinus ? 1.0 - std::exp(s) : s;
 }
@@ -160,8 +153,8 @@ AlbedoSlice AlbedoSlice::E_glass(const LutSet& luts, double roughness, double io
   // more cell each way for rounding at a cell boundary).
   int i_lo, i_hi;
   double f;
-  Padded::locate(g->warp.to_grid(ior, 1.0), g->n, &i_lo, &f);
-  Padded::locate(g->warp.to_grid(ior, 0.0), g->n, &i_hi, &f);
+  grid_cell(g->warp.to_grid(ior, 1.0), g->n, &i_lo, &f);
+  grid_cell(g->warp.to_grid(ior, 0.0), g->n, &i_hi, &f);
   g->first = std::clamp(std::min(i_lo, i_hi) - 2, 0, g->n - 2);
   const int last = std::clamp(std::max(i_lo, i_hi) + 3, 1, g->n - 1);
   const int n2 = cut.axes[1].size;
@@ -179,18 +172,12 @@ double AlbedoSlice::glass_at(double cos_theta) const {
   const GlassRows& g = *glass_;
   const double mu = std::clamp(cos_theta, 0.0, 1.0);
   const Padded& row0 = g.rows.front();
-  int i2, i0;
-  double f2, f0, w0[4];
-  Padded::locate(row0.warp.to_grid_fast(mu, alpha_), row0.n, &i2, &f2);
+  int i2;
+  double f2;
+  grid_cell(row0.warp.to_grid_fast(mu, alpha_), row0.n, &i2, &f2);
   // Across the ior samples as WarpedTable::interpolate: cell, weights, linear extension.
-  Padded::locate(g.warp.to_grid(g.ior, mu), g.n, &i0, &f0);
-  catmull_rom_weights(f0, w0);
-  auto row = [&](int p) { return g.rows[size_t(p - g.first)].cubic(i2, f2); };
-  double v = 0;
-  for (int a = 0; a < 4; ++a) {
-    const int p = i0 - 1 + a;
-    v += w0[a] * (p < 0 ? 2.0 * row(0) - row(1) : p >= g.n ? 2.0 * row(g.n - 1) - row(g.n - 2) : row(p));
-  }
+  const CatmullRomTaps t0 = catmull_rom_taps(g.warp.to_grid(g.ior, mu), g.n);
+  const double v = catmull_rom_sum(t0, g.n, [&](int p) { return g.rows[size_t(p - g.first)].cubic(i2, f2); });
   return g.encoding == Encoding::LogOneMinus ? 1.0 - std::exp(v) : v;
 }
 

@@ -61,9 +61,6 @@ class AlbedoSlice {
     Warp warp;
     Encoding encoding = Encoding::Value;
     static Padded of(const WarpedTable& t);
-    // The cell i and fraction f of grid coordinate x on n samples (those of
-    // WarpedTable::interpolate).
-    static void locate(double x, int n, int* i, double* f);
     // The cubic of cell i at fraction f, not decoded.
     double cubic(int i, double f) const;
     // Catmull-Rom at grid coordinate x, decoded (equal to WarpedTable::lookup_grid).

@@ -99,83 +99,33 @@ size_t WarpedTable::size() const {
   return n;
 }
 
-namespace {
-
-// Cell index i in [0, n - 2] and fraction f of grid coordinate x.
-void locate(double x, int n, int* i, double* f) {
-  const double c = std::clamp(x, 0.0, 1.0) * (n - 1);
-  *i = std::min(int(c), n - 2);
-  *f = c - *i;
-}
-
-// Sample k of a row of n samples, extended linearly beyond both ends.
-template <class At>
-double extended(At&& at, int k, int n) {
-  if (k < 0) return 2.0 * at(0) - at(1);
-  if (k >= n) return 2.0 * at(n - 1) - at(n - 2);
-  return at(k);
-}
-
-}  // namespace
-
-namespace {
-
-// One Catmull-Rom axis of a lookup: the first of the four samples (i - 1, may be -1) and their
-// weights.
-struct Taps {
-  int first;
-  double w[4];
-};
-Taps taps(double x, int n) {
-  Taps t;
-  double f;
-  locate(x, n, &t.first, &f);
-  t.first -= 1;
-  catmull_rom_weights(f, t.w);
-  return t;
-}
-// Whether the four samples lie inside the row (no extended sample needed).
-bool inside(const Taps& t, int n) { return t.first >= 0 && t.first + 3 < n; }
-
-// sum_k w[k] at(first + k), the samples beyond the ends extended linearly (see the header).
-template <class At>
-double weighted_sum(const Taps& t, int n, At&& at) {
-  double s = 0;
-  if (inside(t, n))
-    for (int k = 0; k < 4; ++k) s += t.w[k] * at(t.first + k);
-  else
-    for (int k = 0; k < 4; ++k) s += t.w[k] * extended(at, t.first + k, n);
-  return s;
-}
-
-}  // namespace
 
 double WarpedTable::interpolate(double x0, double x1, double x2) const {
   if (axes.empty() || axes.size() > 3) throw std::invalid_argument("WarpedTable: rank must be 1, 2 or 3 (" + name + ")");
   const double* v = values.data();
   const int n0 = axes[0].size;
-  const Taps t0 = taps(x0, n0);
-  if (axes.size() == 1) return weighted_sum(t0, n0, [&](int k) { return v[k]; });
+  const CatmullRomTaps t0 = catmull_rom_taps(x0, n0);
+  if (axes.size() == 1) return catmull_rom_sum(t0, n0, [&](int k) { return v[k]; });
   // Higher ranks: interpolate along the fastest axis first, then across rows (and planes).
   const int n1 = axes[1].size;
-  const Taps t1 = taps(x1, n1);
+  const CatmullRomTaps t1 = catmull_rom_taps(x1, n1);
   if (axes.size() == 2) {
     auto row = [&](int r) {
       const double* p = v + size_t(r) * size_t(n1);
-      return weighted_sum(t1, n1, [&](int k) { return p[k]; });
+      return catmull_rom_sum(t1, n1, [&](int k) { return p[k]; });
     };
-    return weighted_sum(t0, n0, row);
+    return catmull_rom_sum(t0, n0, row);
   }
   const int n2 = axes[2].size;
-  const Taps t2 = taps(x2, n2);
+  const CatmullRomTaps t2 = catmull_rom_taps(x2, n2);
   auto plane = [&](int q) {
     auto row = [&](int r) {
       const double* p = v + (size_t(q) * size_t(n1) + size_t(r)) * size_t(n2);
-      return weighted_sum(t2, n2, [&](int k) { return p[k]; });
+      return catmull_rom_sum(t2, n2, [&](int k) { return p[k]; });
     };
-    return weighted_sum(t1, n1, row);
+    return catmull_rom_sum(t1, n1, row);
   };
-  return weighted_sum(t0, n0, plane);
+  return catmull_rom_sum(t0, n0, plane);
 }
 
 WarpedTable WarpedTable::slice(double x0) const {
@@ -198,20 +148,14 @@ WarpedTable WarpedTable::slice_middle(double x1) const {
   s.axes = {axes[0], axes[2]};
   s.encoding = encoding;
   const int n0 = axes[0].size, n1 = axes[1].size, n2 = axes[2].size;
-  int i1;
-  double f1, w1[4];
-  locate(x1, n1, &i1, &f1);
-  catmull_rom_weights(f1, w1);
+  const CatmullRomTaps t1 = catmull_rom_taps(x1, n1);
   // The interpolant is linear in the samples, so the middle axis can be interpolated first: at
-  // each (slow, fast) sample, the Catmull-Rom sum over the middle axis (extended as in interpolate).
+  // each (slow, fast) sample, the Catmull-Rom sum over the middle axis (as in interpolate).
   s.values.reserve(size_t(n0) * size_t(n2));
   for (int p = 0; p < n0; ++p)
-    for (int k = 0; k < n2; ++k) {
-      auto at = [&](int r) { return values[(size_t(p) * size_t(n1) + size_t(r)) * size_t(n2) + size_t(k)]; };
-      double v = 0;
-      for (int b = 0; b < 4; ++b) v += w1[b] * extended(at, i1 - 1 + b, n1);
-      s.values.push_back(v);
-    }
+    for (int k = 0; k < n2; ++k)
+      s.values.push_back(catmull_rom_sum(
+          t1, n1, [&](int r) { return values[(size_t(p) * size_t(n1) + size_t(r)) * size_t(n2) + size_t(k)]; }));
   return s;
 }
 

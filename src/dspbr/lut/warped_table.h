@@ -90,4 +90,43 @@ inline void catmull_rom_weights(double f, double w[4]) {
   w[3] = 0.5 * (f3 - f2);
 }
 
+// Cell index i in [0, n - 2] and fraction f of grid coordinate x (clamped to [0, 1]) on n >= 2
+// samples at i / (n - 1).
+inline void grid_cell(double x, int n, int* i, double* f) {
+  const double c = (x > 0.0 ? (x < 1.0 ? x : 1.0) : 0.0) * (n - 1);
+  *i = int(c) < n - 2 ? int(c) : n - 2;
+  *f = c - *i;
+}
+
+// One Catmull-Rom axis of a lookup at grid coordinate x on n samples: the first of its four
+// samples (cell index - 1: may be -1, and first + 3 may reach n) and their weights.
+struct CatmullRomTaps {
+  int first;
+  double w[4];
+};
+inline CatmullRomTaps catmull_rom_taps(double x, int n) {
+  CatmullRomTaps t;
+  double f;
+  grid_cell(x, n, &t.first, &f);
+  t.first -= 1;
+  catmull_rom_weights(f, t.w);
+  return t;
+}
+
+// sum_k w[k] at(first + k) over a row of n samples at(0 .. n - 1), the samples beyond both ends
+// extended linearly (p_-1 = 2 p_0 - p_1, p_n = 2 p_n-1 - p_n-2; see the top of this file).
+template <class At>
+double catmull_rom_sum(const CatmullRomTaps& t, int n, At&& at) {
+  double s = 0;
+  if (t.first >= 0 && t.first + 3 < n) {
+    for (int k = 0; k < 4; ++k) s += t.w[k] * at(t.first + k);
+    return s;
+  }
+  for (int k = 0; k < 4; ++k) {
+    const int j = t.first + k;
+    s += t.w[k] * (j < 0 ? 2.0 * at(0) - at(1) : j >= n ? 2.0 * at(n - 1) - at(n - 2) : at(j));
+  }
+  return s;
+}
+
 }  // namespace dspbr
