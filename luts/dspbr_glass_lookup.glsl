@@ -4527,13 +4527,13 @@ float dspbr_glass_f0(float ior) {
 float dspbr_glass_E(float cos_theta, float roughness, float ior, int inside) {
   float r = clamp(roughness, 0.0f, 1.0f);
   float mu = clamp(cos_theta, 0.0f, 1.0f);
-  return inside != 0 ? dspbr_lut_interp_dspbr_Glass_inv_E(dspbr_lut_glass_ior_warp(ior, mu, 1.0f), clamp(r, 0.0f, 1.0f), dspbr_lut_ggx_cos_warp(mu, r * r, 0.600000024f))
-                     : dspbr_lut_interp_dspbr_Glass_E(dspbr_lut_glass_ior_warp(ior, mu, 1.0f), clamp(r, 0.0f, 1.0f), dspbr_lut_ggx_cos_warp(mu, r * r, 0.600000024f));
+  return inside != 0 ? dspbr_lut_interp_dspbr_Glass_inv_E(dspbr_lut_glass_ior_warp(ior, mu, 1.0f), clamp(r, 0.0f, 1.0f), pow(dspbr_lut_ggx_cos_t(mu, r * r), 0.600000024f))
+                     : dspbr_lut_interp_dspbr_Glass_E(dspbr_lut_glass_ior_warp(ior, mu, 1.0f), clamp(r, 0.0f, 1.0f), pow(dspbr_lut_ggx_cos_t(mu, r * r), 0.600000024f));
 }
 // 2 Integral E_g mu dmu (the cosine average of dspbr_glass_E).
 float dspbr_glass_E_avg(float roughness, float ior, int inside) {
   float xf = clamp(2.0f * (ior - 1.0f) / (ior + 1.0f), 0.0f, 1.0f);
-  return inside != 0 ? dspbr_lut_interp_dspbr_Glass_inv_E_avg(pow(clamp(xf, 0.0f, 1.0f), 0.5f), clamp(roughness, 0.0f, 1.0f)) : dspbr_lut_interp_dspbr_Glass_E_avg(pow(clamp(xf, 0.0f, 1.0f), 0.5f), clamp(roughness, 0.0f, 1.0f));
+  return inside != 0 ? dspbr_lut_interp_dspbr_Glass_inv_E_avg(sqrt(clamp(xf, 0.0f, 1.0f)), clamp(roughness, 0.0f, 1.0f)) : dspbr_lut_interp_dspbr_Glass_E_avg(sqrt(clamp(xf, 0.0f, 1.0f)), clamp(roughness, 0.0f, 1.0f));
 }
 // Albedo of the white transparent core on one side: E_g + F_ms (1 - E_m) (the spec's M_r,ms F_ms).
 float dspbr_glass_core_E(float cos_theta, float roughness, float ior, int inside) {

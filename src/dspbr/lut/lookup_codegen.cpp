@@ -18,6 +18,13 @@ std::string flit(double v) {
   return s + "f";
 }
 
+// u^p as the warps evaluate it (lut/warped_table.cpp): u, sqrt(u) for p = 1/2, else pow.
+std::string power_expr(const std::string& u, double p) {
+  if (p == 1) return u;
+  if (p == 0.5) return fmt::format("sqrt({})", u);
+  return fmt::format("pow({}, {})", u, flit(p));
+}
+
 // Grid-coordinate expression of a warp applied to `v` (alpha: the GgxCos roughness term).
 std::string warp_expr(const Warp& w, const std::string& v, const std::string& alpha) {
   switch (w.kind) {
@@ -25,11 +32,10 @@ std::string warp_expr(const Warp& w, const std::string& v, const std::string& al
       std::string u = w.lo == 0 ? fmt::format("clamp({}, 0.0f, 1.0f)", v)
                                 : fmt::format("((clamp({}, {}, 1.0f) - {}) / {})", v, flit(w.lo), flit(w.lo),
                                               flit(1.0 - w.lo));
-      if (w.p == 1) return u;
-      return fmt::format("pow({}, {})", u, flit(w.p));
+      return power_expr(u, w.p);
     }
     case WarpKind::GgxCos:
-      return fmt::format("dspbr_lut_ggx_cos_warp({}, {}, {})", v, alpha, flit(w.p));
+      return power_expr(fmt::format("dspbr_lut_ggx_cos_t({}, {})", v, alpha), w.p);
     case WarpKind::LogRoughness:
       return fmt::format("(log(clamp({}, {}, 1.0f) / {}) * {})", v, flit(w.lo), flit(w.lo),
                          flit(1.0 / std::log(1.0 / w.lo)));
@@ -215,12 +221,11 @@ const char* kHelpers =
     "  return 0.5f * ((-f3 + 2.0f * f2 - f) * p0 + (3.0f * f3 - 5.0f * f2 + 2.0f) * p1 +\n"
     "                 (-3.0f * f3 + 4.0f * f2 + f) * p2 + (f3 - f2) * p3);\n"
     "}\n"
-    "// ggx_cos warp: x = t^p, t = mu / (mu + alpha sqrt(1 - mu^2)) (t = 1 when alpha = 0).\n"
-    "float dspbr_lut_ggx_cos_warp(float cos_theta, float alpha, float p) {\n"
+    "// ggx_cos warp x = t^p: t = mu / (mu + alpha sqrt(1 - mu^2)) (t = 1 when alpha = 0).\n"
+    "float dspbr_lut_ggx_cos_t(float cos_theta, float alpha) {\n"
     "  float mu = clamp(cos_theta, 0.0f, 1.0f);\n"
     "  float d = mu + alpha * sqrt(max(1.0f - mu * mu, 0.0f));\n"
-    "  float t = d > 0.0f ? mu / d : 1.0f;\n"
-    "  return pow(t, p);\n"
+    "  return d > 0.0f ? mu / d : 1.0f;\n"
     "}\n";
 
 // The glass file's shared text: its ior warp (lut/warped_table.h GlassIor).

@@ -32,10 +32,10 @@ std::vector<WarpedAxis> renderer_default_axes(const std::string& name, int scale
   const int s = scale;
   if (name == "GGX_E")
     return {axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0),
-            axis("cos_theta", scaled(64, s), WarpKind::GgxCos, 0.6, 0.0)};
+            axis("cos_theta", scaled(64, s), WarpKind::GgxCos, 0.5, 0.0)};
   if (name == "GGX_beta")  // stores beta - (1 - mu)^5, which vanishes as r -> 0
     return {axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0),
-            axis("cos_theta", scaled(32, s), WarpKind::GgxCos, 0.6, 0.0)};
+            axis("cos_theta", scaled(32, s), WarpKind::GgxCos, 0.5, 0.0)};
   if (name == "GGX_E_avg") return {axis("roughness", scaled(32, s), WarpKind::Power, 0.5, kAvgMinRoughness)};
   if (name == "GGX_B_avg") return {axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0)};
   if (name == "Sheen_E" || name == "Sheen_ash_E")

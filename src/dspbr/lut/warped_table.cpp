@@ -25,33 +25,13 @@ double glass_k_mu2(double k, double mu) {
   return k * m * m;
 }
 
-// The argument of the power of the Power and GgxCos warps.
-double power_base(const Warp& w, double v, double alpha) {
-  if (w.kind == WarpKind::Power) return (std::clamp(v, w.lo, 1.0) - w.lo) / (1.0 - w.lo);
-  const double mu = std::clamp(v, 0.0, 1.0);
-  const double d = mu + alpha * std::sqrt(std::max(0.0, 1.0 - mu * mu));
-  return d > 0 ? mu / d : 1.0;  // alpha = 0 (mirror): t = 1 for every mu
-}
-
 }  // namespace
-
-double Warp::to_grid_fast(double v, double alpha) const {
-  if (kind == WarpKind::LogRoughness || kind == WarpKind::GlassIor) return to_grid(v, alpha);
-  const double u = power_base(*this, v, alpha);
-  if (p == 1) return u;
-  if (p == 0.5) return std::sqrt(u);
-  if (p == 0.25) return std::sqrt(std::sqrt(u));
-  return u > 0 ? std::exp2(p * std::log2(u)) : std::pow(u, p);
-}
 
 double Warp::to_grid(double v, double alpha) const {
   switch (kind) {
-    case WarpKind::Power: {
-      const double u = power_base(*this, v, alpha);
-      return p == 1 ? u : std::pow(u, p);
-    }
+    case WarpKind::Power:
     case WarpKind::GgxCos:
-      return std::pow(power_base(*this, v, alpha), p);
+      return warp_power(warp_power_base(*this, v, alpha), p);
     case WarpKind::LogRoughness:
       return std::log(std::clamp(v, lo, 1.0) / lo) / std::log(1.0 / lo);
     case WarpKind::GlassIor:

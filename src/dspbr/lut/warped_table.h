@@ -17,6 +17,8 @@
 //                   scale x_F ~ mu^2 (the critical cosine sqrt(1 - 1/ior^2) ~ sqrt(x_F) meets mu):
 //                   the logarithmic half resolves that scale at every mu, the linear half the rest.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -37,15 +39,36 @@ struct Warp {
 
   // Grid coordinate x in [0, 1] of physical coordinate v; aux: alpha for GgxCos, mu for GlassIor.
   double to_grid(double v, double aux = 0) const;
-  // The same within a few ulp, for the lobes' per-evaluation lookups: the power x^p as sqrt for
-  // p = 1/2 and 1/4, else exp2(p log2 x) (about half the cost of std::pow). The generator and the
-  // LutSet lookups keep to_grid, so the committed tables do not depend on this form.
+  // The same within a few ulp, for the lobes' per-evaluation lookups (inline, below): the power
+  // x^p as sqrt for p = 1/2 (exactly to_grid) and 1/4, else exp2(p log2 x) (about half the cost of
+  // std::pow). The generator and the LutSet lookups keep to_grid, so the committed tables do not
+  // depend on this form.
   double to_grid_fast(double v, double aux = 0) const;
   // Inverse: the physical coordinate of grid coordinate x.
   double from_grid(double x, double aux = 0) const;
   // Short description, e.g. "power(p=0.25, lo=0.001)".
   std::string describe() const;
 };
+
+// The argument u of the power of the Power and GgxCos warps (v clamped to the domain).
+inline double warp_power_base(const Warp& w, double v, double alpha) {
+  if (w.kind == WarpKind::Power) return (std::clamp(v, w.lo, 1.0) - w.lo) / (1.0 - w.lo);
+  const double mu = std::clamp(v, 0.0, 1.0);
+  const double d = mu + alpha * std::sqrt(std::max(0.0, 1.0 - mu * mu));
+  return d > 0 ? mu / d : 1.0;  // alpha = 0 (mirror): t = 1 for every mu
+}
+
+// u^p of a warp: u itself for p = 1, the correctly rounded square root for p = 1/2 (the
+// ggx_cos and average axes: a square root costs a fraction of std::pow), else std::pow.
+inline double warp_power(double u, double p) { return p == 1 ? u : p == 0.5 ? std::sqrt(u) : std::pow(u, p); }
+
+inline double Warp::to_grid_fast(double v, double alpha) const {
+  if (kind == WarpKind::LogRoughness || kind == WarpKind::GlassIor) return to_grid(v, alpha);
+  const double u = warp_power_base(*this, v, alpha);
+  if (p == 1 || p == 0.5) return warp_power(u, p);
+  if (p == 0.25) return std::sqrt(std::sqrt(u));
+  return u > 0 ? std::exp2(p * std::log2(u)) : std::pow(u, p);
+}
 
 struct WarpedAxis {
   std::string name;  // physical coordinate: "roughness", "cos_theta", "alpha_b"
