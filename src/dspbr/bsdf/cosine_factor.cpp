@@ -34,9 +34,13 @@ Rgb CoreFresnel::film_side(double c) const {
 
 Rgb CoreFresnel::reflection(double c) const {
   const double s = specular, i = film_weight;
-  Rgb f = volumetric ? w_metal * fresnel_schlick(c, rho, Rgb(1.0)) + w_opaque * s * fresnel_schlick(c, f0_diel, Rgb(1.0)) +
-                           w_transp * s * fresnel_schlick_d(c, f0_diel, Rgb(1.0), eta_i, eta_o)
-                     : fresnel_schlick(c, rho_sr0, rho_sr90);
+  Rgb f = volumetric ? Rgb(0) : fresnel_schlick(c, rho_sr0, rho_sr90);
+  if (volumetric) {
+    // A term of weight 0 adds exactly +0 (the Schlick terms are finite): it is not evaluated.
+    if (w_metal > 0) f = w_metal * fresnel_schlick(c, rho, Rgb(1.0));
+    if (w_opaque > 0) f += w_opaque * s * fresnel_schlick(c, f0_diel, Rgb(1.0));
+    if (w_transp > 0) f += w_transp * s * fresnel_schlick_d(c, f0_diel, Rgb(1.0), eta_i, eta_o);
+  }
   if (i > 0) {
     // R(c, eta) once for the opaque and (seen from outside) the transparent part; a term of weight
     // 0 contributes exactly 0 and is not evaluated.
@@ -64,15 +68,5 @@ Rgb CoreFresnel::volumetric_transmission(double c) const {
   return f;
 }
 
-Rgb CosineFactor::operator()(double c) const {
-  switch (kind_) {
-    case Kind::CoreReflection: return core_.reflection(c);
-    case Kind::ThinTransmission: return core_.thin_transmission(c);
-    case Kind::VolumetricTransmission: return core_.volumetric_transmission(c);
-    case Kind::Clearcoat: return Rgb(clearcoat_ * fresnel_clearcoat(c));
-    case Kind::Custom: return custom_(c);
-  }
-  return Rgb(0);
-}
 
 }  // namespace dspbr

@@ -97,4 +97,15 @@ class CosineFactor {
 // F_c(cos) = 0.04 + 0.96 (1 - |cos|)^5, the clearcoat's Schlick Fresnel (spec "Clearcoat").
 double fresnel_clearcoat(double cos_theta);
 
+inline Rgb CosineFactor::operator()(double c) const {
+  switch (kind_) {
+    case Kind::CoreReflection: return core_.reflection(c);
+    case Kind::ThinTransmission: return core_.thin_transmission(c);
+    case Kind::VolumetricTransmission: return core_.volumetric_transmission(c);
+    case Kind::Clearcoat: return Rgb(clearcoat_ * fresnel_clearcoat(c));
+    case Kind::Custom: return custom_(c);
+  }
+  return Rgb(0);
+}
+
 }  // namespace dspbr

@@ -52,16 +52,6 @@ AlbedoSlice::Padded AlbedoSlice::Padded::of(const WarpedTable& t) {
   return s;
 }
 
-double AlbedoSlice::Padded::cubic(int i, double f) const { return cubic_at(c.data() + 4 * size_t(i), f); }
-
-double AlbedoSlice::Padded::at_grid(double x) const {
-  int i;
-  double f;
-  grid_cell(x, n, &i, &f);
-  const double s = cubic(i, f);
-  return encoding == Encoding::LogOneMinus ? 1.0 - std::exp(s) : s;
-}
-
 namespace {
 
 // The E_m part's fingerprint (AlbedoSlice::EmKey): splitmix64 steps over the bits of the values
@@ -181,33 +171,8 @@ double AlbedoSlice::glass_at(double cos_theta) const {
   return g.encoding == Encoding::LogOneMinus ? 1.0 - std::exp(v) : v;
 }
 
-AlbedoSlice::EmPart AlbedoSlice::e_m_part(double cos_theta) const {
-  if (!em_key_.fingerprint) return {0, (*this)(cos_theta)};
-  const double x = table_.warp.to_grid_fast(std::clamp(cos_theta, 0.0, 1.0), alpha_);
-  return {x, table_.at_grid(x)};
-}
-
-double AlbedoSlice::from_e_m_part(double cos_theta, const EmPart& part) const {
-  if (!em_key_.fingerprint) return part.e_m;
-  if (kind_ == Kind::Renderer) return part.e_m;
-  const double mu = std::clamp(cos_theta, 0.0, 1.0);
-  const double xb = shared_warp_ ? part.x : beta_.warp.to_grid_fast(mu, alpha_);
-  const double beta = RendererLuts::decode_beta_fast(mu, beta_.at_grid(xb));
-  return RendererLuts::compose_E_base(f0_, part.e_m, beta, f_ms_);
-}
-
-double AlbedoSlice::operator()(double cos_theta) const {
-  switch (kind_) {
-    case Kind::Published:
-      return published_.lookup({cos_theta});
-    case Kind::Renderer:
-      return table_.at_grid(table_.warp.to_grid_fast(cos_theta, alpha_));
-    case Kind::RendererBase:
-      return from_e_m_part(cos_theta, e_m_part(cos_theta));
-    case Kind::RendererGlass:
-      return glass_at(cos_theta);
-  }
-  return 0;
+double AlbedoSlice::slow_at(double cos_theta) const {
+  return kind_ == Kind::Published ? published_.lookup({cos_theta}) : glass_at(cos_theta);
 }
 
 }  // namespace dspbr

@@ -11,9 +11,12 @@
 // across them per lookup as WarpedTable::interpolate does; these rows are shared, immutable, by
 // the copies of a slice.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 
+#include "dspbr/cubic_spline.h"
 #include "dspbr/lut/lut_set.h"
 
 namespace dspbr {
@@ -62,9 +65,15 @@ class AlbedoSlice {
     Encoding encoding = Encoding::Value;
     static Padded of(const WarpedTable& t);
     // The cubic of cell i at fraction f, not decoded.
-    double cubic(int i, double f) const;
+    double cubic(int i, double f) const { return cubic_at(c.data() + 4 * size_t(i), f); }
     // Catmull-Rom at grid coordinate x, decoded (equal to WarpedTable::lookup_grid).
-    double at_grid(double x) const;
+    double at_grid(double x) const {
+      int i;
+      double f;
+      grid_cell(x, n, &i, &f);
+      const double s = cubic(i, f);
+      return encoding == Encoding::LogOneMinus ? 1.0 - std::exp(s) : s;
+    }
   };
   // RendererGlass: the table cut at the roughness (WarpedTable::slice_middle), its rows
   // first .. first + rows.size() - 1 of the n ior samples, each over cos theta (not decoded).
@@ -76,6 +85,7 @@ class AlbedoSlice {
     Encoding encoding = Encoding::Value;
   };
   double glass_at(double cos_theta) const;
+  double slow_at(double cos_theta) const;  // Published and RendererGlass
   enum class Kind { Published, Renderer, RendererBase, RendererGlass };
   Kind kind_ = Kind::Published;
   Table published_;  // 1-D over cos theta
@@ -87,5 +97,30 @@ class AlbedoSlice {
   bool shared_warp_ = false;  // RendererBase: GGX_E and GGX_beta have the same cos theta warp
   double f0_ = 0, f_ms_ = 0;  // RendererBase: f0 and F_ms(f0, 1; E_m,avg)
 };
+
+// The lookups every evaluation makes (inline: one call per lobe, not one per step).
+inline AlbedoSlice::EmPart AlbedoSlice::e_m_part(double cos_theta) const {
+  if (!em_key_.fingerprint) return {0, (*this)(cos_theta)};
+  const double x = table_.warp.to_grid_fast(std::clamp(cos_theta, 0.0, 1.0), alpha_);
+  return {x, table_.at_grid(x)};
+}
+
+inline double AlbedoSlice::from_e_m_part(double cos_theta, const EmPart& part) const {
+  if (!em_key_.fingerprint || kind_ == Kind::Renderer) return part.e_m;
+  const double mu = std::clamp(cos_theta, 0.0, 1.0);
+  const double xb = shared_warp_ ? part.x : beta_.warp.to_grid_fast(mu, alpha_);
+  const double beta = RendererLuts::decode_beta_fast(mu, beta_.at_grid(xb));
+  return RendererLuts::compose_E_base(f0_, part.e_m, beta, f_ms_);
+}
+
+inline double AlbedoSlice::operator()(double cos_theta) const {
+  switch (kind_) {
+    case Kind::Renderer: return table_.at_grid(table_.warp.to_grid_fast(cos_theta, alpha_));
+    case Kind::RendererBase: return from_e_m_part(cos_theta, e_m_part(cos_theta));
+    case Kind::Published:
+    case Kind::RendererGlass: break;
+  }
+  return slow_at(cos_theta);
+}
 
 }  // namespace dspbr
