@@ -25,6 +25,7 @@ void select_lobes(double* w, const bool* present, int n) {
 
 LobeMixture::LobeMixture(Layering layering) : layering_(std::move(layering)) {
   const Frame& f = layering_.core;
+  layered_ = layering_.clearcoat > 0 || layering_.sheen.has_value();
   core_identity_ = f.t.x == 1 && f.t.y == 0 && f.t.z == 0 && f.b.x == 0 && f.b.y == 1 && f.b.z == 0 && f.n.x == 0 &&
                    f.n.y == 0 && f.n.z == 1;
 }
@@ -123,7 +124,9 @@ Rgb LobeMixture::eval(const Vec3& v, const Vec3& l, double s) const {
     } else {
       fk = eval_lobe(e, v_core, l_core, cache);
     }
-    if (fk.max_component() > 0) {
+    if (!layered_) {
+      sum += fk * s;  // every layer factor is s (fk is finite and >= 0: +0 for a zero value)
+    } else if (fk.max_component() > 0) {
       if (!f) f = factors(v, l, s);
       sum += fk * factor(*f, e.layer);
     }

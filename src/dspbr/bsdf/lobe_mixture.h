@@ -91,6 +91,7 @@ class LobeMixture {
 
   Layering layering_;
   bool core_identity_ = true;  // core frame == (x, y, z)
+  bool layered_ = false;       // a clearcoat or a sheen scales the layers below (else every factor is s)
   std::array<Entry, kMaxLobes> entries_;
   int n_ = 0;
 };
