@@ -41,7 +41,9 @@ namespace {
 // outermost samples (clamp-to-edge). The continuous index is Axis::index written out.
 inline void locate(const Axis& a, double x, int& i, double& f) {
   const int n = a.size;
-  const double t = (x - a.lo) / (a.hi - a.lo);
+  // On a unit axis (lo = 0, hi = 1: every published table) t is x itself: (x - 0) / 1 == x
+  // exactly, without the division.
+  const double t = a.lo == 0 && a.hi == 1 ? x : (x - a.lo) / (a.hi - a.lo);
   const double u = a.kind == GridKind::CellCentred ? t * n - 0.5 : t * (n - 1);
   const double c = u > 0.0 ? std::min(u, double(n - 1)) : 0.0;  // NaN -> 0
   i = std::min(int(c), std::max(0, n - 2));  // c >= 0: truncation is floor
