@@ -9,12 +9,6 @@ namespace dspbr {
 MicrofacetReflection::MicrofacetReflection(double alpha_u, double alpha_v, CosineFactor fresnel)
     : ggx_(alpha_u, alpha_v), delta_(ggx_.effectively_smooth()), fresnel_(std::move(fresnel)) {}
 
-Rgb MicrofacetReflection::eval(const Vec3& v, const Vec3& l) const {
-  if (delta_ || v.z <= 0 || l.z <= 0) return Rgb(0);
-  const Vec3 h = normalize(v + l);
-  // M_r = D G / (4 |v.n| |l.n|) times the Fresnel factor at cos theta_r = v.h_r.
-  return fresnel_(dot(v, h)) * ggx_.M_r(v, l, h);
-}
 
 double MicrofacetReflection::pdf(const Vec3& v, const Vec3& l) const {
   // Density of l = reflect(v, h), h ~ D_v(h): D_v(h) / (4 v.h) (Heitz 2018). Reflections below the

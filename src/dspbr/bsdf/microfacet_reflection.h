@@ -29,4 +29,12 @@ class MicrofacetReflection final : public Lobe {
   CosineFactor fresnel_;
 };
 
+// Inline: the mixture calls it directly for the core's reflection (bsdf/lobe_mixture.h).
+inline Rgb MicrofacetReflection::eval(const Vec3& v, const Vec3& l) const {
+  if (delta_ || v.z <= 0 || l.z <= 0) return Rgb(0);
+  const Vec3 h = normalize(v + l);
+  // M_r = D G / (4 |v.n| |l.n|) times the Fresnel factor at cos theta_r = v.h_r.
+  return fresnel_(dot(v, h)) * ggx_.M_r(v, l, h);
+}
+
 }  // namespace dspbr

@@ -12,9 +12,6 @@ MultiScatterReflection::MultiScatterReflection(double r_uv, const Rgb& f_ms, con
   inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kPi * missing_avg) : 0.0;
 }
 
-double MultiScatterReflection::missing(double cos_theta, LobeCache& cache) const {
-  return std::clamp(1.0 - cache.albedo(e_m_, std::abs(cos_theta)), 0.0, 1.0);
-}
 
 double MultiScatterReflection::missing(double cos_theta) const {
   LobeCache none;
@@ -26,10 +23,6 @@ Rgb MultiScatterReflection::eval(const Vec3& v, const Vec3& l) const {
   return eval(v, l, none);
 }
 
-Rgb MultiScatterReflection::eval(const Vec3& v, const Vec3& l, LobeCache& cache) const {
-  if (v.z <= 0 || l.z <= 0 || inv_norm_ == 0) return Rgb(0);
-  return f_ms_ * (missing(v.z, cache) * missing(l.z, cache) * inv_norm_);
-}
 
 double MultiScatterReflection::pdf(const Vec3& v, const Vec3& l) const {
   return v.z > 0 ? cosine_hemisphere_pdf(l) : 0.0;

@@ -4,7 +4,10 @@
 // times a colour F_ms (computed by the caller with fresnel_ms). Cosine-weighted sampling.
 // Its directional albedo is (1 - E_m(v.n)) F_ms exactly (2 pi Integral (1 - E_m) mu dmu = pi (1 - E_m,avg)).
 #pragma once
+#include <algorithm>
+
 #include "dspbr/bsdf/lobe.h"
+#include "dspbr/bsdf/lobe_cache.h"
 #include "dspbr/lut/albedo_slice.h"
 
 namespace dspbr {
@@ -33,5 +36,15 @@ class MultiScatterReflection final : public Lobe {
   AlbedoSlice e_m_;  // E_m(mu; r_uv)
   double inv_norm_;  // 1 / (pi (1 - E_m,avg)), 0 in the mirror limit
 };
+
+// Inline: the mixture calls them directly for the core's compensation (bsdf/lobe_mixture.h).
+inline double MultiScatterReflection::missing(double cos_theta, LobeCache& cache) const {
+  return std::clamp(1.0 - cache.albedo(e_m_, std::abs(cos_theta)), 0.0, 1.0);
+}
+
+inline Rgb MultiScatterReflection::eval(const Vec3& v, const Vec3& l, LobeCache& cache) const {
+  if (v.z <= 0 || l.z <= 0 || inv_norm_ == 0) return Rgb(0);
+  return f_ms_ * (missing(v.z, cache) * missing(l.z, cache) * inv_norm_);
+}
 
 }  // namespace dspbr
