@@ -68,5 +68,4 @@ Rgb CoreFresnel::volumetric_transmission(double c) const {
   return f;
 }
 
-
 }  // namespace dspbr

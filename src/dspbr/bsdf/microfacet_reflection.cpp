@@ -9,7 +9,6 @@ namespace dspbr {
 MicrofacetReflection::MicrofacetReflection(double alpha_u, double alpha_v, CosineFactor fresnel)
     : ggx_(alpha_u, alpha_v), delta_(ggx_.effectively_smooth()), fresnel_(std::move(fresnel)) {}
 
-
 double MicrofacetReflection::pdf(const Vec3& v, const Vec3& l) const {
   // Density of l = reflect(v, h), h ~ D_v(h): D_v(h) / (4 v.h) (Heitz 2018). Reflections below the
   // horizon are failed samples (bsdf.h), so the pdf is 0 there and integrates to 1 - P(below).

@@ -12,7 +12,6 @@ MultiScatterReflection::MultiScatterReflection(double r_uv, const Rgb& f_ms, con
   inv_norm_ = missing_avg > kMinMissingEnergy ? 1.0 / (kPi * missing_avg) : 0.0;
 }
 
-
 double MultiScatterReflection::missing(double cos_theta) const {
   LobeCache none;
   return missing(cos_theta, none);
@@ -22,7 +21,6 @@ Rgb MultiScatterReflection::eval(const Vec3& v, const Vec3& l) const {
   LobeCache none;
   return eval(v, l, none);
 }
-
 
 double MultiScatterReflection::pdf(const Vec3& v, const Vec3& l) const {
   return v.z > 0 ? cosine_hemisphere_pdf(l) : 0.0;

@@ -18,7 +18,7 @@ std::string flit(double v) {
   return s + "f";
 }
 
-// u^p as the warps evaluate it (lut/warped_table.cpp): u, sqrt(u) for p = 1/2, else pow.
+// u^p as the warps evaluate it (warp_power, lut/warped_table.h): u, sqrt(u) for p = 1/2, else pow.
 std::string power_expr(const std::string& u, double p) {
   if (p == 1) return u;
   if (p == 0.5) return fmt::format("sqrt({})", u);

@@ -79,7 +79,6 @@ size_t WarpedTable::size() const {
   return n;
 }
 
-
 double WarpedTable::interpolate(double x0, double x1, double x2) const {
   if (axes.empty() || axes.size() > 3) throw std::invalid_argument("WarpedTable: rank must be 1, 2 or 3 (" + name + ")");
   const double* v = values.data();
