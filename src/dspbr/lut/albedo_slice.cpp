@@ -168,7 +168,7 @@ double AlbedoSlice::glass_at(double cos_theta) const {
   // Across the ior samples as WarpedTable::interpolate: cell, weights, linear extension.
   const CatmullRomTaps t0 = catmull_rom_taps(g.warp.to_grid(g.ior, mu), g.n);
   const double v = catmull_rom_sum(t0, g.n, [&](int p) { return g.rows[size_t(p - g.first)].cubic(i2, f2); });
-  return g.encoding == Encoding::LogOneMinus ? 1.0 - std::exp(v) : v;
+  return decode(g.encoding, v);
 }
 
 double AlbedoSlice::slow_at(double cos_theta) const {

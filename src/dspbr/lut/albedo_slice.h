@@ -71,8 +71,7 @@ class AlbedoSlice {
       int i;
       double f;
       grid_cell(x, n, &i, &f);
-      const double s = cubic(i, f);
-      return encoding == Encoding::LogOneMinus ? 1.0 - std::exp(s) : s;
+      return decode(encoding, cubic(i, f));
     }
   };
   // RendererGlass: the table cut at the roughness (WarpedTable::slice_middle), its rows

@@ -53,7 +53,6 @@ std::string decode_text(const WarpedTable& t) {
   return s;
 }
 
-// The tables a set holds: the DSPBR 2025x ones, then the glass ones when present.
 }  // namespace
 
 std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, int scale) {

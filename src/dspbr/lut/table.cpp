@@ -19,7 +19,6 @@ double Axis::coord(int i) const {
   return size > 1 ? lo + double(i) / (size - 1) * (hi - lo) : 0.5 * (lo + hi);
 }
 
-
 size_t Table::size() const {
   size_t n = 1;
   for (const Axis& a : axes) n *= size_t(a.size);
@@ -35,27 +34,26 @@ size_t Table::offset(const std::vector<int>& idx) const {
 
 double Table::lookup(const std::vector<double>& x) const { return lookup(x.data(), x.size()); }
 
+double Axis::index(double x) const {
+  // On a unit axis (lo = 0, hi = 1: every published table) t is x itself: (x - 0) / 1 == x
+  // exactly, without the division.
+  const double t = lo == 0 && hi == 1 ? x : (x - lo) / (hi - lo);
+  return kind == GridKind::CellCentred ? t * size - 0.5 : t * (size - 1);
+}
+
 namespace {
 
 // Cell index i in [0, max(0, n - 2)] and fraction f of position x on an axis, clamped to the
-// outermost samples (clamp-to-edge). The continuous index is Axis::index written out.
+// outermost samples (clamp-to-edge).
 inline void locate(const Axis& a, double x, int& i, double& f) {
   const int n = a.size;
-  // On a unit axis (lo = 0, hi = 1: every published table) t is x itself: (x - 0) / 1 == x
-  // exactly, without the division.
-  const double t = a.lo == 0 && a.hi == 1 ? x : (x - a.lo) / (a.hi - a.lo);
-  const double u = a.kind == GridKind::CellCentred ? t * n - 0.5 : t * (n - 1);
+  const double u = a.index(x);
   const double c = u > 0.0 ? std::min(u, double(n - 1)) : 0.0;  // NaN -> 0
   i = std::min(int(c), std::max(0, n - 2));  // c >= 0: truncation is floor
   f = n > 1 ? c - i : 0.0;
 }
 
 }  // namespace
-
-double Axis::index(double x) const {
-  const double t = (x - lo) / (hi - lo);
-  return kind == GridKind::CellCentred ? t * size - 0.5 : t * (size - 1);
-}
 
 double Table::lookup(const double* x, size_t x_rank) const {
   const size_t rank = axes.size();

@@ -139,8 +139,7 @@ WarpedTable WarpedTable::slice_middle(double x1) const {
 }
 
 double WarpedTable::lookup_grid(double x0, double x1, double x2) const {
-  const double s = interpolate(x0, x1, x2);
-  return encoding == Encoding::LogOneMinus ? 1.0 - std::exp(s) : s;
+  return decode(encoding, interpolate(x0, x1, x2));
 }
 
 }  // namespace dspbr

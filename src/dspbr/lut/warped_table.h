@@ -82,6 +82,9 @@ struct WarpedAxis {
 //                 as it vanishes like r^4 at r -> 0)
 enum class Encoding { Value, LogOneMinus };
 
+// The quantity of a stored (interpolated) value.
+inline double decode(Encoding e, double stored) { return e == Encoding::LogOneMinus ? 1.0 - std::exp(stored) : stored; }
+
 struct WarpedTable {
   std::string name;
   std::vector<WarpedAxis> axes;  // 1, 2 or 3, slowest first
