@@ -10,6 +10,7 @@
 
 #include "../fits/dspbr_fits.hpp"
 #include "../luts/dspbr_lookup.h"
+#include "dspbr/lut/albedo_slice.h"
 #include "dspbr/lut/lut_set.h"
 #include "dspbr/rng.h"
 
@@ -129,6 +130,35 @@ void BM_FitLutTableLookup(benchmark::State& state) {
   state.SetLabel(state.range(0) ? "renderer" : "published");
 }
 BENCHMARK(BM_FitLutTableLookup)->Arg(0)->Arg(1);
+
+// The lookup a lobe makes per evaluation: E_m(mu) of a slice cut at roughness 0.5 when the lobe is
+// built (lut/albedo_slice.h), published or renderer layout.
+void BM_SliceLookup(benchmark::State& state) {
+  const Inputs& in = inputs();
+  const dspbr::AlbedoSlice slice =
+      dspbr::AlbedoSlice::E_m(state.range(0) ? dspbr::LutSet::builtin() : dspbr::LutSet::published(), 0.5);
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(slice(in.mu[i]));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+  state.SetLabel(state.range(0) ? "renderer" : "published");
+}
+BENCHMARK(BM_SliceLookup)->Arg(0)->Arg(1);
+
+// The same two cosines at a time, as a lobe reads v.n and l.n (AlbedoSlice::e_m_parts: the
+// renderer layout's warp of both in one packed square root and division); items: lookups.
+void BM_SliceLookupPair(benchmark::State& state) {
+  const Inputs& in = inputs();
+  const dspbr::AlbedoSlice slice = dspbr::AlbedoSlice::E_m(dspbr::LutSet::builtin(), 0.5);
+  for (auto _ : state)
+    for (size_t i = 0; i + 1 < in.mu.size(); i += 2) {
+      dspbr::AlbedoSlice::EmPart part[2];
+      slice.e_m_parts(in.mu[i], in.mu[i + 1], part);
+      benchmark::DoNotOptimize(part);
+    }
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+  state.SetLabel("renderer");
+}
+BENCHMARK(BM_SliceLookupPair);
 
 void BM_LookupGeneratedC(benchmark::State& state) {
   const Inputs& in = inputs();

@@ -24,9 +24,11 @@ RATIO_TARGETS = {
 }
 LOOKUP_TARGET_NS = 10
 LOOKUPS = {"BM_FitLutTableLookup/0": "published", "BM_FitLutTableLookup/1": "renderer",
+           "BM_SliceLookup/0": "lobe's slice, published", "BM_SliceLookup/1": "lobe's slice, renderer",
+           "BM_SliceLookupPair": "lobe's slice, renderer, two cosines at a time",
            "BM_LookupGeneratedC": "generated C", "BM_FitLutBilinearFloat": "float bilinear, published 32x32"}
 LOOKUPS_PER_ITERATION = 1024  # bench/bench_fits.cpp: 1024 (mu, r) per iteration
-FILTER = "BM_(Eval|Sample)/[a-z_]*$|BM_FitLutTableLookup|BM_LookupGeneratedC|BM_FitLutBilinearFloat"
+FILTER = "BM_(Eval|Sample)/[a-z_]*$|BM_FitLutTableLookup|BM_SliceLookup|BM_LookupGeneratedC|BM_FitLutBilinearFloat"
 
 
 def fmt_ns(ns):

@@ -31,6 +31,30 @@ TEST(AlbedoSlice, EqualsTheFullLookups) {
   }
 }
 
+// The E_m parts at two cosines side by side (the packed warp of lut/warped_table.h) are bit for bit
+// the scalar e_m_part of each, over the domain and outside it (clamped), in both layouts.
+TEST(AlbedoSlice, PairedEmPartsEqualSingleOnes) {
+  for (const LutSet* luts : {&LutSet::builtin(), &LutSet::published()}) {
+    Pcg32 rng(5, 0);
+    for (int i = 0; i < 40; ++i) {
+      const double r = i == 0 ? 0.0 : i == 1 ? 1.0 : rng.next_double();
+      for (const AlbedoSlice& slice : {AlbedoSlice::E_m(*luts, r), AlbedoSlice::E_base(*luts, r, 0.04)}) {
+        const double special[] = {0.0, 1.0, 1e-300, 1e-8, -0.25, 1.5, std::nan("")};
+        for (int k = 0; k < 60; ++k) {
+          const double a = k < 7 ? special[k] : rng.next_double(), b = k < 7 ? rng.next_double() : special[k % 7];
+          AlbedoSlice::EmPart pair[2];
+          slice.e_m_parts(a, b, pair);
+          const AlbedoSlice::EmPart one[2] = {slice.e_m_part(a), slice.e_m_part(b)};
+          for (int j = 0; j < 2; ++j) {
+            EXPECT_EQ(pair[j].x, one[j].x) << r << " " << a << " " << b;
+            EXPECT_EQ(pair[j].e_m, one[j].e_m) << r << " " << a << " " << b;
+          }
+        }
+      }
+    }
+  }
+}
+
 // The glass slices (E_g at fixed roughness and ior; the renderer layout's ior coordinate depends
 // on mu, so its slice keeps the ior rows its lookups reach) against LutSet::E_glass, both layouts
 // and both sides, over the whole domain (ior 1 to beyond the tables' 3, r 0 to 1, mu 0 to 1).

@@ -14,7 +14,7 @@ DiffuseBase::DiffuseBase(const DiffuseParams& p, const LutSet& luts)
 }
 
 double DiffuseBase::missing(double cos_theta, LobeCache& cache) const {
-  return std::clamp(1.0 - cache.albedo(e_base_, std::abs(cos_theta)), 0.0, 1.0);
+  return missing_energy(cache.albedo(e_base_, std::abs(cos_theta)));
 }
 
 Rgb DiffuseBase::eval(const Vec3& v, const Vec3& l) const {
@@ -27,7 +27,9 @@ Rgb DiffuseBase::eval(const Vec3& v, const Vec3& l, LobeCache& cache) const {
   const double t = l.z > 0 ? 1.0 - p_.translucency : p_.translucency;  // T(v, l; l)
   if (t == 0) return Rgb(0);
   const double b_u = t * kBsdfInvPi;                                  // eq. "diffuse"
-  const double b_c = missing(v.z, cache) * missing(l.z, cache) * inv_norm_ * t;  // eq. "b_c"
+  double e[2];
+  cache.albedos(e_base_, v.z, std::abs(l.z), e);
+  const double b_c = missing_energy(e[0]) * missing_energy(e[1]) * inv_norm_ * t;  // eq. "b_c"
   const double s = p_.specular, i = p_.film_weight;
   Rgb base = Rgb((1.0 - i) * (b_u * (1.0 - s) + s * b_c));
   if (i > 0) {

@@ -39,12 +39,14 @@ class MultiScatterReflection final : public Lobe {
 
 // Inline: the mixture calls them directly for the core's compensation (bsdf/lobe_mixture.h).
 inline double MultiScatterReflection::missing(double cos_theta, LobeCache& cache) const {
-  return std::clamp(1.0 - cache.albedo(e_m_, std::abs(cos_theta)), 0.0, 1.0);
+  return missing_energy(cache.albedo(e_m_, std::abs(cos_theta)));
 }
 
 inline Rgb MultiScatterReflection::eval(const Vec3& v, const Vec3& l, LobeCache& cache) const {
   if (v.z <= 0 || l.z <= 0 || inv_norm_ == 0) return Rgb(0);
-  return f_ms_ * (missing(v.z, cache) * missing(l.z, cache) * inv_norm_);
+  double e[2];
+  cache.albedos(e_m_, v.z, l.z, e);
+  return f_ms_ * (missing_energy(e[0]) * missing_energy(e[1]) * inv_norm_);
 }
 
 }  // namespace dspbr

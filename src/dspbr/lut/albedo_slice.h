@@ -52,6 +52,8 @@ class AlbedoSlice {
   };
   EmKey e_m_key() const { return em_key_; }
   EmPart e_m_part(double cos_theta) const;
+  // The E_m parts at two cosines (v.n and l.n of one evaluation): equal to two e_m_part calls.
+  void e_m_parts(double cos_a, double cos_b, EmPart out[2]) const;
   // The slice's value from its E_m part at the same cos theta: equal to operator().
   double from_e_m_part(double cos_theta, const EmPart& part) const;
 
@@ -102,6 +104,19 @@ inline AlbedoSlice::EmPart AlbedoSlice::e_m_part(double cos_theta) const {
   if (!em_key_.fingerprint) return {0, (*this)(cos_theta)};
   const double x = table_.warp.to_grid_fast(std::clamp(cos_theta, 0.0, 1.0), alpha_);
   return {x, table_.at_grid(x)};
+}
+
+inline void AlbedoSlice::e_m_parts(double cos_a, double cos_b, EmPart out[2]) const {
+  double x[2];
+  if (em_key_.fingerprint && table_.warp.kind == WarpKind::GgxCos && table_.warp.p == 0.5) {
+    ggx_cos_sqrt_warp2(cos_a, cos_b, alpha_, x);
+  } else {
+    out[0] = e_m_part(cos_a);
+    out[1] = e_m_part(cos_b);
+    return;
+  }
+  out[0] = {x[0], table_.at_grid(x[0])};
+  out[1] = {x[1], table_.at_grid(x[1])};
 }
 
 inline double AlbedoSlice::from_e_m_part(double cos_theta, const EmPart& part) const {

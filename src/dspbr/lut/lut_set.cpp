@@ -44,7 +44,6 @@ LutSet from_json(const nlohmann::json& j, const std::string& name) {
 
 }  // namespace
 
-double LutSet::E_m(double c, double r) const { return is_renderer(*this) ? this->renderer.E_m(c, r) : ggx_e.lookup({r, c}); }
 double LutSet::E_m_avg(double r) const { return is_renderer(*this) ? this->renderer.E_m_avg(r) : ggx_e_avg.lookup({r}); }
 double LutSet::missing_E_m_avg(double r) const {
   return is_renderer(*this) ? this->renderer.missing_E_m_avg(r) : 1.0 - ggx_e_avg.lookup({r});
@@ -56,10 +55,10 @@ double LutSet::E_base_avg(double r, double f0) const {
   return is_renderer(*this) ? this->renderer.E_base_avg(r, f0) : base_e_avg.lookup({f0, r});
 }
 double LutSet::E_sheen(double c, double ab) const {
-  return is_renderer(*this) ? this->renderer.E_sheen(c, ab) : sheen_e.lookup({ab, c});
+  return is_renderer(*this) ? this->renderer.E_sheen(c, ab) : sheen_e.lookup_2d(ab, c);
 }
 double LutSet::E_sheen_ash(double c, double ab) const {
-  return is_renderer(*this) ? this->renderer.E_sheen_ash(c, ab) : sheen_ash_e.lookup({ab, c});
+  return is_renderer(*this) ? this->renderer.E_sheen_ash(c, ab) : sheen_ash_e.lookup_2d(ab, c);
 }
 
 bool LutSet::has_glass() const {

@@ -64,6 +64,11 @@ struct LutSet {
   static const LutSet& of_layout(LutLayout layout);
 };
 
+// Inline: the lookup a caller makes per shading point.
+inline double LutSet::E_m(double cos_theta, double roughness) const {
+  return layout == LutLayout::Renderer ? renderer.E_m(cos_theta, roughness) : ggx_e.lookup_2d(roughness, cos_theta);
+}
+
 // "published" / "renderer"; parse_lut_layout throws std::invalid_argument for anything else.
 const char* lut_layout_name(LutLayout layout);
 LutLayout parse_lut_layout(const std::string& name);

@@ -2,7 +2,7 @@
 // warped endpoint grids, Catmull-Rom lookups, and Base_E / Base_E_avg derived exactly in f0 from
 // two GGX moments (no f0 axis to interpolate):
 //
-//   GGX_E       [roughness][cos_theta]  E_m(mu; r)                       cos axis ggx_cos(p = 0.6)
+//   GGX_E       [roughness][cos_theta]  E_m(mu; r)                       cos axis ggx_cos(p = 0.5; GGX_beta too)
 //   GGX_beta    [roughness][cos_theta]  beta - (1 - mu)^5, beta = B / E_m, B = Integral M_r (1 - v.h)^5 mu_l dl
 //                                       (the mirror's beta subtracted: 0 on the r = 0 row)
 //   GGX_E_avg   [roughness]             ln(1 - E_m,avg), E_m,avg = 2 Integral E^_m mu dmu of the lookup
@@ -26,7 +26,7 @@
 //
 // Optional rough-glass tables beyond DSPBR 2025x (docs/luts.md, "Glass tables"; present in the
 // default set, absent from sets written before them):
-//   Glass_E         [ior][roughness][cos_theta]  E_g(mu; r, ior), v outside   ior axis glass_ior(mu), cos ggx_cos
+//   Glass_E         [ior][roughness][cos_theta]  E_g(mu; r, ior), v outside   ior axis glass_ior(mu), cos ggx_cos(p = 0.6)
 //   Glass_inv_E     [ior][roughness][cos_theta]  E_g, v inside (total internal reflection included)
 //   Glass_E_avg     [ior_x][roughness]           2 Integral E^_g mu dmu of the lookup, outside   ior_x axis x^0.5
 //   Glass_inv_E_avg [ior_x][roughness]           the same, inside

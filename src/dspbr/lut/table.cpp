@@ -34,49 +34,13 @@ size_t Table::offset(const std::vector<int>& idx) const {
 
 double Table::lookup(const std::vector<double>& x) const { return lookup(x.data(), x.size()); }
 
-double Axis::index(double x) const {
-  // On a unit axis (lo = 0, hi = 1: every published table) t is x itself: (x - 0) / 1 == x
-  // exactly, without the division.
-  const double t = lo == 0 && hi == 1 ? x : (x - lo) / (hi - lo);
-  return kind == GridKind::CellCentred ? t * size - 0.5 : t * (size - 1);
-}
-
-namespace {
-
-// Cell index i in [0, max(0, n - 2)] and fraction f of position x on an axis, clamped to the
-// outermost samples (clamp-to-edge).
-inline void locate(const Axis& a, double x, int& i, double& f) {
-  const int n = a.size;
-  const double u = a.index(x);
-  const double c = u > 0.0 ? std::min(u, double(n - 1)) : 0.0;  // NaN -> 0
-  i = std::min(int(c), std::max(0, n - 2));  // c >= 0: truncation is floor
-  f = n > 1 ? c - i : 0.0;
-}
-
-}  // namespace
-
 double Table::lookup(const double* x, size_t x_rank) const {
   const size_t rank = axes.size();
   if (x_rank != rank || rank > 3) throw std::invalid_argument("Table::lookup: wrong coordinate rank for " + name);
-  const Axis* ax = axes.data();
-  const double* v = values.data();
-  if (rank == 2) {
-    // The corner loop below written out for two axes (same products and order).
-    int i0, i1;
-    double f0, f1;
-    locate(ax[0], x[0], i0, f0);
-    locate(ax[1], x[1], i1, f1);
-    const size_t n1 = size_t(ax[1].size);
-    const size_t r0 = size_t(i0) * n1, r1 = size_t(std::min(i0 + 1, ax[0].size - 1)) * n1;
-    const size_t c0 = size_t(i1), c1 = size_t(std::min(i1 + 1, ax[1].size - 1));
-    const double w00 = (1.0 - f0) * (1.0 - f1), w10 = f0 * (1.0 - f1);
-    const double w01 = (1.0 - f0) * f1, w11 = f0 * f1;
-    // Zero weights add +0 (the values are finite): no branches, the same sum as the loop below.
-    return ((w00 * v[r0 + c0] + w10 * v[r1 + c0]) + w01 * v[r0 + c1]) + w11 * v[r1 + c1];
-  }
+  if (rank == 2) return lookup_2d(x[0], x[1]);  // its own rank check passes
   int i0[3] = {0, 0, 0};
   double f[3] = {0, 0, 0};
-  for (size_t d = 0; d < rank; ++d) locate(ax[d], x[d], i0[d], f[d]);
+  for (size_t d = 0; d < rank; ++d) axes[d].locate(x[d], i0[d], f[d]);
   double result = 0;
   for (int corner = 0; corner < (1 << rank); ++corner) {
     double w = 1;
@@ -86,7 +50,7 @@ double Table::lookup(const double* x, size_t x_rank) const {
       w *= bit ? f[d] : 1.0 - f[d];
       o = o * size_t(axes[d].size) + size_t(std::min(i0[d] + bit, axes[d].size - 1));
     }
-    result += w * v[o];  // +0 for a zero weight (finite values)
+    result += w * values[o];  // +0 for a zero weight (finite values)
   }
   return result;
 }
