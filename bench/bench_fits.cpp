@@ -160,6 +160,30 @@ void BM_SliceLookupPair(benchmark::State& state) {
 }
 BENCHMARK(BM_SliceLookupPair);
 
+// The renderer layout's cos coordinate alone: the ggx_cos warp of power 1/2 (two square roots and a
+// division) at alpha = 0.25, one cosine at a time (Warp::to_grid_fast) and two at a time
+// (ggx_cos_sqrt_warp2); items: cosines.
+void BM_WarpGgxCos(benchmark::State& state) {
+  const Inputs& in = inputs();
+  const dspbr::Warp w{dspbr::WarpKind::GgxCos, 0.5, 0.0};
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(w.to_grid_fast(in.mu[i], 0.25));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_WarpGgxCos);
+
+void BM_WarpGgxCosPair(benchmark::State& state) {
+  const Inputs& in = inputs();
+  for (auto _ : state)
+    for (size_t i = 0; i + 1 < in.mu.size(); i += 2) {
+      double x[2];
+      dspbr::ggx_cos_sqrt_warp2(in.mu[i], in.mu[i + 1], 0.25, x);
+      benchmark::DoNotOptimize(x);
+    }
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_WarpGgxCosPair);
+
 void BM_LookupGeneratedC(benchmark::State& state) {
   const Inputs& in = inputs();
   for (auto _ : state)
