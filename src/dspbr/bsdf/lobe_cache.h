@@ -49,6 +49,7 @@ class LobeCache {
     out[0] = slice.from_e_m_part(cos_a, part[0]);
     out[1] = slice.from_e_m_part(cos_b, part[1]);
   }
+
  private:
   // An EmKey, the cosine and its EmPart, as plain members (no per-call zeroing of the memo).
   struct Entry {

@@ -107,14 +107,13 @@ inline AlbedoSlice::EmPart AlbedoSlice::e_m_part(double cos_theta) const {
 }
 
 inline void AlbedoSlice::e_m_parts(double cos_a, double cos_b, EmPart out[2]) const {
-  double x[2];
-  if (em_key_.fingerprint && table_.warp.kind == WarpKind::GgxCos && table_.warp.p == 0.5) {
-    ggx_cos_sqrt_warp2(cos_a, cos_b, alpha_, x);
-  } else {
+  if (!em_key_.fingerprint || table_.warp.kind != WarpKind::GgxCos || table_.warp.p != 0.5) {
     out[0] = e_m_part(cos_a);
     out[1] = e_m_part(cos_b);
     return;
   }
+  double x[2];
+  ggx_cos_sqrt_warp2(cos_a, cos_b, alpha_, x);  // the ggx_cos warp of e_m_part, both at once
   out[0] = {x[0], table_.at_grid(x[0])};
   out[1] = {x[1], table_.at_grid(x[1])};
 }
