@@ -29,7 +29,7 @@ class LobeCache {
         return slice.from_e_m_part(cos_theta, {e.x, e.e_m});
     }
     const AlbedoSlice::EmPart part = slice.e_m_part(cos_theta);
-    if (n_ < kEntries) entries_[n_++] = {key.fingerprint, key.roughness, cos_theta, part.x, part.e_m};
+    remember(key, cos_theta, part);
     return slice.from_e_m_part(cos_theta, part);
   }
 
@@ -43,9 +43,8 @@ class LobeCache {
     }
     AlbedoSlice::EmPart part[2];
     slice.e_m_parts(cos_a, cos_b, part);
-    entries_[0] = {key.fingerprint, key.roughness, cos_a, part[0].x, part[0].e_m};
-    entries_[1] = {key.fingerprint, key.roughness, cos_b, part[1].x, part[1].e_m};
-    n_ = 2;
+    remember(key, cos_a, part[0]);
+    remember(key, cos_b, part[1]);
     out[0] = slice.from_e_m_part(cos_a, part[0]);
     out[1] = slice.from_e_m_part(cos_b, part[1]);
   }
@@ -57,6 +56,10 @@ class LobeCache {
     double roughness, cos_theta, x, e_m;
   };
   static constexpr int kEntries = 4;
+  // Keeps an E_m part while there is room (a full memo computes later parts again).
+  void remember(const AlbedoSlice::EmKey& key, double cos_theta, const AlbedoSlice::EmPart& part) {
+    if (n_ < kEntries) entries_[n_++] = {key.fingerprint, key.roughness, cos_theta, part.x, part.e_m};
+  }
   Entry entries_[kEntries];
   int n_ = 0;
 };
