@@ -104,13 +104,6 @@ bool RendererLuts::has_glass() const {
   return true;
 }
 
-double RendererLuts::E_m(double cos_theta, double roughness) const {
-  const double r = std::clamp(roughness, 0.0, 1.0);
-  const double x0 = ggx_E.axes[0].warp.to_grid(r);
-  const double x1 = ggx_E.axes[1].warp.to_grid(cos_theta, r * r);
-  return ggx_E.lookup_grid(x0, x1);
-}
-
 double RendererLuts::B(double cos_theta, double roughness) const {
   return beta(cos_theta, roughness) * E_m(cos_theta, roughness);
 }

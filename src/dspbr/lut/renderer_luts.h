@@ -33,6 +33,7 @@
 // ior in [1, 3] (above 3 evaluates at 3); the r = 0 samples hold the limit at fixed mu / alpha
 // as for GGX_E.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -88,6 +89,14 @@ struct RendererLuts {
   double E_glass(double cos_theta, double roughness, double ior, bool inside) const;
   double E_glass_avg(double roughness, double ior, bool inside) const;
 };
+
+// Inline: the lookup a caller makes per shading point (LutSet::E_m).
+inline double RendererLuts::E_m(double cos_theta, double roughness) const {
+  const double r = std::clamp(roughness, 0.0, 1.0);
+  const double x0 = ggx_E.axes[0].warp.to_grid(r);
+  const double x1 = ggx_E.axes[1].warp.to_grid(cos_theta, r * r);
+  return decode(ggx_E.encoding, ggx_E.interpolate_2d(x0, x1));
+}
 
 // The default axes (sizes and warps) of a renderer table, `scale` times the default sample count
 // per axis (scale 1: the default renderer set, 5184 values; the reference BSDF's set uses 2).

@@ -27,17 +27,9 @@ double glass_k_mu2(double k, double mu) {
 
 }  // namespace
 
-double Warp::to_grid(double v, double alpha) const {
-  switch (kind) {
-    case WarpKind::Power:
-    case WarpKind::GgxCos:
-      return warp_power(warp_power_base(*this, v, alpha), p);
-    case WarpKind::LogRoughness:
-      return std::log(std::clamp(v, lo, 1.0) / lo) / std::log(1.0 / lo);
-    case WarpKind::GlassIor:
-      return glass_warp(glass_x_of_ior(v), glass_k_mu2(p, alpha));
-  }
-  return 0;
+double Warp::to_grid_log_or_glass(double v, double alpha) const {
+  if (kind == WarpKind::LogRoughness) return std::log(std::clamp(v, lo, 1.0) / lo) / std::log(1.0 / lo);
+  return glass_warp(glass_x_of_ior(v), glass_k_mu2(p, alpha));
 }
 
 double Warp::from_grid(double x, double alpha) const {
@@ -85,16 +77,10 @@ double WarpedTable::interpolate(double x0, double x1, double x2) const {
   const int n0 = axes[0].size;
   const CatmullRomTaps t0 = catmull_rom_taps(x0, n0);
   if (axes.size() == 1) return catmull_rom_sum(t0, n0, [&](int k) { return v[k]; });
-  // Higher ranks: interpolate along the fastest axis first, then across rows (and planes).
+  if (axes.size() == 2) return interpolate_2d(x0, x1);
+  // Rank 3: interpolate along the fastest axis first, then across rows and planes.
   const int n1 = axes[1].size;
   const CatmullRomTaps t1 = catmull_rom_taps(x1, n1);
-  if (axes.size() == 2) {
-    auto row = [&](int r) {
-      const double* p = v + size_t(r) * size_t(n1);
-      return catmull_rom_sum(t1, n1, [&](int k) { return p[k]; });
-    };
-    return catmull_rom_sum(t0, n0, row);
-  }
   const int n2 = axes[2].size;
   const CatmullRomTaps t2 = catmull_rom_taps(x2, n2);
   auto plane = [&](int q) {

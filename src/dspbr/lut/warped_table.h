@@ -41,12 +41,15 @@ struct Warp {
   double lo = 0;  // lower end of the domain (Power, LogRoughness)
 
   // Grid coordinate x in [0, 1] of physical coordinate v; aux: alpha for GgxCos, mu for GlassIor.
+  // Inline for the power warps (every 2-D lookup's axes), out of line for the others.
   double to_grid(double v, double aux = 0) const;
   // The same within a few ulp, for the lobes' per-evaluation lookups (inline, below): the power
   // x^p as sqrt for p = 1/2 (exactly to_grid) and 1/4, else exp2(p log2 x) (about half the cost of
   // std::pow). The generator and the LutSet lookups keep to_grid, so the committed tables do not
   // depend on this form.
   double to_grid_fast(double v, double aux = 0) const;
+  // to_grid of the LogRoughness and GlassIor warps.
+  double to_grid_log_or_glass(double v, double aux) const;
   // Inverse: the physical coordinate of grid coordinate x.
   double from_grid(double x, double aux = 0) const;
   // Short description, e.g. "power(p=0.25, lo=0.001)".
@@ -55,7 +58,8 @@ struct Warp {
 
 // The argument u of the power of the Power and GgxCos warps (v clamped to the domain).
 inline double warp_power_base(const Warp& w, double v, double alpha) {
-  if (w.kind == WarpKind::Power) return (std::clamp(v, w.lo, 1.0) - w.lo) / (1.0 - w.lo);
+  // lo = 0 (every roughness axis): (v - 0) / 1 == v exactly, without the division.
+  if (w.kind == WarpKind::Power) return w.lo == 0 ? std::clamp(v, 0.0, 1.0) : (std::clamp(v, w.lo, 1.0) - w.lo) / (1.0 - w.lo);
   const double mu = std::clamp(v, 0.0, 1.0);
   const double d = mu + alpha * std::sqrt(std::max(0.0, 1.0 - mu * mu));
   return d > 0 ? mu / d : 1.0;  // alpha = 0 (mirror): t = 1 for every mu
@@ -65,8 +69,13 @@ inline double warp_power_base(const Warp& w, double v, double alpha) {
 // ggx_cos and average axes: a square root costs a fraction of std::pow), else std::pow.
 inline double warp_power(double u, double p) { return p == 1 ? u : p == 0.5 ? std::sqrt(u) : std::pow(u, p); }
 
+inline double Warp::to_grid(double v, double aux) const {
+  if (kind == WarpKind::LogRoughness || kind == WarpKind::GlassIor) return to_grid_log_or_glass(v, aux);
+  return warp_power(warp_power_base(*this, v, aux), p);
+}
+
 inline double Warp::to_grid_fast(double v, double alpha) const {
-  if (kind == WarpKind::LogRoughness || kind == WarpKind::GlassIor) return to_grid(v, alpha);
+  if (kind == WarpKind::LogRoughness || kind == WarpKind::GlassIor) return to_grid_log_or_glass(v, alpha);
   const double u = warp_power_base(*this, v, alpha);
   if (p == 1 || p == 0.5) return warp_power(u, p);
   if (p == 0.25) return std::sqrt(std::sqrt(u));
@@ -117,6 +126,8 @@ struct WarpedTable {
   size_t size() const;
   // Catmull-Rom interpolation of the stored values at grid coordinates (slowest first).
   double interpolate(double x0, double x1 = 0, double x2 = 0) const;
+  // The same for a 2-D table, inline: the lookup a caller makes per shading point (RendererLuts::E_m).
+  double interpolate_2d(double x0, double x1) const;
   // Decoded value at grid coordinates.
   double lookup_grid(double x0, double x1 = 0, double x2 = 0) const;
   // A 2-D table at fixed slow-axis grid coordinate x0, as the 1-D table over its fast axis whose
@@ -161,20 +172,48 @@ inline CatmullRomTaps catmull_rom_taps(double x, int n) {
   return t;
 }
 
-// sum_k w[k] at(first + k) over a row of n samples at(0 .. n - 1), the samples beyond both ends
-// extended linearly (p_-1 = 2 p_0 - p_1, p_n = 2 p_n-1 - p_n-2; see the top of this file).
+// One Catmull-Rom axis without branches on the cell: the four samples are read at indices clamped to
+// [0, n - 1] (catmull_rom_index), so that beyond an end (first = -1, first + 3 = n) the two inner
+// samples are the two samples at that end, and catmull_rom_combine replaces the outside one by
+// their linear extension (p_-1 = 2 p_0 - p_1, p_n = 2 p_n-1 - p_n-2; see the top of this file)
+// before the weighted sum.
+inline int catmull_rom_index(const CatmullRomTaps& t, int k, int n) {
+  const int j = t.first + k;
+  return j < 0 ? 0 : j < n ? j : n - 1;
+}
+inline double catmull_rom_combine(const CatmullRomTaps& t, int n, const double q[4]) {
+  const double p0 = t.first < 0 ? 2.0 * q[1] - q[2] : q[0];
+  const double p3 = t.first + 3 >= n ? 2.0 * q[2] - q[1] : q[3];
+  double s = 0;
+  s += t.w[0] * p0;
+  s += t.w[1] * q[1];
+  s += t.w[2] * q[2];
+  s += t.w[3] * p3;
+  return s;
+}
+
+// sum_k w[k] at(first + k) over a row of n samples at(0 .. n - 1), extended linearly beyond both ends.
 template <class At>
 double catmull_rom_sum(const CatmullRomTaps& t, int n, At&& at) {
-  double s = 0;
-  if (t.first >= 0 && t.first + 3 < n) {
-    for (int k = 0; k < 4; ++k) s += t.w[k] * at(t.first + k);
-    return s;
+  const double q[4] = {at(catmull_rom_index(t, 0, n)), at(catmull_rom_index(t, 1, n)),
+                       at(catmull_rom_index(t, 2, n)), at(catmull_rom_index(t, 3, n))};
+  return catmull_rom_combine(t, n, q);
+}
+
+inline double WarpedTable::interpolate_2d(double x0, double x1) const {
+  // Along the fast axis first (the four rows' sums), then across the rows.
+  const int n0 = axes[0].size, n1 = axes[1].size;
+  const CatmullRomTaps t0 = catmull_rom_taps(x0, n0), t1 = catmull_rom_taps(x1, n1);
+  const double* v = values.data();
+  int col[4];
+  for (int k = 0; k < 4; ++k) col[k] = catmull_rom_index(t1, k, n1);
+  double rows[4];
+  for (int j = 0; j < 4; ++j) {
+    const double* p = v + size_t(catmull_rom_index(t0, j, n0)) * size_t(n1);
+    const double q[4] = {p[col[0]], p[col[1]], p[col[2]], p[col[3]]};
+    rows[j] = catmull_rom_combine(t1, n1, q);
   }
-  for (int k = 0; k < 4; ++k) {
-    const int j = t.first + k;
-    s += t.w[k] * (j < 0 ? 2.0 * at(0) - at(1) : j >= n ? 2.0 * at(n - 1) - at(n - 2) : at(j));
-  }
-  return s;
+  return catmull_rom_combine(t0, n0, rows);
 }
 
 }  // namespace dspbr
