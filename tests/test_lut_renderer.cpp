@@ -74,6 +74,27 @@ TEST(LutRendererInterpolation, CatmullRomReproducesQuadraticsInsideAndLinesAtThe
   }
 }
 
+// Rank 1 and 3 at every cell, the end cells included (the outside samples extended linearly): a
+// line and a trilinear function are reproduced exactly; coordinates outside [0, 1] clamp.
+TEST(LutRendererInterpolation, CatmullRomReproducesMultilinearFunctionsInEveryCellOfEveryRank) {
+  WarpedTable line;
+  line.axes = {{"a", 5, {}}};
+  for (int i = 0; i < 5; ++i) line.values.push_back(0.7 - 1.3 * i / 4.0);
+  WarpedTable cube;
+  cube.axes = {{"a", 4, {}}, {"b", 6, {}}, {"c", 5, {}}};
+  auto tri = [](double x, double y, double z) { return 0.2 + x - 0.5 * y + 0.8 * z + 1.5 * x * y - 0.7 * y * z + 0.9 * x * y * z; };
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 6; ++j)
+      for (int k = 0; k < 5; ++k) cube.values.push_back(tri(i / 3.0, j / 5.0, k / 4.0));
+  const double xs[] = {-0.3, 0.0, 0.01, 0.2, 0.26, 0.5, 0.74, 0.9, 0.999, 1.0, 1.4};
+  auto c01 = [](double x) { return std::clamp(x, 0.0, 1.0); };
+  for (double x : xs) {
+    EXPECT_NEAR(line.interpolate(x), 0.7 - 1.3 * c01(x), 1e-14) << x;
+    for (double y : xs)
+      for (double z : xs) EXPECT_NEAR(cube.interpolate(x, y, z), tri(c01(x), c01(y), c01(z)), 1e-13) << x << " " << y << " " << z;
+  }
+}
+
 // Random points of the whole domain: half uniform, half log-uniform towards the small ends.
 struct Points {
   std::vector<double> mu, r, f0, ab;
