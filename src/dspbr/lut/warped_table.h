@@ -59,7 +59,8 @@ struct Warp {
 // The argument u of the power of the Power and GgxCos warps (v clamped to the domain).
 inline double warp_power_base(const Warp& w, double v, double alpha) {
   // lo = 0 (every roughness axis): (v - 0) / 1 == v exactly, without the division.
-  if (w.kind == WarpKind::Power) return w.lo == 0 ? std::clamp(v, 0.0, 1.0) : (std::clamp(v, w.lo, 1.0) - w.lo) / (1.0 - w.lo);
+  if (w.kind == WarpKind::Power)
+    return w.lo == 0 ? std::clamp(v, 0.0, 1.0) : (std::clamp(v, w.lo, 1.0) - w.lo) / (1.0 - w.lo);
   const double mu = std::clamp(v, 0.0, 1.0);
   const double d = mu + alpha * std::sqrt(std::max(0.0, 1.0 - mu * mu));
   return d > 0 ? mu / d : 1.0;  // alpha = 0 (mirror): t = 1 for every mu
@@ -75,9 +76,9 @@ inline double Warp::to_grid(double v, double aux) const {
 }
 
 inline double Warp::to_grid_fast(double v, double alpha) const {
-  if (kind == WarpKind::LogRoughness || kind == WarpKind::GlassIor) return to_grid_log_or_glass(v, alpha);
+  // to_grid itself where it has no cheaper form: the log and glass warps, and p = 1 and 1/2.
+  if (kind == WarpKind::LogRoughness || kind == WarpKind::GlassIor || p == 1 || p == 0.5) return to_grid(v, alpha);
   const double u = warp_power_base(*this, v, alpha);
-  if (p == 1 || p == 0.5) return warp_power(u, p);
   if (p == 0.25) return std::sqrt(std::sqrt(u));
   return u > 0 ? std::exp2(p * std::log2(u)) : std::pow(u, p);
 }
