@@ -74,7 +74,7 @@ TEST(LutRendererInterpolation, CatmullRomReproducesQuadraticsInsideAndLinesAtThe
   }
 }
 
-// Rank 1 and 3 at every cell, the end cells included (the outside samples extended linearly): a
+// Ranks 1 to 3 at every cell, the end cells included (the outside samples extended linearly): a
 // line and a trilinear function are reproduced exactly; coordinates outside [0, 1] clamp.
 TEST(LutRendererInterpolation, CatmullRomReproducesMultilinearFunctionsInEveryCellOfEveryRank) {
   WarpedTable line;
@@ -86,13 +86,30 @@ TEST(LutRendererInterpolation, CatmullRomReproducesMultilinearFunctionsInEveryCe
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 6; ++j)
       for (int k = 0; k < 5; ++k) cube.values.push_back(tri(i / 3.0, j / 5.0, k / 4.0));
-  const double xs[] = {-0.3, 0.0, 0.01, 0.2, 0.26, 0.5, 0.74, 0.9, 0.999, 1.0, 1.4};
+  const double xs[] = {-0.3, 0.0, 0.01, 0.2, 0.26, 0.4, 0.5, 0.74, 0.9, 0.999, 1.0, 1.4};
   auto c01 = [](double x) { return std::clamp(x, 0.0, 1.0); };
   for (double x : xs) {
     EXPECT_NEAR(line.interpolate(x), 0.7 - 1.3 * c01(x), 1e-14) << x;
     for (double y : xs)
       for (double z : xs) EXPECT_NEAR(cube.interpolate(x, y, z), tri(c01(x), c01(y), c01(z)), 1e-13) << x << " " << y << " " << z;
   }
+  // Rank 1 and 2 on axes of 2 and 3 samples (both ends' extensions in one cell, fewer than four
+  // taps) and of 4 and more (rank 2: four taps per axis, the packed sum).
+  auto bi = [](double x, double y) { return 0.4 - 0.6 * x + 1.2 * y + 2.1 * x * y; };
+  for (int n0 : {2, 3, 4, 7})
+    for (int n1 : {2, 3, 4, 6}) {
+      WarpedTable row;
+      row.axes = {{"b", n1, {}}};
+      WarpedTable square;
+      square.axes = {{"a", n0, {}}, {"b", n1, {}}};
+      for (int j = 0; j < n1; ++j) row.values.push_back(bi(0.3, j / (n1 - 1.0)));
+      for (int i = 0; i < n0; ++i)
+        for (int j = 0; j < n1; ++j) square.values.push_back(bi(i / (n0 - 1.0), j / (n1 - 1.0)));
+      for (double x : xs) {
+        EXPECT_NEAR(row.interpolate(x), bi(0.3, c01(x)), 1e-14) << n1 << " " << x;
+        for (double y : xs) EXPECT_NEAR(square.interpolate(x, y), bi(c01(x), c01(y)), 1e-14) << n0 << "x" << n1 << " " << x << " " << y;
+      }
+    }
 }
 
 // Random points of the whole domain: half uniform, half log-uniform towards the small ends.

@@ -167,7 +167,7 @@ double AlbedoSlice::glass_at(double cos_theta) const {
   grid_cell(row0.warp.to_grid_fast(mu, alpha_), row0.n, &i2, &f2);
   // Across the ior samples as WarpedTable::interpolate: cell, weights, linear extension.
   const CatmullRomTaps t0 = catmull_rom_taps(g.warp.to_grid(g.ior, mu), g.n);
-  const double v = catmull_rom_sum(t0, g.n, [&](int p) { return g.rows[size_t(p - g.first)].cubic(i2, f2); });
+  const double v = catmull_rom_sum(t0, [&](int p) { return g.rows[size_t(p - g.first)].cubic(i2, f2); });
   return decode(g.encoding, v);
 }
 

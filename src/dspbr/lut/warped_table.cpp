@@ -76,7 +76,7 @@ double WarpedTable::interpolate(double x0, double x1, double x2) const {
   const double* v = values.data();
   const int n0 = axes[0].size;
   const CatmullRomTaps t0 = catmull_rom_taps(x0, n0);
-  if (axes.size() == 1) return catmull_rom_sum(t0, n0, [&](int k) { return v[k]; });
+  if (axes.size() == 1) return catmull_rom_sum(t0, [&](int k) { return v[k]; });
   if (axes.size() == 2) return interpolate_2d(x0, x1);
   // Rank 3: interpolate along the fastest axis first, then across rows and planes.
   const int n1 = axes[1].size;
@@ -86,11 +86,11 @@ double WarpedTable::interpolate(double x0, double x1, double x2) const {
   auto plane = [&](int q) {
     auto row = [&](int r) {
       const double* p = v + (size_t(q) * size_t(n1) + size_t(r)) * size_t(n2);
-      return catmull_rom_sum(t2, n2, [&](int k) { return p[k]; });
+      return catmull_rom_sum(t2, [&](int k) { return p[k]; });
     };
-    return catmull_rom_sum(t1, n1, row);
+    return catmull_rom_sum(t1, row);
   };
-  return catmull_rom_sum(t0, n0, plane);
+  return catmull_rom_sum(t0, plane);
 }
 
 WarpedTable WarpedTable::slice(double x0) const {
@@ -120,7 +120,7 @@ WarpedTable WarpedTable::slice_middle(double x1) const {
   for (int p = 0; p < n0; ++p)
     for (int k = 0; k < n2; ++k)
       s.values.push_back(catmull_rom_sum(
-          t1, n1, [&](int r) { return values[(size_t(p) * size_t(n1) + size_t(r)) * size_t(n2) + size_t(k)]; }));
+          t1, [&](int r) { return values[(size_t(p) * size_t(n1) + size_t(r)) * size_t(n2) + size_t(k)]; }));
   return s;
 }
 

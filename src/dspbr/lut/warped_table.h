@@ -158,63 +158,63 @@ inline void grid_cell(double x, int n, int* i, double* f) {
   *f = c - *i;
 }
 
-// One Catmull-Rom axis of a lookup at grid coordinate x on n samples: the first of its four
-// samples (cell index - 1: may be -1, and first + 3 may reach n) and their weights.
+// One Catmull-Rom axis of a lookup at grid coordinate x on n samples: the weights of the samples
+// first .. first + count - 1 (count = min(n, 4)). The spline of cell i weighs the samples
+// i - 1 .. i + 2; beyond an end (i - 1 = -1, i + 2 = n) the outside sample is the linear extension
+// of the two end samples (p_-1 = 2 p_0 - p_1, p_n = 2 p_n-1 - p_n-2; see the top of this file), so
+// its weight goes to those two, and the taps are the (up to) four samples at that end: the same
+// interpolant, with the extension folded into the axis' weights once instead of into every row.
 struct CatmullRomTaps {
-  int first;
+  int first, count;
   double w[4];
 };
 inline CatmullRomTaps catmull_rom_taps(double x, int n) {
+  int i;
+  double f, w[4];
+  grid_cell(x, n, &i, &f);
+  catmull_rom_weights(f, w);
+  // The weights of the samples i - 1 .. i + 2 with the outside ones' (e0 below the first sample,
+  // e3 beyond the last) moved to the two end samples, padded with a zero weight on each side.
+  const double e0 = i == 0 ? w[0] : 0.0, e3 = i + 2 == n ? w[3] : 0.0;
+  const double u[6] = {0.0, w[0] - e0, w[1] + 2.0 * e0 - e3, w[2] - e0 + 2.0 * e3, w[3] - e3, 0.0};
   CatmullRomTaps t;
-  double f;
-  grid_cell(x, n, &t.first, &f);
-  t.first -= 1;
-  catmull_rom_weights(f, t.w);
+  t.count = n < 4 ? n : 4;
+  t.first = std::clamp(i - 1, 0, n - t.count);
+  const double* from = u + 1 + (t.first - (i - 1));  // t.first - (i - 1): +1 at the first cell, -1 at the last
+  for (int k = 0; k < 4; ++k) t.w[k] = from[k];
   return t;
 }
 
-// One Catmull-Rom axis without branches on the cell: the four samples are read at indices clamped to
-// [0, n - 1] (catmull_rom_index), so that beyond an end (first = -1, first + 3 = n) the two inner
-// samples are the two samples at that end, and catmull_rom_combine replaces the outside one by
-// their linear extension (p_-1 = 2 p_0 - p_1, p_n = 2 p_n-1 - p_n-2; see the top of this file)
-// before the weighted sum.
-inline int catmull_rom_index(const CatmullRomTaps& t, int k, int n) {
-  const int j = t.first + k;
-  return j < 0 ? 0 : j < n ? j : n - 1;
-}
-inline double catmull_rom_combine(const CatmullRomTaps& t, int n, const double q[4]) {
-  const double p0 = t.first < 0 ? 2.0 * q[1] - q[2] : q[0];
-  const double p3 = t.first + 3 >= n ? 2.0 * q[2] - q[1] : q[3];
-  double s = 0;
-  s += t.w[0] * p0;
-  s += t.w[1] * q[1];
-  s += t.w[2] * q[2];
-  s += t.w[3] * p3;
+// sum_k w[k] at(first + k) over the taps of one axis.
+template <class At>
+double catmull_rom_sum(const CatmullRomTaps& t, At&& at) {
+  double s = t.w[0] * at(t.first);
+  for (int k = 1; k < t.count; ++k) s += t.w[k] * at(t.first + k);
   return s;
 }
 
-// sum_k w[k] at(first + k) over a row of n samples at(0 .. n - 1), extended linearly beyond both ends.
-template <class At>
-double catmull_rom_sum(const CatmullRomTaps& t, int n, At&& at) {
-  const double q[4] = {at(catmull_rom_index(t, 0, n)), at(catmull_rom_index(t, 1, n)),
-                       at(catmull_rom_index(t, 2, n)), at(catmull_rom_index(t, 3, n))};
-  return catmull_rom_combine(t, n, q);
-}
-
 inline double WarpedTable::interpolate_2d(double x0, double x1) const {
-  // Along the fast axis first (the four rows' sums), then across the rows.
-  const int n0 = axes[0].size, n1 = axes[1].size;
-  const CatmullRomTaps t0 = catmull_rom_taps(x0, n0), t1 = catmull_rom_taps(x1, n1);
-  const double* v = values.data();
-  int col[4];
-  for (int k = 0; k < 4; ++k) col[k] = catmull_rom_index(t1, k, n1);
-  double rows[4];
-  for (int j = 0; j < 4; ++j) {
-    const double* p = v + size_t(catmull_rom_index(t0, j, n0)) * size_t(n1);
-    const double q[4] = {p[col[0]], p[col[1]], p[col[2]], p[col[3]]};
-    rows[j] = catmull_rom_combine(t1, n1, q);
+  const int n1 = axes[1].size;
+  const CatmullRomTaps t0 = catmull_rom_taps(x0, axes[0].size), t1 = catmull_rom_taps(x1, n1);
+  const double* v = values.data() + size_t(t0.first) * size_t(n1) + size_t(t1.first);
+#if defined(__SSE2__)
+  if (t0.count == 4 && t1.count == 4) {
+    // The 4 x 4 taps as pairs: each row's sum over its two pairs of samples, weighted by the row's
+    // weight, summed over the rows per pair lane; then the two lanes.
+    const __m128d w01 = _mm_loadu_pd(t1.w), w23 = _mm_loadu_pd(t1.w + 2);
+    __m128d acc = _mm_setzero_pd();
+    for (int j = 0; j < 4; ++j, v += n1) {
+      const __m128d row = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(v), w01), _mm_mul_pd(_mm_loadu_pd(v + 2), w23));
+      acc = _mm_add_pd(acc, _mm_mul_pd(_mm_set1_pd(t0.w[j]), row));
+    }
+    return _mm_cvtsd_f64(_mm_add_sd(acc, _mm_unpackhi_pd(acc, acc)));
   }
-  return catmull_rom_combine(t0, n0, rows);
+#endif
+  // Along the fast axis first (the rows' sums), then across the rows.
+  return catmull_rom_sum(t0, [&](int j) {
+    const double* row = v + size_t(j - t0.first) * size_t(n1) - t1.first;
+    return catmull_rom_sum(t1, [&](int k) { return row[k]; });
+  });
 }
 
 }  // namespace dspbr
