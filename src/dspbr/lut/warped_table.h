@@ -180,7 +180,8 @@ inline CatmullRomTaps catmull_rom_taps(double x, int n) {
   CatmullRomTaps t;
   t.count = n < 4 ? n : 4;
   t.first = std::clamp(i - 1, 0, n - t.count);
-  const double* from = u + 1 + (t.first - (i - 1));  // t.first - (i - 1): +1 at the first cell, -1 at the last
+  // t.first - (i - 1): +1 at the first cell, -1 at the last when n >= 4, else 0.
+  const double* from = u + 1 + (t.first - (i - 1));
   for (int k = 0; k < 4; ++k) t.w[k] = from[k];
   return t;
 }
