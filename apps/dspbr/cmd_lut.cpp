@@ -38,7 +38,7 @@ struct LutArgs {
   std::string formats = "exr,png,hpp,json";
   std::string integrator;  // empty: each table's default (lut_default_integrator)
   int samples = 0;
-  double target_error = kLutDefaultTargetError;
+  double target_error = -1;  // < 0: the integrator's default
   int randomizations = 8;
   uint64_t seed = 1;
   int threads = 0;
@@ -170,8 +170,8 @@ void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& for
   const RendererLuts luts = generate_renderer_luts(opt, a.renderer_scale);
   const double t_gen = seconds_since(t0);
   const std::string provenance =
-      fmt::format("Settings: integrator {}, target std error {:g}, seed {}, scale {}.",
-                  integrator_name(lut_settings("GGX_E", opt).integrator), opt.target_error, opt.seed,
+      fmt::format("Settings: integrator {}, target error {:g}, seed {}, scale {}.",
+                  integrator_name(lut_settings("GGX_E", opt).integrator), lut_settings("GGX_E", opt).target_error, opt.seed,
                   a.renderer_scale);
   if (formats.json)
     write_text_atomically((fs::path(a.out) / "dspbr_renderer_luts.json").string(),
@@ -278,16 +278,16 @@ void add_lut_command(CLI::App& app) {
   cmd->add_option("--grid", args->grid, "Axis sampling: cell (x_i = (i+0.5)/N, default) or endpoint (x_i = i/(N-1))");
   cmd->add_option("--formats", args->formats, "Comma-separated output formats: exr, png (16-bit), hpp (headers, lookup code), json (default: all)");
   cmd->add_option("--integrator", args->integrator,
-                  "qmc (importance-sampled, Owen-scrambled Sobol'), mc (plain Monte Carlo baseline) or quad "
-                  "(tensor Gauss-Legendre over the sampler's unit square); default: quad for the Glass tables, "
-                  "qmc for the others");
+                  "quad (adaptive Gauss-Kronrod over the microfacet normal, deterministic; the default), qmc "
+                  "(importance-sampled, Owen-scrambled Sobol') or mc (plain Monte Carlo baseline)");
   cmd->add_option("--samples", args->samples,
                   "Maximum samples per cell, all randomizations together (default: 524288; 2097152 for the "
                   "averages); exactly this many with --target-error 0")
       ->check(non_negative_integer());
   cmd->add_option("--target-error", args->target_error,
-                  "Adaptive budget: stop a cell once its standard error is at most this (default: 1e-5; 0: fixed "
-                  "budget)");
+                  "Error target per cell: quad's error estimate (default 1e-7), qmc/mc's standard error "
+                  "(default 1e-5; 0: the fixed budget of --samples)")
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--randomizations", args->randomizations,
                   "Independent randomizations per cell for the error estimate (default: 8)");
   cmd->add_option("--seed", args->seed, "Random seed (default: 1)")->check(non_negative_integer());

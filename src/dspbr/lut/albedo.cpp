@@ -9,7 +9,7 @@
 #include "dspbr/frame.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
-#include "dspbr/lut/glass_quadrature.h"
+#include "dspbr/lut/microfacet_quadrature.h"
 #include "dspbr/lut/qmc.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/rng.h"
@@ -21,13 +21,13 @@ namespace {
 
 
 // Replicate means of K integrals: `reps` holds one array of K means per replicate (Qmc, Mc), or
-// for the deterministic Quad integrator {fine, coarse}: the rule with P panels per dimension and
-// the one with P / 2.
+// for the deterministic Quad integrator {values, errors}: the quadrature's K values and their
+// error estimates (lut/microfacet_quadrature.h).
 template <int K>
 struct Means {
   std::vector<std::array<double, K>> reps;
   bool quadrature = false;
-  // The estimate of integral k (mean of the replicates; the fine rule for Quad).
+  // The estimate of integral k (mean of the replicates; the quadrature's value for Quad).
   double mean(int k) const {
     if (quadrature) return reps[0][size_t(k)];
     double m = 0;
@@ -36,66 +36,19 @@ struct Means {
   }
 };
 
-// Gauss-Legendre order per panel of the Quad integrator.
-constexpr int kQuadOrder = 4;
-// Panels per dimension of the Quad integrator's first fine rule (its coarse rule has half).
-constexpr int kQuadMinPanels = 8;
-
-// Tensor-product composite Gauss-Legendre rule over [0, 1]^dims with `panels` panels of
-// kQuadOrder nodes per dimension: sum of w(u) f(u) (f adds its K integrand values to acc).
-template <int K, class F>
-std::array<double, K> tensor_gauss_legendre(int dims, int panels, F& f) {
-  static const QuadratureRule rule = gauss_legendre(kQuadOrder);
-  const int n = panels * kQuadOrder;
-  std::vector<double> x(static_cast<size_t>(n)), w(static_cast<size_t>(n));
-  for (int p = 0; p < panels; ++p)
-    for (int i = 0; i < kQuadOrder; ++i) {
-      x[size_t(p * kQuadOrder + i)] = (p + 0.5 + 0.5 * rule.x[size_t(i)]) / panels;
-      w[size_t(p * kQuadOrder + i)] = 0.5 * rule.w[size_t(i)] / panels;
-    }
-  std::array<double, K> sum{};
-  double u[ScrambledSobol::kMaxDims] = {};
-  int idx[ScrambledSobol::kMaxDims] = {};
-  while (true) {
-    double wp = 1;
-    for (int d = 0; d < dims; ++d) {
-      u[d] = x[size_t(idx[d])];
-      wp *= w[size_t(idx[d])];
-    }
-    std::array<double, K> acc{};
-    f(u, acc);
-    for (int k = 0; k < K; ++k) sum[size_t(k)] += wp * acc[size_t(k)];
-    int d = 0;
-    while (d < dims && ++idx[d] == n) idx[d++] = 0;
-    if (d == dims) break;
-  }
-  return sum;
+// The Quad integrator's Means from a quadrature result (or exact values, error 0).
+template <int K>
+Means<K> quadrature_means(const QuadValues<K>& value, const QuadValues<K>& error) {
+  Means<K> m;
+  m.quadrature = true;
+  m.reps = {value, error};
+  return m;
 }
-
-// The Quad integrator: the fine rule with P panels per dimension and the coarse one with P / 2
-// (their difference is the error estimate). P doubles from kQuadMinPanels while the difference
-// exceeds settings.target_error (> 0) and the next rule's (kQuadOrder P)^dims points stay within
-// settings.samples; with target_error = 0, the largest such P.
-template <int K, class F>
-Means<K> quadrature_means(const IntegratorSettings& s, int dims, F& f) {
-  auto points = [&](int panels) { return std::pow(double(panels * kQuadOrder), dims); };
-  Means<K> out;
-  out.quadrature = true;
-  int p = kQuadMinPanels;
-  if (s.target_error <= 0)
-    while (points(2 * p) <= double(s.samples)) p *= 2;
-  std::array<double, K> coarse = tensor_gauss_legendre<K>(dims, p / 2, f);
-  std::array<double, K> fine = tensor_gauss_legendre<K>(dims, p, f);
-  while (s.target_error > 0 && points(2 * p) <= double(s.samples)) {
-    double worst = 0;
-    for (int k = 0; k < K; ++k) worst = std::max(worst, std::abs(fine[size_t(k)] - coarse[size_t(k)]));
-    if (worst <= s.target_error) break;
-    p *= 2;
-    coarse = fine;
-    fine = tensor_gauss_legendre<K>(dims, p, f);
-  }
-  out.reps = {fine, coarse};
-  return out;
+template <int K>
+Means<K> quadrature_means(const QuadResult<K>& r) {
+  QuadValues<K> e;
+  e.fill(r.error);
+  return quadrature_means<K>(r.value, e);
 }
 
 // Runs settings.randomizations replicates in lockstep, calling f(u, acc) per point with
@@ -104,10 +57,9 @@ Means<K> quadrature_means(const IntegratorSettings& s, int dims, F& f) {
 // fewer when settings.target_error > 0: the count doubles from min_samples / randomizations
 // until the standard error of every one of the K means is at most target_error. The stopping
 // rule depends only on the cell's own numbers, so results stay independent of threads. Returns
-// the K means of every replicate. For Quad: quadrature_means (deterministic, no replicates).
+// the K means of every replicate (Qmc, Mc only).
 template <int K, class F>
 Means<K> replicate_means(const IntegratorSettings& s, uint64_t stream, int dims, F&& f) {
-  if (s.integrator == Integrator::Quad) return quadrature_means<K>(s, dims, f);
   const int R = s.randomizations;
   const uint32_t n_max = uint32_t(std::max(1, s.samples / R));
   std::vector<std::array<double, K>> sums(static_cast<size_t>(R), std::array<double, K>{});
@@ -160,13 +112,20 @@ Means<K> replicate_means(const IntegratorSettings& s, uint64_t stream, int dims,
 }
 
 // Value g(estimates) and its error: for replicates, the standard error of g over them (value =
-// g(mean of replicates)); for Quad, |g(fine) - g(coarse)|.
+// g(mean of replicates)); for Quad, the first-order propagation of each value's error,
+// sum_k |g(v + e_k u_k) - g(v)|.
 template <int K, class G>
 Estimate combine(const Means<K>& means, G&& g) {
   const auto& reps = means.reps;
   if (means.quadrature) {
-    const double fine = g(reps[0]);
-    return {fine, std::abs(fine - g(reps[1]))};
+    const double value = g(reps[0]);
+    double error = 0;
+    for (int k = 0; k < K; ++k) {
+      std::array<double, K> moved = reps[0];
+      moved[size_t(k)] += reps[1][size_t(k)];
+      error += std::abs(g(moved) - value);
+    }
+    return {value, error};
   }
   std::array<double, K> mean{};
   for (const auto& r : reps)
@@ -184,7 +143,7 @@ Estimate combine(const Means<K>& means, G&& g) {
 
 void check_settings(const IntegratorSettings& s) {
   if (s.integrator == Integrator::Quad) {
-    if (s.samples < 1) throw std::invalid_argument("integrator: samples must be >= 1");
+    if (!(quad_tolerance(s) > 0)) throw std::invalid_argument("integrator: the quadrature's target error must be > 0");
     return;
   }
   if (s.randomizations < 2) throw std::invalid_argument("integrator: randomizations must be >= 2");
@@ -238,6 +197,9 @@ Means<2> ggx_moments(double mu, double r, const IntegratorSettings& s, uint64_t 
   const GgxDistribution ggx(alpha, alpha);
   if (alpha == 0 && s.integrator == Integrator::Mc)
     return {std::vector<std::array<double, 2>>(size_t(s.randomizations), {1.0, schlick_factor(mu)})};
+  if (s.integrator == Integrator::Quad)
+    return alpha == 0 ? quadrature_means<2>({1.0, schlick_factor(mu)}, {0.0, 0.0})
+                      : quadrature_means(ggx_moments_quadrature(mu, alpha, quad_tolerance(s)));
   if (s.integrator != Integrator::Mc)
     return replicate_means<2>(s, stream, 2, [&](const double* u, std::array<double, 2>& acc) {
       ggx_moments_qmc(v, ggx, u[0], u[1], acc);
@@ -256,6 +218,12 @@ Means<2> ggx_avg_moments(double r, const IntegratorSettings& s, uint64_t stream)
   const GgxDistribution ggx(alpha, alpha);
   if (alpha == 0 && s.integrator == Integrator::Mc)  // mirror: E_m,avg = 1, 2 Integral (1-mu)^5 mu = 1/21
     return {std::vector<std::array<double, 2>>(size_t(s.randomizations), {1.0, 1.0 / 21.0})};
+  if (s.integrator == Integrator::Quad) {
+    if (alpha == 0) return quadrature_means<2>({1.0, 1.0 / 21.0}, {0.0, 0.0});
+    return quadrature_means(cosine_average_quadrature<2>(
+        [&](double mu, double tol) { return ggx_moments_quadrature(clamp_cos(mu), alpha, tol); }, {},
+        quad_tolerance(s)));
+  }
   if (s.integrator != Integrator::Mc)
     return replicate_means<2>(s, stream, 3, [&](const double* u, std::array<double, 2>& acc) {
       const double mu = clamp_cos(std::sqrt(u[0]));
@@ -313,6 +281,10 @@ double fresnel_ms_derivative(double f0, double e_avg) {
 
 const char* integrator_name(Integrator i) {
   return i == Integrator::Qmc ? "qmc" : i == Integrator::Mc ? "mc" : "quad";
+}
+
+double quad_tolerance(const IntegratorSettings& s) {
+  return s.target_error > 0 ? s.target_error : kQuadDefaultTolerance;
 }
 
 Integrator parse_integrator(const std::string& name) {
@@ -385,7 +357,9 @@ Estimate sheen_E(double mu, double alpha_b, SheenModel model, const IntegratorSe
     return model == SheenModel::Main ? sheen_brdf(v, l, ab) : sheen_brdf_ash(v, l, ab);
   };
   Means<1> reps;
-  if (s.integrator != Integrator::Mc) {
+  if (s.integrator == Integrator::Quad) {
+    reps = quadrature_means(sheen_albedo_quadrature(mu, ab, model == SheenModel::Ash, quad_tolerance(s)));
+  } else if (s.integrator != Integrator::Mc) {
     // One-sample mixture (balance heuristic) of uniform hemisphere sampling (robust at grazing l)
     // and Charlie half-vector sampling h ~ D_b(h) (h.n), which follows the lobe at small alpha_b:
     // with s = sin(theta_h), p(s) ~ s^(k+1) (k = 1/alpha_b), so s = u^(1/(k+2)).
@@ -420,11 +394,6 @@ Estimate sheen_E(double mu, double alpha_b, SheenModel model, const IntegratorSe
   return combine<1>(reps, [](const std::array<double, 1>& m) { return m[0]; });
 }
 
-namespace {
-// Quad's error target for a glass cell: the settings' target, or 1e-7 with a fixed budget.
-double glass_target(const IntegratorSettings& s) { return s.target_error > 0 ? s.target_error : 1e-7; }
-}  // namespace
-
 Estimate glass_E(double mu, double r, double ior, bool inside, const IntegratorSettings& s, uint64_t stream) {
   check_settings(s);
   const Vec3 v = view_dir(clamp_cos(mu));
@@ -434,7 +403,8 @@ Estimate glass_E(double mu, double r, double ior, bool inside, const IntegratorS
   if (s.integrator == Integrator::Quad) {
     // Smooth interface: F_d + (1 - F_d) = 1 (also under total internal reflection, F_d = 1).
     if (alpha == 0) return {1.0, 0.0};
-    return glass_albedo_quadrature(v.z, alpha, f0, eta_i, eta_o, glass_target(s));
+    const QuadResult<1> q = dielectric_albedo_quadrature(v.z, alpha, f0, eta_i, eta_o, quad_tolerance(s));
+    return {q.value[0], q.error};
   }
   return combine<1>(replicate_means<1>(s, stream, 2,
                                        [&](const double* u, std::array<double, 1>& acc) {
@@ -450,24 +420,13 @@ Estimate glass_E_avg(double r, double ior, bool inside, const IntegratorSettings
   const GgxDistribution ggx(alpha, alpha);
   if (s.integrator == Integrator::Quad) {
     if (alpha == 0) return {1.0, 0.0};
-    // 2 Integral E_g mu dmu: Gauss-Legendre in mu, 2 panels of 8 nodes per segment (4 nodes for
-    // the error estimate), the segments split at the critical cosine sqrt(1 - 1/eta^2) from
-    // inside (the total-internal-reflection edge), each E_g by the directional quadrature.
-    static const QuadratureRule r8 = gauss_legendre(8), r4 = gauss_legendre(4);
-    double err = 0;
-    auto e = [&](double mu) {
-      const Estimate d = glass_albedo_quadrature(clamp_cos(mu), alpha, f0, eta_i, eta_o, glass_target(s));
-      err = std::max(err, d.error);
-      return 2.0 * mu * d.value;
-    };
-    std::vector<double> cuts = {0.0, 1.0};
-    if (inside && eta > 1 + kIndexMatched) cuts.insert(cuts.begin() + 1, std::sqrt(1.0 - 1.0 / (eta * eta)));
-    double fine = 0, coarse = 0;
-    for (size_t k = 0; k + 1 < cuts.size(); ++k) {
-      fine += integrate_gl(e, cuts[k], cuts[k + 1], 2, r8);
-      coarse += integrate_gl(e, cuts[k], cuts[k + 1], 2, r4);
-    }
-    return {fine, std::abs(fine - coarse) + err};
+    // Split at the critical cosine sqrt(1 - 1/eta^2) from inside (the total-internal-reflection edge).
+    std::vector<double> cuts;
+    if (inside && eta > 1 + kIndexMatched) cuts.push_back(std::sqrt(1.0 - 1.0 / (eta * eta)));
+    const QuadResult<1> q = cosine_average_quadrature<1>(
+        [&](double mu, double tol) { return dielectric_albedo_quadrature(clamp_cos(mu), alpha, f0, eta_i, eta_o, tol); },
+        cuts, quad_tolerance(s));
+    return {q.value[0], q.error};
   }
   // mu = sqrt(u0) has density 2 mu: the weights are the directional ones.
   return combine<1>(replicate_means<1>(s, stream, 3,

@@ -23,10 +23,10 @@
 //  - Mc: the plain Monte Carlo baseline: uniform hemisphere sampling of l (and uniform mu for
 //    averages) with Pcg32, in `randomizations` batches (the glass albedos: Qmc's visible-normal
 //    estimator driven by Pcg32).
-//  - Quad: deterministic tensor-product Gauss-Legendre quadrature of Qmc's integrand over its
-//    unit square / cube (the sampler's map u -> h is the change of variables to the microfacet
-//    domain), P panels of 4 nodes per dimension; the error is |I(P) - I(P/2)|, and P doubles from
-//    8 while that exceeds target_error (and (4P)^dims <= samples). No replicates, no seed.
+//  - Quad: deterministic adaptive Gauss-Kronrod quadrature over the microfacet normal in
+//    coordinates that follow the lobe, the azimuth split where a term switches on or off
+//    (lut/microfacet_quadrature.h); the error is its embedded estimate, at most target_error
+//    (kQuadDefaultTolerance when 0). No replicates, no seed, no sample budget.
 // Qmc and Mc return the mean of the replicates and its standard error (spread of the replicates /
 // sqrt(R)). Streams: the random numbers of a call depend only on (settings.seed, stream), so a
 // table cell with stream = cell id gives the same bits whatever the thread count.
@@ -64,9 +64,13 @@ struct IntegratorSettings {
   int min_samples = 8 << 13;
 };
 
+// The Quad integrator's target error per value when the settings give none (target_error 0).
+constexpr double kQuadDefaultTolerance = 1e-7;
+double quad_tolerance(const IntegratorSettings& s);
+
 struct Estimate {
   double value = 0;
-  double error = 0;  // standard error (1 sigma) of value
+  double error = 0;  // standard error (1 sigma) of value; Quad: the quadrature's error estimate
 };
 
 // Grazing clamp of the view cosine (see above).

@@ -67,7 +67,8 @@ bool is_glass_table(const std::string& t) { return t.rfind("Glass_", 0) == 0 && 
 
 
 Integrator lut_default_integrator(const std::string& t) {
-  return is_glass_table(t) ? Integrator::Quad : Integrator::Qmc;
+  (void)lut_axis_names(t);  // refuses an unknown name
+  return Integrator::Quad;
 }
 
 std::vector<int> lut_default_size(const std::string& t) {
@@ -94,7 +95,9 @@ IntegratorSettings lut_settings(const std::string& table, const LutOptions& opt)
   s.samples = opt.samples > 0 ? opt.samples : lut_default_samples(table);
   s.randomizations = opt.randomizations;
   s.seed = opt.seed;
-  s.target_error = opt.target_error;
+  s.target_error = opt.target_error >= 0 ? opt.target_error
+                   : s.integrator == Integrator::Quad ? kQuadDefaultTolerance
+                                                      : kLutDefaultTargetError;
   return s;
 }
 
@@ -148,7 +151,8 @@ void validate_lut_options(const LutOptions& opt) {
                                 std::to_string(opt.randomizations) + ")");
   if (opt.samples > 0 && opt.samples / opt.randomizations > (1 << 24))
     throw std::invalid_argument("samples / randomizations must be at most 2^24");
-  if (!(opt.target_error >= 0) || opt.target_error > 1) throw std::invalid_argument("target error must be in [0, 1]");
+  if (!(opt.target_error >= 0 || opt.target_error == -1) || opt.target_error > 1)
+    throw std::invalid_argument("target error must be in [0, 1]");
   if (opt.threads < 0 || opt.threads > limits::kThreads)
     throw std::invalid_argument("threads must be from 0 (all cores) to " + std::to_string(limits::kThreads));
   // Endpoint grids need two samples per axis for the default sizes too (all defaults are >= 16).

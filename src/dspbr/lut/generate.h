@@ -28,8 +28,8 @@ const std::vector<std::string>& lut_table_names();
 bool is_lut_table_name(const std::string& name);
 bool is_glass_table(const std::string& name);
 // The glass tables' IOR axis glass_ior_of_x / glass_x_of_ior: lut/warped_table.h.
-// The integrator a table uses unless one is chosen (LutOptions::integrator): Quad for the glass
-// tables, Qmc for the others (measured: docs/luts.md, "Speed").
+// The integrator a table uses unless one is chosen (LutOptions::integrator): Quad for every
+// table (measured: docs/luts.md, "Speed").
 Integrator lut_default_integrator(const std::string& table);
 
 // Axis names (slowest -> fastest) and default sizes of a table.
@@ -38,7 +38,8 @@ std::vector<int> lut_default_size(const std::string& table);
 // Default maximum samples per cell (all replicates); the averages integrate over one more
 // dimension and get more. With the default target error most cells stop far earlier.
 int lut_default_samples(const std::string& table);
-// Default adaptive target: standard error 1e-5 per cell, a tenth of the 1e-4 accuracy goal.
+// Default adaptive target of Qmc and Mc: standard error 1e-5 per cell, a tenth of the 1e-4
+// accuracy goal (Quad: kQuadDefaultTolerance, lut/albedo.h).
 constexpr double kLutDefaultTargetError = 1e-5;
 
 struct LutOptions {
@@ -47,7 +48,9 @@ struct LutOptions {
   GridKind grid = GridKind::CellCentred;
   std::optional<Integrator> integrator;  // none: lut_default_integrator(table)
   int samples = 0;         // per cell (maximum when target_error > 0); 0: lut_default_samples(table)
-  double target_error = kLutDefaultTargetError;  // adaptive stop (IntegratorSettings); 0: fixed budget
+  // Adaptive stop (IntegratorSettings); Qmc/Mc 0: fixed budget; < 0: the integrator's default
+  // (kLutDefaultTargetError, Quad kQuadDefaultTolerance).
+  double target_error = -1;
   int randomizations = 8;  // replicates per cell (>= 2)
   uint64_t seed = 1;
   int threads = 0;         // 0: all hardware threads

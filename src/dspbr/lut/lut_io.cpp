@@ -28,14 +28,8 @@ using ojson = nlohmann::ordered_json;
 
 std::string sampling_name(const std::string& table, Integrator i) {
   if (i == Integrator::Mc) return "uniform hemisphere (Pcg32)";
-  if (table.rfind("Glass", 0) == 0 && i == Integrator::Quad)
-    return "GGX visible normals, Heitz 2018, tensor Gauss-Legendre over the sampler's unit square";
-  if (table.rfind("Glass", 0) == 0) return "GGX visible normals, Heitz 2018 (" +
-      std::string(i == Integrator::Mc ? "Pcg32" : "Owen-scrambled Sobol'") + ")";
   if (i == Integrator::Quad)
-    return table.rfind("Sheen", 0) == 0
-               ? "mixture of uniform hemisphere and Charlie half-vector sampling, tensor Gauss-Legendre over its unit square"
-               : "GGX visible normals, Heitz 2018, tensor Gauss-Legendre over the sampler's unit square";
+    return "adaptive Gauss-Kronrod over the microfacet normal, azimuth split where a term switches";
   if (table.rfind("Sheen", 0) == 0) return "mixture of uniform hemisphere and Charlie half-vector sampling (Owen-scrambled Sobol')";
   return "GGX visible normals, Heitz 2018 (Owen-scrambled Sobol')";
 }

@@ -10,7 +10,7 @@
 
 #include "../../../fits/dspbr_fits.hpp"
 #include "dspbr/fresnel.h"
-#include "dspbr/lut/glass_quadrature.h"
+#include "dspbr/lut/microfacet_quadrature.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/validate/lut_reference.h"
 
@@ -63,9 +63,9 @@ size_t published_values(const LutSet& s, const std::string& t) {
 
 // E_g by the deterministic microfacet-domain quadrature at a tenth of the tables' target error.
 double exact_glass(double mu, double r, double ior, bool inside) {
-  return glass_albedo_quadrature(std::max(mu, 1e-6), std::max(r * r, 1e-12), f0_from_ior(1.0, ior),
-                                 inside ? ior : 1.0, inside ? 1.0 : ior, 1e-6)
-      .value;
+  return dielectric_albedo_quadrature(std::max(mu, 1e-6), std::max(r * r, 1e-12), f0_from_ior(1.0, ior),
+                                      inside ? ior : 1.0, inside ? 1.0 : ior, 1e-6)
+      .value[0];
 }
 
 // Glass_E / Glass_inv_E at the study points (ior = (2 + f0) / (2 - f0): the published axis' ior_x
@@ -268,7 +268,7 @@ std::string lookup_study_markdown(const LookupStudy& s) {
       "Lookup error at {} random off-grid points of the whole domain (cos theta >= 1e-3, roughness >= 0.01, "
       "alpha_b >= 1/256; half log-uniform towards those ends), against independent quadrature; relative where "
       "the exact value exceeds 1. Glass rows (beyond DSPBR 2025x): ior = (2 + u) / (2 - u), u uniform (ior 1..3), "
-      "exact values from the rough-glass quadrature (lut/glass_quadrature.h) at target error 1e-6.\n\n| table | layout | stored values | max error | RMS error |\n|---|---|---:|---:|---:|\n",
+      "exact values from the rough-glass quadrature (lut/microfacet_quadrature.h) at target error 1e-6.\n\n| table | layout | stored values | max error | RMS error |\n|---|---|---:|---:|---:|\n",
       s.points);
   for (const auto& r : s.errors)
     o += fmt::format("| {} | {} | {} | {:.2e} | {:.2e} |\n", r.table, r.layout, r.values ? std::to_string(r.values) : "-",

@@ -18,7 +18,7 @@ struct LookupErrorRow {
   double rms = 0;
 };
 
-struct FurnaceRow {
+struct LookupFurnaceRow {
   std::string material, layout;
   double max_deviation = 0;  // max |albedo - 1| over roughness x cos grid (sheen: vs exact E_b)
 };
@@ -26,7 +26,7 @@ struct FurnaceRow {
 struct LookupStudy {
   int points = 0;
   std::vector<LookupErrorRow> errors;
-  std::vector<FurnaceRow> furnace;
+  std::vector<LookupFurnaceRow> furnace;
   // GGX_E in the published layout (cell-centred N x N, bilinear) at growing N: what size it
   // needs to match the renderer layout (built from the renderer lookups as the exact function).
   std::vector<LookupErrorRow> published_sizes;

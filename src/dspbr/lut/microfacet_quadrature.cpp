@@ -1,0 +1,252 @@
+#include "dspbr/lut/microfacet_quadrature.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "dspbr/constants.h"
+#include "dspbr/fresnel.h"
+#include "dspbr/ggx.h"
+#include "dspbr/sheen.h"
+#include "dspbr/vec3.h"
+
+namespace dspbr {
+
+namespace {
+
+// Share of the tolerance left to the azimuthal integrals (the rest to the polar one).
+constexpr double kInnerShare = 0.1;
+// Polar scan for kinks, then bisection to double precision: kScan points on [0, 1] and, below
+// the first, kScanGraded points in geometric progression from kScanLo (the GGX features sit at
+// w ~ alpha, down to 1e-6).
+constexpr int kScan = 32, kScanGraded = 48;
+constexpr double kScanLo = 1e-9;
+constexpr int kBisections = 52;
+// A threshold that does not exist at this polar angle (below every v.h).
+constexpr double kAbsent = -2.0;
+
+struct Polar {
+  double cz = 0, sz = 0, jac = 0;  // cos, sin of the normal's polar angle; measure factor
+};
+
+// GGX polar variable w (header): cos t = w / sqrt(w^2 + alpha^2 (1 - w^2)) without cancellation
+// at w -> 0; D(h) (h.n) dh = 2 w dw dp / (2 pi).
+Polar ggx_polar(double alpha, double w) {
+  const double s = std::sqrt(std::max(0.0, 1.0 - w * w)) * alpha, d = std::sqrt(w * w + s * s);
+  return {w / d, s / d, 2.0 * w / (2.0 * kPi)};
+}
+
+// Reflection above the horizon: l.z = 2 (v.h) cos t - mu > 0; more generally v.h where
+// l.z = lz.
+double reflection_threshold(double mu, double cz, double lz = 0) { return cz > 0 ? (mu + lz) / (2.0 * cz) : 1e300; }
+
+// Layer splits: G2 falls from its value to 0 over l.z in [0, ~alpha] at the horizon (Lambda(l)
+// ~ alpha / (2 l.z)), a layer narrower than a piece's first nodes at small roughness. The
+// azimuth is also split where |l.z| = kLayer[i] alpha (not kinks: the integrand is smooth there).
+constexpr std::array<double, 3> kLayer = {1.0 / 16.0, 0.5, 4.0};
+
+// {E_m, B}: G2 (v.h) / (mu cos t) times {1, (1 - v.h)^5} (the measure in ggx_polar).
+struct GgxIntegrand {
+  static constexpr int K = 2, kThresholds = 1, kLayers = 3;
+  double mu, sv, alpha;
+  GgxDistribution ggx;
+  double lambda_v;
+  GgxIntegrand(double mu_, double alpha_)
+      : mu(mu_), sv(std::sqrt(std::max(0.0, 1.0 - mu_ * mu_))), alpha(alpha_), ggx(alpha_, alpha_),
+        lambda_v(ggx.Lambda(Vec3{sv, 0.0, mu_})) {}
+  Polar polar(double w) const { return ggx_polar(alpha, w); }
+  void thresholds(double cz, double* t) const { t[0] = reflection_threshold(mu, cz); }
+  void layers(double cz, double* t) const {
+    for (int i = 0; i < kLayers; ++i) t[i] = reflection_threshold(mu, cz, kLayer[size_t(i % 3)] * alpha);
+  }
+  void breaks(std::vector<double>&) const {}
+  void value(const Vec3& v, const Vec3& h, double vh, double cz, QuadValues<K>& out) const {
+    const Vec3 l = reflect(v, h);
+    if (vh <= 0 || l.z <= 0) return;  // round-off at a piece's end
+    const double w = vh / ((1.0 + lambda_v + ggx.Lambda(l)) * mu * cz);
+    const double m = 1.0 - vh, m2 = m * m;
+    out[0] += w;
+    out[1] += w * (m2 * m2 * m);
+  }
+};
+
+// E_g of the rough dielectric interface (lut/albedo.h glass_E).
+struct GlassIntegrand {
+  static constexpr int K = 1, kThresholds = 4, kLayers = 6;
+  double mu, sv, alpha, f0, eta_i, eta_o, eta;  // eta = eta_i / eta_o
+  GgxDistribution ggx;
+  double lambda_v, vh_tir;
+  GlassIntegrand(double mu_, double alpha_, double f0_, double eta_i_, double eta_o_)
+      : mu(mu_), sv(std::sqrt(std::max(0.0, 1.0 - mu_ * mu_))), alpha(alpha_), f0(f0_), eta_i(eta_i_),
+        eta_o(eta_o_), eta(eta_i_ / eta_o_), ggx(alpha_, alpha_), lambda_v(ggx.Lambda(Vec3{sv, 0.0, mu_})),
+        vh_tir(eta > 1 ? std::sqrt(1.0 - 1.0 / (eta * eta)) : kAbsent) {}
+  Polar polar(double w) const { return ggx_polar(alpha, w); }
+  // The refraction's horizon: l_t.z = -eta mu + (eta v.h - q) cos t with q = sqrt(1 - eta^2 (1 - v.h^2));
+  // l_t.z = 0 at v.h = (c^2 + eta^2 - 1) / (2 c eta), c = eta mu / cos t, where eta v.h - q = c >= 0
+  // needs c^2 <= eta^2 - 1 (eta > 1 only: for eta <= 1 the refraction is always below). Outside
+  // that range the threshold sits at the TIR edge, where it meets it, so it is continuous in t.
+  // (With lz < 0: where l_t.z = lz, c = (eta mu + lz) / cos t.)
+  double refraction_threshold(double cz, double lz = 0) const {
+    if (eta <= 1 || cz <= 0) return kAbsent;
+    const double c = (eta * mu + lz) / cz;
+    if (c < 0) return kAbsent;
+    if (c * c > eta * eta - 1.0) return vh_tir;
+    return std::clamp((c * c + eta * eta - 1.0) / (2.0 * c * eta), vh_tir, 1.0);
+  }
+  void thresholds(double cz, double* t) const {
+    t[0] = 0.0;
+    t[1] = reflection_threshold(mu, cz);
+    t[2] = vh_tir;
+    t[3] = refraction_threshold(cz);
+  }
+  void layers(double cz, double* t) const {
+    for (int i = 0; i < 3; ++i) {
+      t[i] = reflection_threshold(mu, cz, kLayer[size_t(i)] * alpha);
+      t[3 + i] = refraction_threshold(cz, -kLayer[size_t(i)] * alpha);
+    }
+  }
+  void breaks(std::vector<double>&) const {}
+  void value(const Vec3& v, const Vec3& h, double vh, double cz, QuadValues<K>& out) const {
+    if (vh <= 0) return;
+    const double F = fresnel_schlick_d(vh, f0, 1.0, eta_i, eta_o);
+    double w = 0;
+    const Vec3 lr = reflect(v, h);
+    if (lr.z > 0) w += F / (1.0 + lambda_v + ggx.Lambda(lr));
+    Vec3 lt;  // at eta = 1: l_t = -v, the limit eta -> 1+
+    if (F < 1 && refract_dir(v, h, eta, lt) && lt.z < 0) w += (1.0 - F) / (1.0 + lambda_v + ggx.Lambda(lt));
+    out[0] += w * vh / (mu * cz);
+  }
+};
+
+// E_b: f_b(v, l) (l.n) 4 (v.h) over dh = d(cos t) dp.
+struct SheenIntegrand {
+  static constexpr int K = 1, kThresholds = 1, kLayers = 0;
+  double mu, sv, alpha_b;
+  bool ash;
+  SheenIntegrand(double mu_, double alpha_b_, bool ash_)
+      : mu(mu_), sv(std::sqrt(std::max(0.0, 1.0 - mu_ * mu_))), alpha_b(alpha_b_), ash(ash_) {}
+  Polar polar(double x) const { return {x, std::sqrt(std::max(0.0, 1.0 - x * x)), 1.0}; }
+  void thresholds(double cz, double* t) const { t[0] = reflection_threshold(mu, cz); }
+  void layers(double, double*) const {}
+  // The Charlie peak at the horizon: sin^(1/alpha_b) t has width ~ sqrt(alpha_b) in cos t.
+  void breaks(std::vector<double>& b) const {
+    for (double k : {1.0, 3.0, 9.0}) b.push_back(k * std::sqrt(alpha_b));
+  }
+  void value(const Vec3& v, const Vec3& h, double vh, double, QuadValues<K>& out) const {
+    const Vec3 l = reflect(v, h);
+    if (vh <= 0 || l.z <= 0) return;
+    out[0] += (ash ? sheen_brdf_ash(v, l, alpha_b) : sheen_brdf(v, l, alpha_b)) * l.z * 4.0 * vh;
+  }
+};
+
+// The integral over h of model.value (header), both levels adaptive.
+template <class M>
+QuadResult<M::K> integrate_normals(const M& m, double tolerance) {
+  constexpr int K = M::K;
+  const Vec3 v{m.sv, 0.0, m.mu};
+  long evaluations = 0;
+  const double inner_tol = kInnerShare * tolerance;
+  // 2 Integral_0^pi value dp (value is even in p), the measure included, as
+  // 2 Integral_-1^1 value dc / sqrt(1 - c^2) in c = cos(p), where v.h = A c + B is linear: the
+  // pieces end where v.h crosses a threshold (or a layer split, below).
+  auto azimuth = [&](double s, QuadValues<K>& out, double& err) {
+    out = {};
+    err = 0;
+    const Polar p = m.polar(s);
+    if (!(p.cz > 0) || p.jac == 0) return;
+    const double A = m.sv * p.sz, B = m.mu * p.cz;
+    std::array<double, M::kThresholds + M::kLayers + 2> cs{};
+    int n = 0;
+    cs[size_t(n++)] = -1.0;
+    cs[size_t(n++)] = 1.0;
+    double t[M::kThresholds + M::kLayers];
+    m.thresholds(p.cz, t);
+    m.layers(p.cz, t + M::kThresholds);
+    for (double x : t)
+      if (A > 0 && x > B - A && x < B + A) cs[size_t(n++)] = (x - B) / A;
+    std::sort(cs.begin(), cs.begin() + n);
+    for (int k = 0; k + 1 < n; ++k) {
+      const double a = cs[size_t(k)], b = cs[size_t(k + 1)];
+      if (b - a < 1e-15) continue;
+      // Smoothstep substitution c = a + (b - a)(3 x^2 - 2 x^3): square-root behaviour at the
+      // ends (the piece's threshold, 1 / sqrt(1 - c^2) at c = -1 and 1) becomes smooth.
+      const QuadResult<K> r = integrate_adaptive<K>(
+          [&](double x, QuadValues<K>& val, double& e) {
+            e = 0;
+            val = {};
+            const double c = a + (b - a) * x * x * (3.0 - 2.0 * x);
+            const double sin_p = std::sqrt(std::max(0.0, (1.0 - c) * (1.0 + c)));
+            if (sin_p <= 0) return;
+            const Vec3 h{p.sz * c, p.sz * sin_p, p.cz};
+            m.value(v, h, A * c + B, p.cz, val);
+            const double jw = 2.0 * p.jac * (b - a) * 6.0 * x * (1.0 - x) / sin_p;
+            for (double& y : val) y *= jw;
+          },
+          {0.0, 1.0}, inner_tol / (n - 1), kQuadMaxPanels);
+      evaluations += r.evaluations;
+      for (int c = 0; c < K; ++c) out[size_t(c)] += r.value[size_t(c)];
+      err += r.error;
+    }
+  };
+  // Kinks: where a threshold meets v.h at p = 0 (cos(t_v - t)) or p = pi (cos(t_v + t)).
+  // The layer splits are polar breaks too (at normal incidence the layer lies across t alone).
+  constexpr int kSplits = M::kThresholds + M::kLayers;
+  auto gaps = [&](double s, std::array<double, 2 * kSplits>& d) {
+    const Polar p = m.polar(s);
+    const double A = m.sv * p.sz, B = m.mu * p.cz;
+    double t[kSplits];
+    m.thresholds(p.cz, t);
+    m.layers(p.cz, t + M::kThresholds);
+    for (int k = 0; k < kSplits; ++k) {
+      d[size_t(2 * k)] = t[k] - (B - A);
+      d[size_t(2 * k + 1)] = t[k] - (B + A);
+    }
+  };
+  std::vector<double> breaks = {0.0, 1.0};
+  m.breaks(breaks);
+  std::array<double, 2 * kSplits> prev{}, cur{}, mid{};
+  std::vector<double> scan;
+  for (int i = 0; i < kScanGraded; ++i) scan.push_back(kScanLo * std::pow(1.0 / (kScan * kScanLo), double(i) / kScanGraded));
+  for (int i = 1; i <= kScan; ++i) scan.push_back(double(i) / kScan);
+  double s_prev = scan[0];
+  gaps(s_prev, prev);
+  for (size_t i = 1; i < scan.size(); ++i) {
+    const double s = scan[i];
+    gaps(s, cur);
+    for (size_t k = 0; k < cur.size(); ++k) {
+      if ((prev[k] < 0) == (cur[k] < 0)) continue;
+      double lo = s_prev, hi = s;
+      for (int it = 0; it < kBisections; ++it) {
+        const double x = 0.5 * (lo + hi);
+        gaps(x, mid);
+        ((mid[k] < 0) == (prev[k] < 0) ? lo : hi) = x;
+      }
+      breaks.push_back(0.5 * (lo + hi));
+    }
+    prev = cur;
+    s_prev = s;
+  }
+  std::sort(breaks.begin(), breaks.end());
+  breaks.erase(std::remove_if(breaks.begin(), breaks.end(), [](double b) { return b < 0 || b > 1; }), breaks.end());
+  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+  QuadResult<K> r = integrate_adaptive<K>(azimuth, breaks, (1.0 - kInnerShare) * tolerance, kQuadMaxPanels);
+  r.evaluations = evaluations;
+  return r;
+}
+
+}  // namespace
+
+QuadResult<2> ggx_moments_quadrature(double mu, double alpha, double tolerance) {
+  return integrate_normals(GgxIntegrand(mu, alpha), tolerance);
+}
+
+QuadResult<1> dielectric_albedo_quadrature(double mu, double alpha, double f0, double eta_i, double eta_o,
+                                      double tolerance) {
+  return integrate_normals(GlassIntegrand(mu, alpha, f0, eta_i, eta_o), tolerance);
+}
+
+QuadResult<1> sheen_albedo_quadrature(double mu, double alpha_b, bool ash, double tolerance) {
+  return integrate_normals(SheenIntegrand(mu, alpha_b, ash), tolerance);
+}
+
+}  // namespace dspbr
