@@ -487,7 +487,7 @@ py::list lut_axes_of(const std::string& name, const py::object& size, const std:
   py::dict sizes;
   if (!size.is_none()) sizes[py::str(name)] = size;
   const LutOptions opt =
-      lut_options(py::str(name), sizes, "", 0, -1.0, 8, py::int_(1), 0, grid);
+      lut_options(py::str(name), sizes, "", 0, kLutIntegratorDefault, 8, py::int_(1), 0, grid);
   py::list out;
   for (const Axis& a : lut_axes(name, opt)) {
     py::array_t<double> x(std::vector<py::ssize_t>{a.size});
@@ -599,14 +599,14 @@ from the surface, normalized here; a (3,) argument broadcasts against an (N, 3) 
   auto lut = m.def_submodule("lut", "Energy-compensation tables (docs/luts.md)");
   lut.def("names", &lut_table_names, "Table names in canonical order.");
   lut.def("generate", &lut_generate, py::arg("tables") = py::none(), py::arg("size") = py::none(), py::kw_only(),
-          py::arg("integrator") = "", py::arg("samples") = 0, py::arg("target_error") = -1.0,
+          py::arg("integrator") = "", py::arg("samples") = 0, py::arg("target_error") = kLutIntegratorDefault,
           py::arg("randomizations") = 8, py::arg("seed") = py::int_(1), py::arg("threads") = 0,
           py::arg("grid") = "cell", py::arg("errors") = false,
           R"doc(
 Generates tables of the published layout as `dspbr lut` does with the same settings (bit-identical
 values for the same seed, whatever the thread count). tables: list of names (default: all six);
 size: {name: int or tuple of ints, slowest axis first}; integrator "quad" | "qmc" | "mc" ("": quad, deterministic); samples (qmc/mc; 0: the
-table's default maximum); target_error (< 0: the integrator's default, 1e-7 quad, 1e-5 qmc/mc;
+table's default maximum); target_error (nan: the integrator's default, 1e-7 quad, 1e-5 qmc/mc;
 qmc/mc 0: fixed budget); randomizations; seed; threads (0: all
 cores); grid "cell" | "endpoint". Returns {name: array of the table's shape}, or with errors=True
 {name: {"values": array, "errors": per-cell standard errors}}.

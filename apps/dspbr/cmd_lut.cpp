@@ -38,7 +38,7 @@ struct LutArgs {
   std::string formats = "exr,png,hpp,json";
   std::string integrator;  // empty: each table's default (lut_default_integrator)
   int samples = 0;
-  double target_error = -1;  // < 0: the integrator's default
+  double target_error = kLutIntegratorDefault;
   int randomizations = 8;
   uint64_t seed = 1;
   int threads = 0;
@@ -286,8 +286,7 @@ void add_lut_command(CLI::App& app) {
       ->check(non_negative_integer());
   cmd->add_option("--target-error", args->target_error,
                   "Error target per cell: quad's error estimate (default 1e-7), qmc/mc's standard error "
-                  "(default 1e-5; 0: the fixed budget of --samples)")
-      ->check(CLI::Range(0.0, 1.0));
+                  "(default 1e-5; 0: the fixed budget of --samples)");
   cmd->add_option("--randomizations", args->randomizations,
                   "Independent randomizations per cell for the error estimate (default: 8)");
   cmd->add_option("--seed", args->seed, "Random seed (default: 1)")->check(non_negative_integer());

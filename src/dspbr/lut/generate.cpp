@@ -3,6 +3,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 
@@ -95,7 +96,7 @@ IntegratorSettings lut_settings(const std::string& table, const LutOptions& opt)
   s.samples = opt.samples > 0 ? opt.samples : lut_default_samples(table);
   s.randomizations = opt.randomizations;
   s.seed = opt.seed;
-  s.target_error = opt.target_error >= 0 ? opt.target_error
+  s.target_error = !std::isnan(opt.target_error) ? opt.target_error
                    : s.integrator == Integrator::Quad ? kQuadDefaultTolerance
                                                       : kLutDefaultTargetError;
   return s;
@@ -151,7 +152,7 @@ void validate_lut_options(const LutOptions& opt) {
                                 std::to_string(opt.randomizations) + ")");
   if (opt.samples > 0 && opt.samples / opt.randomizations > (1 << 24))
     throw std::invalid_argument("samples / randomizations must be at most 2^24");
-  if (!(opt.target_error >= 0 || opt.target_error == -1) || opt.target_error > 1)
+  if (!std::isnan(opt.target_error) && !(opt.target_error >= 0 && opt.target_error <= 1))
     throw std::invalid_argument("target error must be in [0, 1]");
   if (opt.threads < 0 || opt.threads > limits::kThreads)
     throw std::invalid_argument("threads must be from 0 (all cores) to " + std::to_string(limits::kThreads));

@@ -5,6 +5,7 @@
 // whatever the thread count.
 #pragma once
 #include <functional>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -41,6 +42,8 @@ int lut_default_samples(const std::string& table);
 // Default adaptive target of Qmc and Mc: standard error 1e-5 per cell, a tenth of the 1e-4
 // accuracy goal (Quad: kQuadDefaultTolerance, lut/albedo.h).
 constexpr double kLutDefaultTargetError = 1e-5;
+// LutOptions::target_error: "the chosen integrator's default".
+constexpr double kLutIntegratorDefault = std::numeric_limits<double>::quiet_NaN();
 
 struct LutOptions {
   std::vector<std::string> tables = lut_table_names();  // which tables (canonical names)
@@ -48,9 +51,9 @@ struct LutOptions {
   GridKind grid = GridKind::CellCentred;
   std::optional<Integrator> integrator;  // none: lut_default_integrator(table)
   int samples = 0;         // per cell (maximum when target_error > 0); 0: lut_default_samples(table)
-  // Adaptive stop (IntegratorSettings); Qmc/Mc 0: fixed budget; < 0: the integrator's default
-  // (kLutDefaultTargetError, Quad kQuadDefaultTolerance).
-  double target_error = -1;
+  // Adaptive stop (IntegratorSettings); Qmc/Mc 0: fixed budget; kLutIntegratorDefault (NaN): the
+  // integrator's default (kLutDefaultTargetError, Quad kQuadDefaultTolerance).
+  double target_error = kLutIntegratorDefault;
   int randomizations = 8;  // replicates per cell (>= 2)
   uint64_t seed = 1;
   int threads = 0;         // 0: all hardware threads
