@@ -11,7 +11,6 @@
 #include "dspbr/ggx.h"
 #include "dspbr/lut/microfacet_quadrature.h"
 #include "dspbr/lut/qmc.h"
-#include "dspbr/quadrature.h"
 #include "dspbr/rng.h"
 #include "dspbr/sheen.h"
 
