@@ -407,7 +407,7 @@ LutOptions lut_options(const py::object& tables, const py::object& size, const s
     opt.tables.clear();
     for (const auto& t : names) {
       if (!is_lut_table_name(t))
-        fail("tables: unknown table '" + t + "' (choose from GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E)");
+        fail("tables: unknown table '" + t + "' (choose from " + lut_names_list(kPublishedLayout) + ")");
       if (std::find(opt.tables.begin(), opt.tables.end(), t) == opt.tables.end()) opt.tables.push_back(t);
     }
   }
@@ -415,7 +415,8 @@ LutOptions lut_options(const py::object& tables, const py::object& size, const s
     if (!py::isinstance<py::dict>(size)) fail("size expects a dict {table name: size}, e.g. {\"GGX_E\": (64, 64)}");
     for (const auto& [k, v] : size.cast<py::dict>()) {
       const std::string name = py::str(k).cast<std::string>();
-      if (!is_lut_table_name(name)) fail("size: unknown table '" + name + "'");
+      if (!is_lut_table_name(name))
+        fail("size: unknown table '" + name + "' (choose from " + lut_names_list(kPublishedLayout) + ")");
       opt.sizes[name] = dims_of(v, name);
     }
   }

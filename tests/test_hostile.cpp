@@ -68,7 +68,7 @@ TEST(Hostile, JsonNested1e5DeepIsRefusedByEveryReader) {
   expect_usage_error("scene analyze " + gltf_path, gltf_path + ": " + kDeepMessage);
   expect_usage_error("scene analyze " + glb_path, glb_path + ": " + kDeepMessage);
   expect_usage_error("lut --scene " + glb_path + out, glb_path + ": " + kDeepMessage);
-  const std::string published = temp_file("deep_luts.json", R"({"format": "dspbr_luts", "tables": )" + deep + "}");
+  const std::string published = temp_file("deep_luts.json", R"({"format": "dspbr_luts", "version": 1, "tables": )" + deep + "}");
   const std::string renderer =
       temp_file("deep_renderer.json", R"({"format": "dspbr_renderer_luts", "tables": {"GGX_E": {"axes": )" + deep + "}}}");
   expect_usage_error("validate --quick --no-html --luts " + published + out, published + ": " + kDeepMessage);
@@ -88,7 +88,7 @@ TEST(Hostile, TableAxisSizesWhoseProductWrapsAreRefused) {
   const int sizes[] = {1 << 22, 1 << 21, 1 << 21};
   const char* names[] = {"f0", "roughness", "cos_theta"};
   for (int d = 0; d < 3; ++d) axes.push_back({{"name", names[d]}, {"size", sizes[d]}, {"lo", 0}, {"hi", 1}, {"grid", "cell"}});
-  const Json doc = {{"format", "dspbr_luts"}, {"tables", {{"Base_E", {{"axes", axes}, {"values", Json::array()}}}}}};
+  const Json doc = {{"format", "dspbr_luts"}, {"version", 1}, {"tables", {{"Base_E", {{"axes", axes}, {"values", Json::array()}}}}}};
   const std::string path = temp_file("wrap_luts.json", doc.dump());
   const std::string message = "tables.Base_E.axes[0].size must be an integer from 1 to " +
                               std::to_string(dspbr::limits::kTableAxisSize) + ", got 4194304";
@@ -111,7 +111,7 @@ TEST(Hostile, TableAxisSizesWhoseProductWrapsAreRefused) {
 }
 
 TEST(Hostile, EmptyTablesObjectDoesNotValidate) {
-  const std::string path = temp_file("empty_tables.json", R"({"format": "dspbr_luts", "tables": {}})");
+  const std::string path = temp_file("empty_tables.json", R"({"format": "dspbr_luts", "version": 1, "tables": {}})");
   expect_usage_error("validate --quick --no-html --luts " + path + " --out " + ::testing::TempDir() + "/hostile_out",
                      path);
   EXPECT_THROW(dspbr::read_lut_json(path), std::runtime_error);
@@ -170,7 +170,7 @@ TEST(Hostile, NumberWhereAStringBelongsNamesTheFileAndThePath) {
   const std::string out = " --out " + ::testing::TempDir() + "/hostile_out";
   const std::string luts = temp_file(
       "name_number.json",
-      R"({"format": "dspbr_luts", "tables": {"GGX_E_avg": {"axes": [{"name": 5, "size": 2, "lo": 0, "hi": 1, "grid": "cell"}], "values": [1, 1]}}})");
+      R"({"format": "dspbr_luts", "version": 1, "tables": {"GGX_E_avg": {"axes": [{"name": 5, "size": 2, "lo": 0, "hi": 1, "grid": "cell"}], "values": [1, 1]}}})");
   expect_usage_error("validate --quick --no-html --luts " + luts + out, luts + "': tables.GGX_E_avg.axes[0].name must be a string, got 5");
   const std::string format = temp_file("format_number.json", R"({"format": 5, "tables": {}})");
   expect_usage_error("validate --quick --no-html --luts " + format + out, format + "': not a dspbr_luts file");
@@ -233,7 +233,7 @@ TEST(Hostile, ResultsThatOverflowAreErrorsNotNull) {
 TEST(Hostile, TableAxisWithAnEmptyRangeIsRefused) {
   // Found by fuzz_luts: lo == hi made the lookup's cell index 0/0 (UBSan: NaN converted to int).
   const std::string text =
-      R"({"format": "dspbr_luts", "tables": {"GGX_E_avg": {"axes": [{"name": "roughness", "size": 2, "lo": 0.5, "hi": 0.5, "grid": "cell"}], "values": [1, 1]}}})";
+      R"({"format": "dspbr_luts", "version": 1, "tables": {"GGX_E_avg": {"axes": [{"name": "roughness", "size": 2, "lo": 0.5, "hi": 0.5, "grid": "cell"}], "values": [1, 1]}}})";
   try {
     dspbr::read_lut_json_text(text, "range.json");
     ADD_FAILURE() << "accepted";

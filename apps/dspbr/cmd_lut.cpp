@@ -43,8 +43,11 @@ struct LutArgs {
   uint64_t seed = 1;
   int threads = 0;
   bool half = false;
+  bool quiet = false;  // no progress on stderr
   bool bench = false;
   bool bench_lookups = false;
+  bool bench_integrators = false;  // --bench without the point-of-use study
+  std::string bench_csv;           // --bench: also the integrator rows as CSV (for the plot)
   int bench_points = 400;
   std::string scene;
   bool transmission_compensation = false;  // --scene: also the tables of the compensation
@@ -92,8 +95,7 @@ LutOptions to_options(const LutArgs& a) {
     opt.tables.clear();
     for (const std::string& t : split(a.tables, ',')) {
       if (!is_lut_table_name(t))
-        throw UsageError("--tables: unknown table '" + t +
-                         "' (choose from GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E)");
+        throw UsageError("--tables: unknown table '" + t + "' (choose from " + lut_names_list(kPublishedLayout) + ")");
       if (std::find(opt.tables.begin(), opt.tables.end(), t) == opt.tables.end()) opt.tables.push_back(t);
     }
   }
@@ -101,7 +103,8 @@ LutOptions to_options(const LutArgs& a) {
     const auto eq = s.find('=');
     if (eq == std::string::npos) throw UsageError("--size: '" + s + "' is not NAME=SIZE, e.g. GGX_E=64x64");
     const std::string name = s.substr(0, eq);
-    if (!is_lut_table_name(name)) throw UsageError("--size: unknown table '" + name + "'");
+    if (!is_lut_table_name(name))
+      throw UsageError("--size: unknown table '" + name + "' (choose from " + lut_names_list(kPublishedLayout) + ")");
     opt.sizes[name] = parse_dims(s.substr(eq + 1), "--size " + name);
   }
   try {
@@ -119,6 +122,7 @@ LutOptions to_options(const LutArgs& a) {
   opt.randomizations = a.randomizations;
   opt.seed = a.seed;
   opt.threads = a.threads;
+  opt.progress = !a.quiet;
   opt.command = reproducible_command();
   try {
     validate_lut_options(opt);
@@ -171,7 +175,8 @@ void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& for
   const double t_gen = seconds_since(t0);
   const std::string provenance =
       fmt::format("Settings: integrator {}, target error {:g}, seed {}, scale {}.",
-                  integrator_name(lut_settings("GGX_E", opt).integrator), lut_settings("GGX_E", opt).target_error, opt.seed,
+                  integrator_name(lut_settings(lut_name(Lut::GgxE), opt).integrator),
+                  lut_settings(lut_name(Lut::GgxE), opt).target_error, opt.seed,
                   a.renderer_scale);
   if (formats.json)
     write_text_atomically((fs::path(a.out) / "dspbr_renderer_luts.json").string(),
@@ -251,12 +256,15 @@ void run_lookup_bench(const LutArgs& a) {
 // Speed/accuracy study: the point-of-use study, then the integrators' study
 // (validate/integrator_study.h), printed row by row as it runs.
 void run_bench(const LutArgs& a) {
-  run_lookup_bench(a);
+  if (!a.bench_integrators) run_lookup_bench(a);
   std::printf("%s\n", validate::integrator_study_markdown_header().c_str());
-  validate::run_integrator_study(to_options(a), [](const validate::IntegratorStudyRow& r) {
+  std::string csv = validate::integrator_study_csv_header() + "\n";
+  validate::run_integrator_study(to_options(a), [&](const validate::IntegratorStudyRow& r) {
     std::printf("%s\n", validate::integrator_study_markdown_row(r).c_str());
     std::fflush(stdout);
+    csv += validate::integrator_study_csv_row(r) + "\n";
   });
+  if (!a.bench_csv.empty()) write_text_atomically(a.bench_csv, csv);
 }
 
 }  // namespace
@@ -268,8 +276,7 @@ void add_lut_command(CLI::App& app) {
       "Generate the DSPBR energy-compensation tables (EXR, pbrlut.hpp, dspbr_luts.json); see docs/luts.md");
   cmd->add_option("--out", args->out, "Output folder (created when missing)");
   auto* tables_opt = cmd->add_option(
-      "--tables", args->tables, "Comma-separated tables: GGX_E,GGX_E_avg,Base_E,Base_E_avg,Sheen_E,Sheen_ash_E,Glass_E,Glass_inv_E,"
-      "Glass_E_avg,Glass_inv_E_avg (default: all)");
+      "--tables", args->tables, "Comma-separated tables: " + lut_names_list(kPublishedLayout) + " (default: all)");
   cmd->add_option("--scene", args->scene, "Generate only the tables the materials of this scene (.gltf/.glb/.json) need");
   cmd->add_flag("--transmission-compensation", args->transmission_compensation,
                 "With --scene: also the tables of the rough-transmission compensation (beyond DSPBR 2025x)");
@@ -298,6 +305,9 @@ void add_lut_command(CLI::App& app) {
   cmd->add_option("--renderer-scale", args->renderer_scale,
                   "Renderer layout: (N - 1) * scale + 1 samples per axis of the default N (default: 1)");
   cmd->add_flag("--half", args->half, "Write EXRs as 16-bit half floats (default: 32-bit float)");
+  cmd->add_flag("--quiet", args->quiet,
+                "No progress on stderr (default: a live line per table on a terminal, one plain line per table "
+                "elsewhere)");
   cmd->add_flag("--bench", args->bench,
                 "Measure wall time vs max error for a range of sample budgets per table and integrator "
                 "(prints a Markdown table; writes no files)");
@@ -305,11 +315,17 @@ void add_lut_command(CLI::App& app) {
                 "Only the point-of-use part of --bench: lookup error of each layout and fit against quadrature, "
                 "white furnaces from the lookups (Markdown)");
   cmd->add_option("--bench-points", args->bench_points, "Random points of the lookup study (default: 400)");
+  cmd->add_flag("--bench-integrators", args->bench_integrators,
+                "Only the integrators' part of --bench: error against time per cell of qmc, mc and quad for each "
+                "table (Markdown)");
+  cmd->add_option("--bench-csv", args->bench_csv,
+                  "With --bench/--bench-integrators: also write the integrators' rows to this CSV file (the input "
+                  "of scripts/plot_integrator_study.py)");
   cmd->callback([args, tables_opt, layout_opt] {
     args->tables_given = tables_opt->count() > 0;
     args->layouts_given = layout_opt->count() > 0;
     if (args->bench_lookups) run_lookup_bench(*args);
-    else if (args->bench) run_bench(*args);
+    else if (args->bench || args->bench_integrators) run_bench(*args);
     else run_generate(*args);
   });
 }

@@ -14,11 +14,15 @@ namespace dspbr {
 
 namespace {
 
-// Stream ids: table id in the high 32 bits, cell index in the low ones.
-enum TableId : uint64_t { kGgxE = 0, kGgxEAvg = 1, kBaseE = 2, kBaseEAvg = 3, kSheenE = 4, kSheenAshE = 5,
-                          kBaseEMAvg = 6 /* E_m,avg on Base_E's roughness axis */,
-                          kGlassE = 7, kGlassInvE = 8, kGlassEAvg = 9, kGlassInvEAvg = 10 };
+// Stream ids: the table's (registry) in the high 32 bits, cell index in the low ones.
+constexpr uint64_t kBaseEMAvgStream = 6;  // E_m,avg on Base_E's roughness axis
 uint64_t stream_of(uint64_t table, uint64_t cell) { return (table << 32) | cell; }
+
+std::string join_names(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
 
 // Largest size per axis and total cells accepted (keeps memory and run time sane).
 constexpr int kMaxAxisSize = limits::kTableAxisSize;
@@ -42,52 +46,33 @@ Table make_table(const std::string& name, const LutOptions& opt) {
 }  // namespace
 
 const std::vector<std::string>& lut_table_names() {
-  static const std::vector<std::string> names{"GGX_E",   "GGX_E_avg",   "Base_E",          "Base_E_avg",
-                                              "Sheen_E", "Sheen_ash_E", "Glass_E",         "Glass_inv_E",
-                                              "Glass_E_avg", "Glass_inv_E_avg"};
+  static const std::vector<std::string> names = lut_names(kPublishedLayout);
   return names;
 }
 
-bool is_lut_table_name(const std::string& name) {
-  const auto& n = lut_table_names();
-  return std::find(n.begin(), n.end(), name) != n.end();
-}
+bool is_lut_table_name(const std::string& name) { return find_lut(name, kPublishedLayout) != nullptr; }
 
 std::vector<std::string> lut_axis_names(const std::string& t) {
-  if (t == "GGX_E") return {"roughness", "cos_theta"};
-  if (t == "GGX_E_avg") return {"roughness"};
-  if (t == "Base_E") return {"f0", "roughness", "cos_theta"};
-  if (t == "Base_E_avg") return {"f0", "roughness"};
-  if (t == "Sheen_E" || t == "Sheen_ash_E") return {"alpha_b", "cos_theta"};
-  if (t == "Glass_E" || t == "Glass_inv_E") return {"ior_x", "roughness", "cos_theta"};
-  if (t == "Glass_E_avg" || t == "Glass_inv_E_avg") return {"ior_x", "roughness"};
-  throw std::invalid_argument("unknown table '" + t + "'");
+  const LutInfo& info = published_lut(t);
+  return {info.axes.begin(), info.axes.end()};
 }
 
-bool is_glass_table(const std::string& t) { return t.rfind("Glass_", 0) == 0 && is_lut_table_name(t); }
-
+bool is_glass_table(const std::string& t) {
+  const LutInfo* info = find_lut(t, kPublishedLayout);
+  return info != nullptr && info->glass;
+}
 
 Integrator lut_default_integrator(const std::string& t) {
-  (void)lut_axis_names(t);  // refuses an unknown name
+  (void)published_lut(t);  // refuses an unknown name
   return Integrator::Quad;
 }
 
-std::vector<int> lut_default_size(const std::string& t) {
-  if (t == "GGX_E") return {32, 32};
-  if (t == "GGX_E_avg") return {32};
-  if (t == "Base_E") return {16, 16, 16};
-  if (t == "Base_E_avg") return {16, 16};
-  if (t == "Sheen_E" || t == "Sheen_ash_E") return {16, 16};
-  if (t == "Glass_E" || t == "Glass_inv_E") return {16, 16, 32};
-  if (t == "Glass_E_avg" || t == "Glass_inv_E_avg") return {16, 16};
-  throw std::invalid_argument("unknown table '" + t + "'");
-}
+std::vector<int> lut_default_size(const std::string& t) { return published_lut(t).size; }
 
 int lut_default_samples(const std::string& t) {
   // Caps for the adaptive budget (docs/luts.md): only the hardest cells (grazing, smallest
   // roughness) come near them.
-  if (t == "GGX_E_avg" || t == "Base_E_avg" || t == "Glass_E_avg" || t == "Glass_inv_E_avg") return 8 << 18;
-  return 8 << 16;
+  return published_lut(t).average ? 8 << 18 : 8 << 16;
 }
 
 IntegratorSettings lut_settings(const std::string& table, const LutOptions& opt) {
@@ -123,13 +108,12 @@ std::vector<Axis> lut_axes(const std::string& table, const LutOptions& opt) {
 
 void validate_lut_options(const LutOptions& opt) {
   if (opt.tables.empty()) throw std::invalid_argument("no tables selected");
-  for (const auto& t : opt.tables)
-    if (!is_lut_table_name(t))
-      throw std::invalid_argument("unknown table '" + t +
-                                  "' (known: GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E, Glass_E, "
-                                  "Glass_inv_E, Glass_E_avg, Glass_inv_E_avg)");
+  for (const auto& t : opt.tables) (void)published_lut(t);
   for (const auto& [t, size] : opt.sizes) {
-    if (!is_lut_table_name(t)) throw std::invalid_argument("unknown table '" + t + "' in a size option");
+    (void)published_lut(t);
+    if (std::find(opt.tables.begin(), opt.tables.end(), t) == opt.tables.end())
+      throw std::invalid_argument("a size is given for " + t + ", which is not being generated (tables: " +
+                                  join_names(opt.tables) + ")");
     const size_t rank = lut_axis_names(t).size();
     if (size.size() != rank)
       throw std::invalid_argument("size of " + t + " needs " + std::to_string(rank) + " dimensions, e.g. " +
@@ -163,79 +147,84 @@ std::vector<Table> generate_luts(const LutOptions& opt) {
   validate_lut_options(opt);
   tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
   std::vector<Table> out;
+  size_t done = 0;
   for (const std::string& name : lut_table_names()) {
     if (std::find(opt.tables.begin(), opt.tables.end(), name) == opt.tables.end()) continue;
+    const LutInfo& info = published_lut(name);
+    // Progress label: "[k/n] NAME cells" (k of the n tables of this run).
+    const std::string label = "[" + std::to_string(++done) + "/" + std::to_string(opt.tables.size()) + "] " + name + " cells";
     Table t = make_table(name, opt);
     const IntegratorSettings s = lut_settings(name, opt);
     const size_t n = t.size();
-    if (name == "GGX_E") {
+    const Lut id = info.id;
+    if (id == Lut::GgxE) {
       const auto r = coords(t.axes[0]), mu = coords(t.axes[1]);
-      parallel_cells(arena, n, name, opt.progress, [&](size_t i) {
-        const Estimate e = ggx_E(mu[i % mu.size()], r[i / mu.size()], s, stream_of(kGgxE, i));
+      parallel_cells(arena, n, label, opt.progress, [&](size_t i) {
+        const Estimate e = ggx_E(mu[i % mu.size()], r[i / mu.size()], s, stream_of(info.stream, i));
         t.values[i] = e.value;
         t.errors[i] = e.error;
       });
-    } else if (name == "GGX_E_avg") {
+    } else if (id == Lut::GgxEAvg) {
       const auto r = coords(t.axes[0]);
-      parallel_cells(arena, n, name, opt.progress, [&](size_t i) {
-        const Estimate e = ggx_E_avg(r[i], s, stream_of(kGgxEAvg, i));
+      parallel_cells(arena, n, label, opt.progress, [&](size_t i) {
+        const Estimate e = ggx_E_avg(r[i], s, stream_of(info.stream, i));
         t.values[i] = e.value;
         t.errors[i] = e.error;
       });
-    } else if (name == "Base_E") {
+    } else if (id == Lut::BaseE) {
       const auto f0 = coords(t.axes[0]), r = coords(t.axes[1]), mu = coords(t.axes[2]);
       // E_m,avg at Base_E's own roughness points (not interpolated from GGX_E_avg), with the
       // averages' sample budget.
       IntegratorSettings s_avg = s;
-      s_avg.samples = opt.samples > 0 ? opt.samples : lut_default_samples("Base_E_avg");
+      s_avg.samples = opt.samples > 0 ? opt.samples : lut_default_samples(lut_name(Lut::BaseEAvg));
       std::vector<Estimate> e_m_avg(r.size());
-      parallel_cells(arena, r.size(), name + " (E_m,avg)", opt.progress, [&](size_t i) {
-        e_m_avg[i] = ggx_E_avg(r[i], s_avg, stream_of(kBaseEMAvg, i));
+      parallel_cells(arena, r.size(), label + " (E_m,avg)", opt.progress, [&](size_t i) {
+        e_m_avg[i] = ggx_E_avg(r[i], s_avg, stream_of(kBaseEMAvgStream, i));
       });
       // One integration per (roughness, cos) serves every f0.
       const size_t nrm = r.size() * mu.size();
-      parallel_cells(arena, nrm, name, opt.progress, [&](size_t i) {
+      parallel_cells(arena, nrm, label, opt.progress, [&](size_t i) {
         const size_t ir = i / mu.size(), im = i % mu.size();
-        const std::vector<Estimate> e = base_E_f0s(mu[im], r[ir], f0, e_m_avg[ir], s, stream_of(kBaseE, i));
+        const std::vector<Estimate> e = base_E_f0s(mu[im], r[ir], f0, e_m_avg[ir], s, stream_of(info.stream, i));
         for (size_t k = 0; k < f0.size(); ++k) {
           t.values[k * nrm + i] = e[k].value;
           t.errors[k * nrm + i] = e[k].error;
         }
       });
-    } else if (name == "Base_E_avg") {
+    } else if (id == Lut::BaseEAvg) {
       const auto f0 = coords(t.axes[0]), r = coords(t.axes[1]);
-      parallel_cells(arena, r.size(), name, opt.progress, [&](size_t i) {
-        const std::vector<Estimate> e = base_E_avg_f0s(r[i], f0, s, stream_of(kBaseEAvg, i));
+      parallel_cells(arena, r.size(), label, opt.progress, [&](size_t i) {
+        const std::vector<Estimate> e = base_E_avg_f0s(r[i], f0, s, stream_of(info.stream, i));
         for (size_t k = 0; k < f0.size(); ++k) {
           t.values[k * r.size() + i] = e[k].value;
           t.errors[k * r.size() + i] = e[k].error;
         }
       });
-    } else if (name == "Glass_E" || name == "Glass_inv_E") {
-      const bool inside = name == "Glass_inv_E";
+    } else if (info.glass && !info.average) {
+      const bool inside = info.inside;
       const auto x = coords(t.axes[0]), r = coords(t.axes[1]), mu = coords(t.axes[2]);
-      parallel_cells(arena, n, name, opt.progress, [&](size_t i) {
+      parallel_cells(arena, n, label, opt.progress, [&](size_t i) {
         const size_t ix = i / (r.size() * mu.size()), ir = (i / mu.size()) % r.size(), im = i % mu.size();
         const Estimate e = glass_E(mu[im], r[ir], glass_ior_of_x(x[ix]), inside, s,
-                                   stream_of(inside ? kGlassInvE : kGlassE, i));
+                                   stream_of(info.stream, i));
         t.values[i] = e.value;
         t.errors[i] = e.error;
       });
-    } else if (name == "Glass_E_avg" || name == "Glass_inv_E_avg") {
-      const bool inside = name == "Glass_inv_E_avg";
+    } else if (info.glass) {
+      const bool inside = info.inside;
       const auto x = coords(t.axes[0]), r = coords(t.axes[1]);
-      parallel_cells(arena, n, name, opt.progress, [&](size_t i) {
+      parallel_cells(arena, n, label, opt.progress, [&](size_t i) {
         const Estimate e = glass_E_avg(r[i % r.size()], glass_ior_of_x(x[i / r.size()]), inside, s,
-                                       stream_of(inside ? kGlassInvEAvg : kGlassEAvg, i));
+                                       stream_of(info.stream, i));
         t.values[i] = e.value;
         t.errors[i] = e.error;
       });
     } else {  // Sheen_E, Sheen_ash_E: rows hold alpha_b directly
-      const bool ash = name == "Sheen_ash_E";
+      const bool ash = id == Lut::SheenAshE;
       const auto ab = coords(t.axes[0]), mu = coords(t.axes[1]);
-      parallel_cells(arena, n, name, opt.progress, [&](size_t i) {
+      parallel_cells(arena, n, label, opt.progress, [&](size_t i) {
         const Estimate e = sheen_E(mu[i % mu.size()], ab[i / mu.size()], ash ? SheenModel::Ash : SheenModel::Main, s,
-                                   stream_of(ash ? kSheenAshE : kSheenE, i));
+                                   stream_of(info.stream, i));
         t.values[i] = e.value;
         t.errors[i] = e.error;
       });

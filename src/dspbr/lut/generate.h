@@ -14,6 +14,7 @@
 #include "dspbr/lut/albedo.h"
 #include "dspbr/lut/warped_table.h"
 #include "dspbr/lut/table.h"
+#include "dspbr/lut/table_registry.h"
 
 namespace dspbr {
 
@@ -25,6 +26,7 @@ namespace dspbr {
 //   Glass_inv_E_avg [ior_x][roughness]             the same, inside
 // on endpoint grids whatever the `grid` option (they reach ior = 1, r = 0 and cos = 0), with
 // ior_x = 2 (ior - 1) / (ior + 1) = 2 sqrt(F_0) in [0, 1] (ior 1 .. 3; above 3 a lookup clamps).
+// (The registry, lut/table_registry.h, declares them; these are its published layout.)
 const std::vector<std::string>& lut_table_names();
 bool is_lut_table_name(const std::string& name);
 bool is_glass_table(const std::string& name);
@@ -57,7 +59,7 @@ struct LutOptions {
   int randomizations = 8;  // replicates per cell (>= 2)
   uint64_t seed = 1;
   int threads = 0;         // 0: all hardware threads
-  bool progress = true;    // report progress on stderr (only when it is a terminal)
+  bool progress = true;    // progress on stderr: a live line on a terminal, a line per table elsewhere
   std::string command;     // recorded with project_version() in the files written ("": neither)
 };
 

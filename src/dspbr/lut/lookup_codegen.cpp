@@ -1,5 +1,7 @@
 #include "dspbr/lut/lookup_codegen.h"
 
+#include "dspbr/lut/table_registry.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -333,7 +335,7 @@ std::string table_comment(const WarpedTable& t) {
   for (size_t d = 0; d < t.axes.size(); ++d)
     s += (d ? " x " : "") + t.axes[d].name + "[" + std::to_string(t.axes[d].size) + "] " + t.axes[d].warp.describe();
   s += t.encoding == Encoding::LogOneMinus ? ", stored ln(1 - value)" : "";
-  if (t.name == "GGX_beta") s += ", stored beta - (1 - mu)^5";
+  if (is_lut(t.name, Lut::GgxBeta)) s += ", stored beta - (1 - mu)^5";
   return s + "\n";
 }
 

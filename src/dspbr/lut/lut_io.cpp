@@ -65,7 +65,7 @@ void emit_braces(std::ostringstream& o, const Table& t, size_t level, size_t off
     if (i) o << (level + 1 == t.axes.size() ? ", " : ",\n" + std::string(level + 1, ' '));
     if (level + 1 == t.axes.size()) {
       const float v = float(t.values[offset + size_t(i)]);
-      const bool wrap = t.name == "Sheen_ash_E" && v > 1.0f;
+      const bool wrap = is_lut(t.name, Lut::SheenAshE) && v > 1.0f;
       o << (wrap ? "PBRLUT_ASH(" + float_literal(v) + ")" : float_literal(v));
     } else {
       emit_braces(o, t, level + 1, offset + size_t(i) * stride);
@@ -105,7 +105,7 @@ std::pair<std::string, std::string> atlas_attribute(const Table& t) {
 }  // namespace
 
 std::vector<std::string> lut_exr_names(const Table& t) {
-  if (t.name == "Base_E") {
+  if (is_lut(t.name, Lut::BaseE)) {
     std::vector<std::string> names;
     for (const std::string& l : f0_labels(t.axes[0])) names.push_back("Base_" + l + "_E.exr");
     return names;
@@ -189,7 +189,7 @@ std::string lut_header_text(const std::vector<Table>& tables, const LutOptions& 
        "// sheen rows hold alpha_b = r_b^2. Index order [slowest]...[cos_theta] as in the EXRs.\n"
        "// Declarations are always visible; define PBRLUT_IMPLEMENTATION in exactly one translation\n"
        "// unit before including this file to get the definitions.\n";
-  const bool has_ash = std::any_of(tables.begin(), tables.end(), [](const Table& t) { return t.name == "Sheen_ash_E"; });
+  const bool has_ash = std::any_of(tables.begin(), tables.end(), [](const Table& t) { return is_lut(t.name, Lut::SheenAshE); });
   if (has_ash)
     o << "// Sheen_ash_E keeps its unclamped values (some exceed 1: the alternative sheen gains energy\n"
          "// at low roughness and grazing angles). Define PBRLUT_CLAMP_SHEEN_ASH_E before including to\n"
@@ -226,7 +226,7 @@ std::string lut_header_text(const std::vector<Table>& tables, const LutOptions& 
 std::string lut_json_text(const std::vector<Table>& tables, const LutOptions& opt) {
   ojson j;
   j["format"] = "dspbr_luts";
-  j["version"] = 1;
+  j["version"] = kTableFileVersion;
   j["model"] = "DSPBR 2025x";
   j["generator"] = "dspbr lut";
   if (!opt.command.empty()) j["dspbr_version"] = project_version(), j["command"] = opt.command;
@@ -273,13 +273,25 @@ std::vector<Table> read_lut_json_text(std::string_view text, const std::string& 
   return read_lut_json_value(parse_json(text, name, "table file"), name);
 }
 
+void require_table_file_version(const nlohmann::json& j) {
+  const auto v = j.find("version");
+  if (v == j.end() || !v->is_number_integer() || v->get<long long>() != kTableFileVersion)
+    throw std::runtime_error("\"version\" must be " + std::to_string(kTableFileVersion) +
+                             " (this build reads table files of that version)");
+}
+
 std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::string& path) {
   namespace jf = json_fields;
   try {
     if (!j.is_object() || j.value("format", nlohmann::json()) != "dspbr_luts")
       throw std::runtime_error("not a dspbr_luts file (missing \"format\": \"dspbr_luts\")");
+    require_table_file_version(j);
     std::vector<Table> out;
     const auto& jt = jf::object_member(j, "tables", "");
+    for (const auto& item : jt.items())
+      if (find_lut(item.key(), kPublishedLayout) == nullptr)
+        throw std::runtime_error("tables." + item.key() + ": unknown table (known: " + lut_names_list(kPublishedLayout) +
+                                 ")");
     for (const std::string& name : lut_table_names()) {
       if (!jt.contains(name)) continue;
       const std::string where = "tables." + name;
@@ -295,6 +307,7 @@ std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::strin
         const std::string at = jf::index_path(where + ".axes", d);
         Axis a;
         a.name = jf::string_member(axes[d], "name", at);
+        if (a.name != lut_axis_names(name)[d]) throw std::runtime_error(at + ".name must be " + lut_axis_names(name)[d]);
         const std::string g = jf::string_member(axes[d], "grid", at);
         if (g != "cell" && g != "endpoint") throw std::runtime_error(at + ".grid: unknown grid '" + g + "'");
         a.kind = parse_grid_kind(g);
@@ -311,7 +324,7 @@ std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::strin
       if (e.contains("errors")) t.errors = jf::numbers_member(e, "errors", where, cells);
       out.push_back(std::move(t));
     }
-    if (out.empty()) throw std::runtime_error("\"tables\" holds none of GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E");
+    if (out.empty()) throw std::runtime_error("\"tables\" holds none of " + lut_names_list(kPublishedLayout));
     return out;
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error("'" + path + "': " + e.what());

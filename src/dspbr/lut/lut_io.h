@@ -52,6 +52,11 @@ std::vector<Table> read_lut_json(const std::string& path);
 std::vector<Table> read_lut_json_text(std::string_view text, const std::string& name);
 std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::string& name);
 
+// The version of both table file formats (dspbr_luts, dspbr_renderer_luts) this build writes and
+// reads; a reader refuses another (std::runtime_error naming the field).
+constexpr int kTableFileVersion = 1;
+void require_table_file_version(const nlohmann::json& j);
+
 // Writes every requested format into dir (created when missing). Returns the largest EXR
 // rounding error per table (same order as tables; 0 when no EXR was written).
 std::vector<double> write_luts(const std::vector<Table>& tables, const LutOptions& opt, const std::string& dir,

@@ -27,22 +27,34 @@ LutSet from_json(const nlohmann::json& j, const std::string& name) {
     return set;
   }
   set.layout = LutLayout::Published;
-  for (Table& t : read_lut_json_value(j, name)) {
-    if (t.name == "GGX_E") set.ggx_e = std::move(t);
-    else if (t.name == "GGX_E_avg") set.ggx_e_avg = std::move(t);
-    else if (t.name == "Base_E") set.base_e = std::move(t);
-    else if (t.name == "Base_E_avg") set.base_e_avg = std::move(t);
-    else if (t.name == "Sheen_E") set.sheen_e = std::move(t);
-    else if (t.name == "Sheen_ash_E") set.sheen_ash_e = std::move(t);
-    else if (t.name == "Glass_E") set.glass_e = std::move(t);
-    else if (t.name == "Glass_inv_E") set.glass_inv_e = std::move(t);
-    else if (t.name == "Glass_E_avg") set.glass_e_avg = std::move(t);
-    else if (t.name == "Glass_inv_E_avg") set.glass_inv_e_avg = std::move(t);
+  for (Table& t : read_lut_json_value(j, name)) {  // names checked against the registry there
+    Table& slot = set.published_table(published_lut(t.name).id);
+    slot = std::move(t);
   }
   return set;
 }
 
 }  // namespace
+
+Table& LutSet::published_table(Lut id) {
+  switch (id) {
+    case Lut::GgxE: return ggx_e;
+    case Lut::GgxEAvg: return ggx_e_avg;
+    case Lut::BaseE: return base_e;
+    case Lut::BaseEAvg: return base_e_avg;
+    case Lut::SheenE: return sheen_e;
+    case Lut::SheenAshE: return sheen_ash_e;
+    case Lut::GlassE: return glass_e;
+    case Lut::GlassInvE: return glass_inv_e;
+    case Lut::GlassEAvg: return glass_e_avg;
+    case Lut::GlassInvEAvg: return glass_inv_e_avg;
+    case Lut::GgxBeta:
+    case Lut::GgxBAvg: break;
+  }
+  throw std::invalid_argument(std::string("not a published table: ") + lut_name(id));
+}
+
+const Table& LutSet::published_table(Lut id) const { return const_cast<LutSet*>(this)->published_table(id); }
 
 double LutSet::E_m_avg(double r) const { return is_renderer(*this) ? this->renderer.E_m_avg(r) : ggx_e_avg.lookup({r}); }
 double LutSet::missing_E_m_avg(double r) const {

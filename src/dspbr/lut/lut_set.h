@@ -31,6 +31,10 @@ struct LutSet {
   // Renderer layout.
   RendererLuts renderer;
 
+  // The published table `id` (std::invalid_argument when it is not in the published layout).
+  const Table& published_table(Lut id) const;
+  Table& published_table(Lut id);
+
   // Lookups in the tables' own conventions (roughness r, alpha_b = r_b^2), cos theta first.
   double E_m(double cos_theta, double roughness) const;
   double E_m_avg(double roughness) const;

@@ -6,21 +6,12 @@
 #include <cmath>
 
 #include "dspbr/lut/parallel_cells.h"
+#include "dspbr/lut/table_registry.h"
 #include "dspbr/quadrature.h"
 
 namespace dspbr {
 
 namespace {
-
-// Stream ids of the renderer tables (high 32 bits), disjoint from the published tables' ids.
-enum : uint64_t {
-  kStreamGgxE = 16,
-  kStreamGgxBeta = 17,
-  kStreamSheenE = 18,
-  kStreamSheenAshE = 19,
-  kStreamGlassE = 20,
-  kStreamGlassInvE = 21
-};
 
 // Roughness at which the r = 0 row of GGX_E is integrated: that row holds the limit of
 // E_m(a alpha; r) as r -> 0 at fixed a = mu / alpha (the ggx_cos warp's coordinate), reached to
@@ -71,8 +62,16 @@ double cosine_average_of_lookup(const WarpedAxis& mu_axis, double r, G&& g) {
   return cosine_average_ggx_cos(mu_axis, r * r, g);
 }
 
+// Progress label "[renderer k/n] NAME cells": the integrated tables in the order they are made
+// (the averages follow from them), n = 4 without the glass tables.
+std::string progress_label(Lut id, bool glass) {
+  static const Lut order[] = {Lut::GgxE, Lut::GgxBeta, Lut::SheenE, Lut::SheenAshE, Lut::GlassE, Lut::GlassInvE};
+  const size_t k = size_t(std::find(std::begin(order), std::end(order), id) - std::begin(order)) + 1;
+  return "[renderer " + std::to_string(k) + "/" + (glass ? "6" : "4") + "] " + lut_name(id) + " cells";
+}
+
 bool wants_glass(const LutOptions& opt) {
-  return std::find(opt.tables.begin(), opt.tables.end(), "Glass_E") != opt.tables.end();
+  return std::find(opt.tables.begin(), opt.tables.end(), lut_name(Lut::GlassE)) != opt.tables.end();
 }
 
 }  // namespace
@@ -130,17 +129,17 @@ void add_renderer_glass_luts(RendererLuts& out, const LutOptions& opt, int scale
   for (const char* name : RendererLuts::glass_names()) *out.table(name) = make_table(name, scale);
   // Glass_E / Glass_inv_E over (glass_ior(mu), r, ggx_cos(mu; r^2)): the ior of a sample depends on
   // its mu (the warp follows the refraction's grazing scale).
-  const IntegratorSettings sg = lut_settings("Glass_E", opt);
+  const IntegratorSettings sg = lut_settings(lut_name(Lut::GlassE), opt);
   for (const bool inside : {false, true}) {
     WarpedTable& t = inside ? out.glass_inv_E : out.glass_E;
     const WarpedAxis &ai = t.axes[0], &ar = t.axes[1], &am = t.axes[2];
     const size_t plane = size_t(ar.size) * size_t(am.size);
-    parallel_cells(arena, t.size(), t.name + " (renderer)", opt.progress, [&](size_t i) {
+    parallel_cells(arena, t.size(), progress_label(inside ? Lut::GlassInvE : Lut::GlassE, true), opt.progress, [&](size_t i) {
       const int ii = int(i / plane), ir = int((i % plane) / size_t(am.size)), im = int(i % size_t(am.size));
       const double r = std::max(ar.warp.from_grid(grid_x(ar, ir)), kGgxLimitRoughness);
       const double mu = am.warp.from_grid(grid_x(am, im), r * r);
       const double ior = ai.warp.from_grid(grid_x(ai, ii), mu);
-      const Estimate e = glass_E(mu, r, ior, inside, sg, ((inside ? kStreamGlassInvE : kStreamGlassE) << 32) | i);
+      const Estimate e = glass_E(mu, r, ior, inside, sg, (lut_info(inside ? Lut::GlassInvE : Lut::GlassE).renderer_stream << 32) | i);
       t.values[i] = e.value;
       t.errors[i] = e.error;
     });
@@ -155,16 +154,16 @@ RendererLuts generate_renderer_luts(const LutOptions& opt, int scale) {
   RendererLuts out;
   for (const char* name : RendererLuts::names()) *out.table(name) = make_table(name, scale);
   const bool glass = wants_glass(opt);
-  const IntegratorSettings s = lut_settings("GGX_E", opt);
+  const IntegratorSettings s = lut_settings(lut_name(Lut::GgxE), opt);
 
   {  // GGX_E over (r, ggx_cos(mu; r^2))
     WarpedTable& t = out.ggx_E;
     const WarpedAxis &ar = t.axes[0], &am = t.axes[1];
-    parallel_cells(arena, t.size(), "GGX_E (renderer)", opt.progress, [&](size_t i) {
+    parallel_cells(arena, t.size(), progress_label(Lut::GgxE, glass), opt.progress, [&](size_t i) {
       const int ir = int(i / size_t(am.size)), im = int(i % size_t(am.size));
       const double r = std::max(ar.warp.from_grid(grid_x(ar, ir)), kGgxLimitRoughness);
       const double mu = am.warp.from_grid(grid_x(am, im), r * r);
-      const Estimate e = ggx_E(mu, r, s, (kStreamGgxE << 32) | i);
+      const Estimate e = ggx_E(mu, r, s, (lut_info(Lut::GgxE).renderer_stream << 32) | i);
       t.values[i] = e.value;
       t.errors[i] = e.error;
     });
@@ -173,12 +172,12 @@ RendererLuts generate_renderer_luts(const LutOptions& opt, int scale) {
   {  // GGX_beta - (1 - mu)^5 over (r^2, ggx_cos(mu; r^2)); zero on the r = 0 row (mirror)
     WarpedTable& t = out.ggx_beta;
     const WarpedAxis &ar = t.axes[0], &am = t.axes[1];
-    parallel_cells(arena, t.size(), "GGX_beta (renderer)", opt.progress, [&](size_t i) {
+    parallel_cells(arena, t.size(), progress_label(Lut::GgxBeta, glass), opt.progress, [&](size_t i) {
       const int ir = int(i / size_t(am.size)), im = int(i % size_t(am.size));
       const double r = ar.warp.from_grid(grid_x(ar, ir));
       if (r == 0) return;  // beta = (1 - mu)^5 exactly
       const double mu = am.warp.from_grid(grid_x(am, im), r * r);
-      const Estimate e = ggx_beta(mu, r, s, (kStreamGgxBeta << 32) | i);
+      const Estimate e = ggx_beta(mu, r, s, (lut_info(Lut::GgxBeta).renderer_stream << 32) | i);
       t.values[i] = e.value - std::pow(1.0 - mu, 5);
       t.errors[i] = e.error;
     });
@@ -187,15 +186,15 @@ RendererLuts generate_renderer_luts(const LutOptions& opt, int scale) {
   // The sheen tables reach alpha_b = 1/256 at grazing angles, where the estimator's variance is
   // largest: their default cap is 8x the other tables' (only those cells get near it).
   IntegratorSettings s_sheen = s;
-  if (opt.samples == 0) s_sheen.samples = 8 * lut_default_samples("Sheen_E");
+  if (opt.samples == 0) s_sheen.samples = 8 * lut_default_samples(lut_name(Lut::SheenE));
   for (const bool ash : {false, true}) {
     WarpedTable& t = ash ? out.sheen_ash_E : out.sheen_E;
     const WarpedAxis &aa = t.axes[0], &am = t.axes[1];
-    parallel_cells(arena, t.size(), t.name + " (renderer)", opt.progress, [&](size_t i) {
+    parallel_cells(arena, t.size(), progress_label(ash ? Lut::SheenAshE : Lut::SheenE, glass), opt.progress, [&](size_t i) {
       const int ia = int(i / size_t(am.size)), im = int(i % size_t(am.size));
       const Estimate e = sheen_E(am.warp.from_grid(grid_x(am, im)), aa.warp.from_grid(grid_x(aa, ia)),
                                  ash ? SheenModel::Ash : SheenModel::Main, s_sheen,
-                                 ((ash ? kStreamSheenAshE : kStreamSheenE) << 32) | i);
+                                 (lut_info(ash ? Lut::SheenAshE : Lut::SheenE).renderer_stream << 32) | i);
       t.values[i] = e.value;
       t.errors[i] = e.error;
     });

@@ -16,6 +16,7 @@
 #include "dspbr/limits.h"
 #include "dspbr/lut/lut_io.h"
 #include "dspbr/lut/table_image.h"
+#include "dspbr/lut/table_registry.h"
 #include "dspbr/version.h"
 
 namespace dspbr {
@@ -49,7 +50,7 @@ std::string axes_text(const WarpedTable& t) {
 
 std::string decode_text(const WarpedTable& t) {
   std::string s = t.encoding == Encoding::LogOneMinus ? "quantity = 1 - exp(stored)" : "quantity = stored";
-  if (t.name == "GGX_beta") s = "beta = (1 - cos_theta)^5 + stored; B = beta E_m";
+  if (is_lut(t.name, Lut::GgxBeta)) s = "beta = (1 - cos_theta)^5 + stored; B = beta E_m";
   return s;
 }
 
@@ -58,7 +59,7 @@ std::string decode_text(const WarpedTable& t) {
 std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, int scale) {
   ojson j;
   j["format"] = "dspbr_renderer_luts";
-  j["version"] = 1;
+  j["version"] = kTableFileVersion;
   j["model"] = "DSPBR 2025x";
   j["generator"] = "dspbr lut";
   if (!opt.command.empty()) j["dspbr_version"] = project_version(), j["command"] = opt.command;
@@ -68,14 +69,14 @@ std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, 
   if (luts.has_glass()) j["glass_stored_values"] = luts.glass_stored_values();
   j["grid"] = "endpoint, x_i = i / (N - 1) of the warped coordinate";
   j["interpolation"] = "catmull-rom, linear extrapolation beyond the ends";
-  const IntegratorSettings s = lut_settings("GGX_E", opt);
+  const IntegratorSettings s = lut_settings(lut_name(Lut::GgxE), opt);
   j["integrator"] = {{"name", integrator_name(s.integrator)},
                      {"max_samples_per_cell", s.samples},
                      {"target_std_error", s.target_error},
                      {"randomizations", s.randomizations},
                      {"seed", s.seed}};
   if (luts.has_glass()) {
-    const IntegratorSettings g = lut_settings("Glass_E", opt);
+    const IntegratorSettings g = lut_settings(lut_name(Lut::GlassE), opt);
     j["glass_integrator"] = {{"name", integrator_name(g.integrator)}, {"target_error", g.target_error}};
   }
   ojson jt = ojson::object();
@@ -115,7 +116,12 @@ RendererLuts read_renderer_json_value(const nlohmann::json& j, const std::string
   try {
     if (!j.is_object() || j.value("format", nlohmann::json()) != "dspbr_renderer_luts")
       throw std::runtime_error("not a renderer table file (missing \"format\": \"dspbr_renderer_luts\")");
+    require_table_file_version(j);
     const auto& jt = jf::object_member(j, "tables", "");
+    for (const auto& item : jt.items())
+      if (find_lut(item.key(), kRendererLayout) == nullptr)
+        throw std::runtime_error("tables." + item.key() + ": unknown table (known: " + lut_names_list(kRendererLayout) +
+                                 ")");
     const RendererLuts expected_axes = [] {
       RendererLuts r;
       for (const char* n : RendererLuts::names()) r.table(n)->axes = renderer_default_axes(n);
@@ -131,7 +137,7 @@ RendererLuts read_renderer_json_value(const nlohmann::json& j, const std::string
     for (const char* name : wanted) {
       if (!jt.contains(name))
         throw std::runtime_error(std::string("table ") + name + " is missing" +
-                                 (glass_present > 0 && std::string(name).rfind("Glass_", 0) == 0
+                                 (glass_present > 0 && lut_info(require_lut(name, kRendererLayout).id).glass
                                       ? " (the Glass tables come as a set of four)"
                                       : ""));
       const std::string where = std::string("tables.") + name;
@@ -173,7 +179,7 @@ RendererLuts read_renderer_json_value(const nlohmann::json& j, const std::string
       }
       // GGX_E_avg stores ln(1 - E_m,avg) (the lookups decode it so), every other table the value.
       const std::string enc = jf::string_member(e, "encoding", where);
-      const std::string want = std::string(name) == "GGX_E_avg" ? "log_one_minus" : "value";
+      const std::string want = is_lut(name, Lut::GgxEAvg) ? "log_one_minus" : "value";
       if (enc != want) throw std::runtime_error(where + ".encoding must be '" + want + "', not '" + enc + "'");
       t.encoding = enc == "log_one_minus" ? Encoding::LogOneMinus : Encoding::Value;
       t.values = jf::numbers_member(e, "values", where, cells);

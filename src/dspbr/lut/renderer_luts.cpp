@@ -30,34 +30,52 @@ int scaled(int n, int scale) { return (n - 1) * scale + 1; }
 std::vector<WarpedAxis> renderer_default_axes(const std::string& name, int scale) {
   if (scale < 1) throw std::invalid_argument("renderer table scale must be >= 1");
   const int s = scale;
-  if (name == "GGX_E")
-    return {axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0),
-            axis("cos_theta", scaled(64, s), WarpKind::GgxCos, 0.5, 0.0)};
-  if (name == "GGX_beta")  // stores beta - (1 - mu)^5, which vanishes as r -> 0
-    return {axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0),
-            axis("cos_theta", scaled(32, s), WarpKind::GgxCos, 0.5, 0.0)};
-  if (name == "GGX_E_avg") return {axis("roughness", scaled(32, s), WarpKind::Power, 0.5, kAvgMinRoughness)};
-  if (name == "GGX_B_avg") return {axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0)};
-  if (name == "Sheen_E" || name == "Sheen_ash_E")
-    return {axis("alpha_b", scaled(32, s), WarpKind::Power, 0.25, kSheenMinAlphaB),
-            axis("cos_theta", scaled(32, s), WarpKind::Power, 0.25, kSheenMinCos)};
-  if (name == "Glass_E" || name == "Glass_inv_E")
-    return {axis("ior", scaled(16, s), WarpKind::GlassIor, kGlassIorScale, 0.0),
-            axis("roughness", scaled(16, s), WarpKind::Power, 1.0, 0.0),
-            axis("cos_theta", scaled(64, s), WarpKind::GgxCos, 0.6, 0.0)};
-  if (name == "Glass_E_avg" || name == "Glass_inv_E_avg")
-    return {axis("ior_x", scaled(32, s), WarpKind::Power, 0.5, 0.0),  // dense near ior 1
-            axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0)};
+  switch (require_lut(name, kRendererLayout).id) {
+    case Lut::GgxE:
+      return {axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0),
+              axis("cos_theta", scaled(64, s), WarpKind::GgxCos, 0.5, 0.0)};
+    case Lut::GgxBeta:  // stores beta - (1 - mu)^5, which vanishes as r -> 0
+      return {axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0),
+              axis("cos_theta", scaled(32, s), WarpKind::GgxCos, 0.5, 0.0)};
+    case Lut::GgxEAvg: return {axis("roughness", scaled(32, s), WarpKind::Power, 0.5, kAvgMinRoughness)};
+    case Lut::GgxBAvg: return {axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0)};
+    case Lut::SheenE:
+    case Lut::SheenAshE:
+      return {axis("alpha_b", scaled(32, s), WarpKind::Power, 0.25, kSheenMinAlphaB),
+              axis("cos_theta", scaled(32, s), WarpKind::Power, 0.25, kSheenMinCos)};
+    case Lut::GlassE:
+    case Lut::GlassInvE:
+      return {axis("ior", scaled(16, s), WarpKind::GlassIor, kGlassIorScale, 0.0),
+              axis("roughness", scaled(16, s), WarpKind::Power, 1.0, 0.0),
+              axis("cos_theta", scaled(64, s), WarpKind::GgxCos, 0.6, 0.0)};
+    case Lut::GlassEAvg:
+    case Lut::GlassInvEAvg:
+      return {axis("ior_x", scaled(32, s), WarpKind::Power, 0.5, 0.0),  // dense near ior 1
+              axis("roughness", scaled(32, s), WarpKind::Power, 1.0, 0.0)};
+    case Lut::BaseE:
+    case Lut::BaseEAvg: break;  // not in the renderer layout (require_lut refused them)
+  }
   throw std::invalid_argument("unknown renderer table '" + name + "'");
 }
 
+namespace {
+
+std::vector<const char*> renderer_names(bool glass) {
+  std::vector<const char*> n;
+  for (const LutInfo& t : lut_registry())
+    if ((t.layouts & kRendererLayout) != 0 && t.glass == glass) n.push_back(t.name);
+  return n;
+}
+
+}  // namespace
+
 const std::vector<const char*>& RendererLuts::names() {
-  static const std::vector<const char*> n{"GGX_E", "GGX_beta", "GGX_E_avg", "GGX_B_avg", "Sheen_E", "Sheen_ash_E"};
+  static const std::vector<const char*> n = renderer_names(false);
   return n;
 }
 
 const std::vector<const char*>& RendererLuts::glass_names() {
-  static const std::vector<const char*> n{"Glass_E", "Glass_inv_E", "Glass_E_avg", "Glass_inv_E_avg"};
+  static const std::vector<const char*> n = renderer_names(true);
   return n;
 }
 
@@ -72,18 +90,30 @@ const WarpedTable* RendererLuts::table(const std::string& name) const {
 }
 
 WarpedTable* RendererLuts::table(const std::string& name) {
-  if (name == "GGX_E") return &ggx_E;
-  if (name == "GGX_beta") return &ggx_beta;
-  if (name == "GGX_E_avg") return &ggx_E_avg;
-  if (name == "GGX_B_avg") return &ggx_B_avg;
-  if (name == "Sheen_E") return &sheen_E;
-  if (name == "Sheen_ash_E") return &sheen_ash_E;
-  if (name == "Glass_E") return &glass_E;
-  if (name == "Glass_inv_E") return &glass_inv_E;
-  if (name == "Glass_E_avg") return &glass_E_avg;
-  if (name == "Glass_inv_E_avg") return &glass_inv_E_avg;
-  return nullptr;
+  const LutInfo* info = find_lut(name, kRendererLayout);
+  if (info == nullptr) return nullptr;
+  return &table(info->id);
 }
+
+WarpedTable& RendererLuts::table(Lut id) {
+  switch (id) {
+    case Lut::GgxE: return ggx_E;
+    case Lut::GgxBeta: return ggx_beta;
+    case Lut::GgxEAvg: return ggx_E_avg;
+    case Lut::GgxBAvg: return ggx_B_avg;
+    case Lut::SheenE: return sheen_E;
+    case Lut::SheenAshE: return sheen_ash_E;
+    case Lut::GlassE: return glass_E;
+    case Lut::GlassInvE: return glass_inv_E;
+    case Lut::GlassEAvg: return glass_E_avg;
+    case Lut::GlassInvEAvg: return glass_inv_E_avg;
+    case Lut::BaseE:
+    case Lut::BaseEAvg: break;
+  }
+  throw std::invalid_argument(std::string("not a renderer table: ") + lut_name(id));
+}
+
+const WarpedTable& RendererLuts::table(Lut id) const { return const_cast<RendererLuts*>(this)->table(id); }
 
 size_t RendererLuts::stored_values() const {
   size_t n = 0;

@@ -37,6 +37,7 @@
 #include <cmath>
 #include <vector>
 
+#include "dspbr/lut/table_registry.h"
 #include "dspbr/lut/warped_table.h"
 
 namespace dspbr {
@@ -53,6 +54,9 @@ struct RendererLuts {
   std::vector<const char*> held_names() const;
   const WarpedTable* table(const std::string& name) const;
   WarpedTable* table(const std::string& name);
+  // The table `id` (std::invalid_argument when it is not in the renderer layout).
+  const WarpedTable& table(Lut id) const;
+  WarpedTable& table(Lut id);
   size_t stored_values() const;        // number of stored samples of the DSPBR 2025x tables
   size_t glass_stored_values() const;  // ... of the glass tables (0 without them)
   bool has_glass() const;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dspbr/lut/table_registry.h"
 #include "dspbr/params/material_params.h"
 
 namespace dspbr {
@@ -41,16 +42,17 @@ std::vector<std::string> tables_for_components(uint32_t mask, bool transmission_
   std::vector<std::string> tables;
   const bool specular = mask & (kMetallic | kOpaqueDielectric | kThinTransparent | kVolumetricTransparent | kThinFilm);
   if (specular) {
-    tables.push_back("GGX_E");
-    tables.push_back("GGX_E_avg");
+    tables.push_back(lut_name(Lut::GgxE));
+    tables.push_back(lut_name(Lut::GgxEAvg));
   }
   if (mask & kOpaqueDielectric) {
-    tables.push_back("Base_E");
-    tables.push_back("Base_E_avg");
+    tables.push_back(lut_name(Lut::BaseE));
+    tables.push_back(lut_name(Lut::BaseEAvg));
   }
-  if (mask & kSheen) tables.push_back("Sheen_E");
+  if (mask & kSheen) tables.push_back(lut_name(Lut::SheenE));
   if (transmission_compensation && (mask & kVolumetricTransparent))
-    for (const char* t : {"Glass_E", "Glass_inv_E", "Glass_E_avg", "Glass_inv_E_avg"}) tables.push_back(t);
+    for (const LutInfo& t : lut_registry())
+      if (t.glass && (t.layouts & kPublishedLayout)) tables.push_back(t.name);
   return tables;
 }
 

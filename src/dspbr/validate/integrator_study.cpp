@@ -11,6 +11,8 @@
 namespace dspbr::validate {
 
 namespace {
+constexpr double kReferenceTolerance = 1e-10;
+
 std::string dims_of(const Table& t) {
   std::string dims;
   for (const Axis& ax : t.axes) dims += (dims.empty() ? "" : "x") + std::to_string(ax.size);
@@ -20,28 +22,28 @@ std::string dims_of(const Table& t) {
 
 void run_integrator_study(const LutOptions& options, const std::function<void(const IntegratorStudyRow&)>& on_row) {
   LutOptions base = options;
-  const std::map<std::string, std::vector<int>> bench_sizes{{"GGX_E", {8, 8}},      {"GGX_E_avg", {8}},
-                                                            {"Base_E", {4, 8, 8}},  {"Base_E_avg", {4, 8}},
-                                                            {"Sheen_E", {8, 8}},    {"Sheen_ash_E", {8, 8}},
-                                                            {"Glass_E", {4, 8, 8}}, {"Glass_inv_E", {4, 8, 8}},
-                                                            {"Glass_E_avg", {4, 8}}, {"Glass_inv_E_avg", {4, 8}}};
-  for (const auto& [name, size] : bench_sizes)
-    if (!base.sizes.count(name)) base.sizes[name] = size;
+  // Small grids: 4 samples on an f0 / ior axis, 8 on the others.
+  for (const std::string& name : base.tables)
+    if (!base.sizes.count(name)) {
+      std::vector<int> size;
+      for (const std::string& axis : lut_axis_names(name)) size.push_back(axis == "f0" || axis == "ior_x" ? 4 : 8);
+      base.sizes[name] = size;
+    }
   for (const std::string& name : base.tables) {
+    const LutInfo& info = published_lut(name);
+    // Reference: the quadrature at a thousandth of its default tolerance (its accuracy against
+    // independent rules is what tests/test_lut_quadrature.cpp checks).
     LutOptions ref = base;
     ref.tables = {name};
-    ref.integrator = Integrator::Qmc;
-    const bool avg = name.size() > 4 && name.compare(name.size() - 4, 4, "_avg") == 0;
-    ref.samples = avg ? (8 << 18) : (8 << 16);
-    ref.seed = base.seed + 1000003;  // independent of the runs it checks
-    ref.target_error = 0;
+    ref.integrator = Integrator::Quad;
+    ref.target_error = kReferenceTolerance;
     ref.progress = false;
     const Table reference = generate_luts(ref).front();
     double ref_err = 0;
     for (double e : reference.errors) ref_err = std::max(ref_err, e);
     const std::string dims = dims_of(reference);
     // Runs one setting: wall time, time per cell, max error against the reference.
-    auto measure = [&](const LutOptions& o, const std::string& integrator, const std::string& samples) {
+    auto measure = [&](const LutOptions& o, const std::string& integrator, const std::string& budget) {
       const auto t0 = std::chrono::steady_clock::now();
       const Table t = generate_luts(o).front();
       IntegratorStudyRow row;
@@ -50,46 +52,43 @@ void run_integrator_study(const LutOptions& options, const std::function<void(co
         row.max_abs_error = std::max(row.max_abs_error, std::abs(t.values[i] - reference.values[i]));
         row.max_std_error = std::max(row.max_std_error, t.errors[i]);
       }
-      const size_t cells = name == "Base_E" ? t.size() / size_t(t.axes[0].size)
-                           : name == "Base_E_avg" ? size_t(t.axes[1].size) : t.size();
+      // Base_E / Base_E_avg: one integration serves every f0.
+      const size_t cells = info.id == Lut::BaseE      ? t.size() / size_t(t.axes[0].size)
+                           : info.id == Lut::BaseEAvg ? size_t(t.axes[1].size)
+                                                      : t.size();
       row.table = name;
       row.grid = dims;
       row.integrator = integrator;
-      row.samples = samples;
+      row.samples = budget;
       row.ms_per_cell = 1e3 * row.wall_s / double(cells);
       on_row(row);
     };
-    for (Integrator integ : {Integrator::Qmc, Integrator::Mc, Integrator::Quad}) {
-      // Quad: (4P)^dims points for P panels per dimension; these budgets give P = 8 .. 64 (2D) and 8 .. 32 (3D).
-      const std::vector<int> budgets = integ == Integrator::Quad
-                                           ? (avg ? std::vector<int>{8 << 14, 8 << 17, 8 << 20}
-                                                  : std::vector<int>{8 << 8, 8 << 10, 8 << 12, 8 << 14})
-                                       : avg ? std::vector<int>{8 << 10, 8 << 12, 8 << 14, 8 << 16}
-                                             : std::vector<int>{8 << 8, 8 << 10, 8 << 12, 8 << 14};
-      for (int n : budgets) {
+    for (Integrator integ : {Integrator::Qmc, Integrator::Mc}) {  // fixed sample budgets per cell
+      const int scale = info.average ? 4 : 1;                      // one more dimension
+      for (int n : {8 << 8, 8 << 10, 8 << 12, 8 << 14}) {
         LutOptions o = base;
         o.tables = {name};
         o.integrator = integ;
-        o.samples = n;
-        o.target_error = 0;  // fixed budget
+        o.samples = n * scale;
+        o.target_error = 0;
         o.progress = false;
-        measure(o, integrator_name(integ), std::to_string(n));
+        measure(o, integrator_name(integ), std::to_string(n * scale) + " samples");
       }
     }
-    for (Integrator integ : {Integrator::Qmc, Integrator::Quad}) {  // the adaptive settings
+    for (double tol : {1e-3, 1e-5, 1e-7, 1e-9}) {  // the quadrature's budget is its tolerance
       LutOptions o = base;
       o.tables = {name};
-      o.integrator = integ;
+      o.integrator = Integrator::Quad;
+      o.target_error = tol;
       o.progress = false;
-      const bool is_default = integ == lut_default_integrator(name);
-      measure(o, std::string(integrator_name(integ)) + " adaptive" + (is_default ? " (default)" : ""),
-              "<= " + std::to_string(lut_settings(name, o).samples));
+      measure(o, integrator_name(Integrator::Quad), fmt::format("tolerance {:g}{}", tol,
+                                                                 tol == kQuadDefaultTolerance ? " (default)" : ""));
     }
     IntegratorStudyRow r;
     r.table = name;
     r.grid = dims;
-    r.integrator = "reference (qmc)";
-    r.samples = std::to_string(ref.samples);
+    r.integrator = "reference (quad)";
+    r.samples = fmt::format("tolerance {:g}", kReferenceTolerance);
     r.max_std_error = ref_err;
     r.reference = true;
     on_row(r);
@@ -97,7 +96,7 @@ void run_integrator_study(const LutOptions& options, const std::function<void(co
 }
 
 std::string integrator_study_markdown_header() {
-  return "| table | grid | integrator | samples/cell | wall time [s] | ms/cell | max abs error | max est. std error |\n"
+  return "| table | grid | integrator | budget per cell | wall time [s] | ms/cell | max abs error | max stated error |\n"
          "|---|---|---|---:|---:|---:|---:|---:|";
 }
 
@@ -106,6 +105,15 @@ std::string integrator_study_markdown_row(const IntegratorStudyRow& r) {
     return fmt::format("| {} | {} | {} | {} | | | | {:.2e} |", r.table, r.grid, r.integrator, r.samples, r.max_std_error);
   return fmt::format("| {} | {} | {} | {} | {:.3f} | {:.3f} | {:.2e} | {:.2e} |", r.table, r.grid, r.integrator,
                      r.samples, r.wall_s, r.ms_per_cell, r.max_abs_error, r.max_std_error);
+}
+
+std::string integrator_study_csv_header() {
+  return "table,grid,integrator,budget,wall_s,ms_per_cell,max_abs_error,max_stated_error,reference";
+}
+
+std::string integrator_study_csv_row(const IntegratorStudyRow& r) {
+  return fmt::format("{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{}", r.table, r.grid, r.integrator, r.samples, r.wall_s,
+                     r.ms_per_cell, r.max_abs_error, r.max_std_error, r.reference ? 1 : 0);
 }
 
 }  // namespace dspbr::validate

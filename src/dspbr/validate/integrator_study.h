@@ -1,7 +1,7 @@
 // The speed/accuracy study of the table integrators (`dspbr lut --bench`, docs/luts.md): for each
-// table and integrator (QMC, MC, deterministic quadrature), the wall time and the max |error|
-// against a high-budget QMC reference with an independent seed, over a range of sample budgets,
-// then the adaptive settings. Runs on a small grid per table (the options' sizes override it) to
+// table and integrator (QMC, MC at fixed sample budgets; the deterministic quadrature at a range
+// of tolerances), the wall time per cell and the max |error| against the quadrature at tolerance
+// 1e-10. Runs on a small grid per table (the options' sizes override it) to
 // keep the reference affordable. Wall times are measurements, not reproducible bytes.
 #pragma once
 #include <functional>
@@ -12,7 +12,7 @@
 namespace dspbr::validate {
 
 struct IntegratorStudyRow {
-  std::string table, grid, integrator, samples;  // samples: per cell ("<= N" for the adaptive settings)
+  std::string table, grid, integrator, samples;  // samples: the budget per cell (samples or tolerance)
   double wall_s = 0, ms_per_cell = 0, max_abs_error = 0, max_std_error = 0;
   bool reference = false;  // the reference itself: only samples and max_std_error are meaningful
 };
@@ -23,5 +23,8 @@ void run_integrator_study(const LutOptions& base, const std::function<void(const
 // The Markdown header of the study's table, and one row.
 std::string integrator_study_markdown_header();
 std::string integrator_study_markdown_row(const IntegratorStudyRow& r);
+// The same as CSV (table,grid,integrator,budget,wall_s,ms_per_cell,max_abs_error,max_stated_error).
+std::string integrator_study_csv_header();
+std::string integrator_study_csv_row(const IntegratorStudyRow& r);
 
 }  // namespace dspbr::validate

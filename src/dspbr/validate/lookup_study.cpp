@@ -11,6 +11,7 @@
 #include "../../../fits/dspbr_fits.hpp"
 #include "dspbr/fresnel.h"
 #include "dspbr/lut/microfacet_quadrature.h"
+#include "dspbr/lut/table_registry.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/validate/lut_reference.h"
 
@@ -52,14 +53,7 @@ LookupErrorRow measure(const std::string& table, const std::string& layout, size
 }
 
 
-size_t published_values(const LutSet& s, const std::string& t) {
-  if (t == "GGX_E") return s.ggx_e.size();
-  if (t == "GGX_E_avg") return s.ggx_e_avg.size();
-  if (t == "Base_E") return s.base_e.size();
-  if (t == "Base_E_avg") return s.base_e_avg.size();
-  if (t == "Sheen_E") return s.sheen_e.size();
-  return s.sheen_ash_e.size();
-}
+size_t published_values(const LutSet& s, const std::string& t) { return s.published_table(published_lut(t).id).size(); }
 
 // E_g by the deterministic microfacet-domain quadrature at a tenth of the tables' target error.
 double exact_glass(double mu, double r, double ior, bool inside) {
@@ -76,7 +70,7 @@ void add_glass_rows(LookupStudy& s, const LutSet& pub, const LutSet& ren, const 
     tbb::parallel_for(size_t(0), pts.size(), [&](size_t k) {
       exact[k] = exact_glass(pts[k].mu, pts[k].r, glass_ior_of_x(pts[k].f0), inside);
     });
-    const char* name = inside ? "Glass_inv_E" : "Glass_E";
+    const char* name = lut_name(inside ? Lut::GlassInvE : Lut::GlassE);
     const size_t pub_values = (inside ? pub.glass_inv_e : pub.glass_e).size();
     const size_t ren_values = (inside ? ren.renderer.glass_inv_E : ren.renderer.glass_E).size();
     for (const auto* L : {&pub, &ren})
@@ -153,19 +147,19 @@ LookupStudy run_lookup_study(const LutSet& pub, const LutSet& ren, int points, u
     s.errors.push_back(measure(table, "renderer", ren_values, pts, exact, [&](const Point& p) { return f(ren, p); }));
     if (fit) s.errors.push_back(measure(table, "fit (LUT-free)", 0, pts, exact, fit));
   };
-  add("GGX_E", e_m, ren_e, [](const LutSet& L, const Point& p) { return L.E_m(p.mu, p.r); },
+  add(lut_name(Lut::GgxE), e_m, ren_e, [](const LutSet& L, const Point& p) { return L.E_m(p.mu, p.r); },
       [](const Point& p) { return dspbr_fit_ggx_E(float(p.mu), float(p.r)); });
-  add("GGX_E_avg", e_avg, ren_avg, [](const LutSet& L, const Point& p) { return L.E_m_avg(p.r); },
+  add(lut_name(Lut::GgxEAvg), e_avg, ren_avg, [](const LutSet& L, const Point& p) { return L.E_m_avg(p.r); },
       [](const Point& p) { return dspbr_fit_ggx_E_avg(float(p.r)); });
-  add("Base_E", base, ren_e + ren_beta + ren_avg,
+  add(lut_name(Lut::BaseE), base, ren_e + ren_beta + ren_avg,
       [](const LutSet& L, const Point& p) { return L.E_base(p.mu, p.r, p.f0); },
       [](const Point& p) { return dspbr_fit_base_E(float(p.mu), float(p.r), float(p.f0)); });
-  add("Base_E_avg", base_avg, ren_avg + ren_bavg,
+  add(lut_name(Lut::BaseEAvg), base_avg, ren_avg + ren_bavg,
       [](const LutSet& L, const Point& p) { return L.E_base_avg(p.r, p.f0); },
       [](const Point& p) { return dspbr_fit_base_E_avg(float(p.r), float(p.f0)); });
-  add("Sheen_E", sheen, R.sheen_E.size(), [](const LutSet& L, const Point& p) { return L.E_sheen(p.mu, p.ab); },
+  add(lut_name(Lut::SheenE), sheen, R.sheen_E.size(), [](const LutSet& L, const Point& p) { return L.E_sheen(p.mu, p.ab); },
       [](const Point& p) { return dspbr_fit_sheen_E(float(p.mu), float(p.ab)); });
-  add("Sheen_ash_E", ash, R.sheen_ash_E.size(),
+  add(lut_name(Lut::SheenAshE), ash, R.sheen_ash_E.size(),
       [](const LutSet& L, const Point& p) { return L.E_sheen_ash(p.mu, p.ab); }, nullptr);
 
   // White furnaces from the lookups. Metal: exact E_m + the M_r,ms lobe of the lookups, which
@@ -252,12 +246,12 @@ LookupStudy run_lookup_study(const LutSet& pub, const LutSet& ren, int points, u
   // GGX_E published layout at growing sizes, built from the renderer lookups.
   for (int N : {32, 64, 128, 256, 512}) {
     Table t;
-    t.name = "GGX_E";
+    t.name = lut_name(Lut::GgxE);
     t.axes = {Axis{"roughness", N, 0, 1, GridKind::CellCentred}, Axis{"cos_theta", N, 0, 1, GridKind::CellCentred}};
     t.values.resize(t.size());
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j) t.values[size_t(i) * N + j] = ren.E_m(t.axes[1].coord(j), t.axes[0].coord(i));
-    s.published_sizes.push_back(measure("GGX_E", fmt::format("published {}x{}", N, N), t.size(), pts, e_m,
+    s.published_sizes.push_back(measure(t.name, fmt::format("published {}x{}", N, N), t.size(), pts, e_m,
                                         [&](const Point& p) { return t.lookup({p.r, p.mu}); }));
   }
   return s;

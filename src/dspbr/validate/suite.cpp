@@ -15,6 +15,7 @@
 #include "dspbr/frame.h"
 #include "dspbr/io/atomic_file.h"
 #include "dspbr/io/json_values.h"
+#include "dspbr/lut/table_registry.h"
 #include "dspbr/progress.h"
 #include "dspbr/validate/furnace_image.h"
 #include "dspbr/validate/provenance.h"
@@ -368,12 +369,15 @@ std::vector<int> spread(int n, int k) {
 RefValue table_reference(const std::string& name, const std::vector<double>& x, const RefQuadrature& q) {
   auto mu = [](double m) { return std::max(m, 1e-6); };
   auto ab = [](double a) { return std::max(a, 1e-3); };
-  if (name == "GGX_E") return ggx_albedo_ref(mu(x[1]), x[0], q);
-  if (name == "GGX_E_avg") return ggx_albedo_avg_ref(x[0], q);
-  if (name == "Base_E") return base_albedo_ref(mu(x[2]), x[1], x[0], q);
-  if (name == "Base_E_avg") return base_albedo_avg_ref(x[1], x[0], q);
-  if (name == "Sheen_E") return sheen_albedo_ref(mu(x[1]), ab(x[0]), false, q);
-  if (name == "Sheen_ash_E") return sheen_albedo_ref(mu(x[1]), ab(x[0]), true, q);
+  switch (published_lut(name).id) {
+    case Lut::GgxE: return ggx_albedo_ref(mu(x[1]), x[0], q);
+    case Lut::GgxEAvg: return ggx_albedo_avg_ref(x[0], q);
+    case Lut::BaseE: return base_albedo_ref(mu(x[2]), x[1], x[0], q);
+    case Lut::BaseEAvg: return base_albedo_avg_ref(x[1], x[0], q);
+    case Lut::SheenE: return sheen_albedo_ref(mu(x[1]), ab(x[0]), false, q);
+    case Lut::SheenAshE: return sheen_albedo_ref(mu(x[1]), ab(x[0]), true, q);
+    default: break;
+  }
   throw std::invalid_argument("no reference for table '" + name + "'");
 }
 
@@ -536,11 +540,11 @@ const char* status_word(Status s) {
 
 std::vector<std::string> missing_tables(const LutSet& l) {
   std::vector<std::string> out;
-  const std::pair<const char*, const Table*> all[] = {{"GGX_E", &l.ggx_e},     {"GGX_E_avg", &l.ggx_e_avg},
-                                                      {"Base_E", &l.base_e},   {"Base_E_avg", &l.base_e_avg},
-                                                      {"Sheen_E", &l.sheen_e}, {"Sheen_ash_E", &l.sheen_ash_e}};
-  for (const auto& [name, t] : all)
-    if (t->values.empty() || t->axes.empty()) out.push_back(name);
+  for (const LutInfo& info : lut_registry()) {
+    if (!info.dspbr || (info.layouts & kPublishedLayout) == 0) continue;  // DSPBR 2025x's six
+    const Table& t = l.published_table(info.id);
+    if (t.values.empty() || t.axes.empty()) out.push_back(info.name);
+  }
   return out;
 }
 

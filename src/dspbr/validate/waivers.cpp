@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "dspbr/lut/table_registry.h"
+
 namespace dspbr::validate {
 
 namespace {
@@ -13,9 +15,9 @@ const char* kClampReason =
 
 const std::vector<Waiver>& dspbr_waivers() {
   static const std::vector<Waiver> list = {
-      {"table-clamp-base", kConservation, "opaque dielectric s=1 r=0", "Base_E", kClampReason,
+      {"table-clamp-base", kConservation, "opaque dielectric s=1 r=0", lut_name(Lut::BaseE), kClampReason,
        "spec 'Diffuse BRDF' (B_c from the Base_E table) and the table layout of docs/luts.md"},
-      {"table-clamp-sheen", kConservation, "white sheen over white base*", "Sheen_E", kClampReason,
+      {"table-clamp-sheen", kConservation, "white sheen over white base*", lut_name(Lut::SheenE), kClampReason,
        "spec 'Sheen' (base scaled by min(1 - E_b(v), 1 - E_b(l)) from the Sheen_E table) and docs/luts.md"},
       {"alternative-sheen-gain", kConservation, "white sheen (alternative visibility)*", "",
        "the [NP13] visibility of the alternative sheen gains energy, most at grazing view and low sheen roughness",
