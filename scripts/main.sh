@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# The README's main command: install, build, then regenerate with default settings
+# The README's main command: install, build the dspbr tool (only what it runs), then regenerate
+# with default settings
 #   1. every table into luts/          (dspbr lut)
 #   2. every fit into fits/            (dspbr fit)
 #   3. the full validation report into report/ (dspbr validate)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-bash "$here/scripts/build.sh"
+bash "$here/scripts/build.sh" dspbr
 dspbr="${BUILD_DIR:-$here/build}/dspbr"
 "$dspbr" lut --out "$here/luts"
 "$dspbr" fit --out "$here/fits"

@@ -25,16 +25,16 @@ Progress::Progress(std::string label, std::size_t total)
     : Progress(std::move(label), total, stderr_is_terminal()) {}
 
 Progress::Progress(std::string label, std::size_t total, bool enabled)
-    : label_(std::move(label)), total_(total), enabled_(enabled),
+    : label_(std::move(label)), total_(total), enabled_(enabled), live_(enabled && stderr_is_terminal()),
       start_(std::chrono::steady_clock::now()), last_print_(start_) {
-  if (enabled_) print(false);
+  if (live_) print(false);
 }
 
 Progress::~Progress() { finish(); }
 
 void Progress::add(std::size_t n) {
   done_.fetch_add(n);
-  if (!enabled_) return;
+  if (!live_) return;
   const auto now = std::chrono::steady_clock::now();
   std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
   if (!lock.owns_lock() || finished_) return;  // another thread is printing: skip this update
@@ -58,7 +58,7 @@ void Progress::print(bool final_line) {
   if (final_line) tail = "in " + format_seconds(elapsed);
   else if (d > 0) tail = "ETA " + format_seconds(elapsed * (1.0 - frac) / frac);
   // \r + clear-to-end-of-line keeps the report on one terminal line.
-  std::fprintf(stderr, "\r\033[K%s: %zu/%zu (%3.0f%%) %s%s", label_.c_str(), d, total_, 100.0 * frac,
+  std::fprintf(stderr, "%s%s: %zu/%zu (%3.0f%%) %s%s", live_ ? "\r\033[K" : "", label_.c_str(), d, total_, 100.0 * frac,
                tail.c_str(), final_line ? "\n" : "");
   std::fflush(stderr);
 }

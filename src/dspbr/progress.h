@@ -1,5 +1,6 @@
 // A small progress reporter for long runs: "label: done/total (pct) ETA 12s" on one
-// terminal line. Prints only when stderr is a terminal (isatty), so logs and pipes stay quiet.
+// terminal line while it runs, when stderr is a terminal (isatty); when it is not (a log, a
+// pipe), one plain line "label: total/total (100%) in 3s" at the end, so a log shows what ran.
 // Thread-safe: any thread may call add(); output is rate-limited to a few updates per second.
 #pragma once
 #include <atomic>
@@ -12,7 +13,8 @@ namespace dspbr {
 
 class Progress {
  public:
-  // `enabled` defaults to "stderr is a terminal"; pass false to force silence.
+  // `enabled` defaults to "stderr is a terminal"; pass false to force silence, true for the live
+  // line on a terminal and the final plain line elsewhere.
   Progress(std::string label, std::size_t total);
   Progress(std::string label, std::size_t total, bool enabled);
   ~Progress();  // calls finish()
@@ -36,7 +38,7 @@ class Progress {
 
   std::string label_;
   std::size_t total_;
-  bool enabled_;
+  bool enabled_, live_;
   std::atomic<std::size_t> done_{0};
   std::atomic<bool> finished_{false};
   std::chrono::steady_clock::time_point start_, last_print_;
