@@ -21,16 +21,20 @@ std::string dims_of(const Table& t) {
 }  // namespace
 
 void run_integrator_study(const LutOptions& options, const std::function<void(const IntegratorStudyRow&)>& on_row) {
-  LutOptions base = options;
+  LutOptions all = options;
   // Small grids: 4 samples on an f0 / ior axis, 8 on the others.
-  for (const std::string& name : base.tables)
-    if (!base.sizes.count(name)) {
+  for (const std::string& name : all.tables)
+    if (!all.sizes.count(name)) {
       std::vector<int> size;
       for (const std::string& axis : lut_axis_names(name)) size.push_back(axis == "f0" || axis == "ior_x" ? 4 : 8);
-      base.sizes[name] = size;
+      all.sizes[name] = size;
     }
-  for (const std::string& name : base.tables) {
+  for (const std::string& name : options.tables) {
     const LutInfo& info = published_lut(name);
+    // This table alone, with its size (a size for a table not generated is refused).
+    LutOptions base = all;
+    base.tables = {name};
+    base.sizes = {{name, all.sizes.at(name)}};
     // Reference: the quadrature at a thousandth of its default tolerance (its accuracy against
     // independent rules is what tests/test_lut_quadrature.cpp checks).
     LutOptions ref = base;
