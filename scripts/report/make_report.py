@@ -22,6 +22,9 @@ import numpy as np  # noqa: E402
 from jinja2 import Environment, FileSystemLoader, select_autoescape  # noqa: E402
 from PIL import Image  # noqa: E402  (matplotlib's own dependency)
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import integrator_plot  # noqa: E402  (the plot docs/luts.md shows, from the same data)
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 THUMB_WIDTH = 1000  # px: figures wider than this are shown as thumbnails linking to the full PNG
 
@@ -427,6 +430,24 @@ def not_judged_groups(rep):
     return [{"check": k[0], "reason": k[1], "items": items} for k, items in groups.items()]
 
 
+def integrator_study_plot(rep, figs):
+    """The table integrators' trade: the committed study (luts/integrator_study.csv) as plotted in
+    docs/luts.md."""
+    study = rep.get("integrator_study")
+    if not study:
+        return None
+    rows = integrator_plot.read_rows(study["csv"])
+    if not rows:
+        return None
+    fig = integrator_plot.plot(rows)
+    header = ["table", "grid", "integrator", "budget", "ms_per_cell", "max_abs_error", "max_stated_error"]
+    f = figs.save(fig, "integrator_study", header,
+                  [[r["table"], r["grid"], r["integrator"], r["budget"], r["ms_per_cell"], r["max_abs_error"],
+                    r["max_stated_error"]] for r in rows])
+    f["source"] = study["source"]
+    return f
+
+
 def run_figure_job(name, out):
     with open(os.path.join(out, "data", "report.json")) as f:
         rep = json.load(f)
@@ -434,7 +455,7 @@ def run_figure_job(name, out):
     if name == "spheres":
         return sphere_plots(rep, figs, out)
     return {"furnace": furnace_plots, "luts": lut_plots, "chi2": chi2_plots, "reciprocity": reciprocity_plot,
-            "convergence": convergence_plot}[name](rep, figs)
+            "convergence": convergence_plot, "integrators": integrator_study_plot}[name](rep, figs)
 
 
 def main():
@@ -450,7 +471,7 @@ def main():
         print(f"make_report.py: cannot read {path}: {e}", file=sys.stderr)
         return 1
     # The figure groups are independent: drawn by two processes (most costly first).
-    jobs = ["furnace", "spheres", "luts", "chi2", "reciprocity", "convergence"]
+    jobs = ["furnace", "spheres", "luts", "chi2", "reciprocity", "convergence", "integrators"]
     with ProcessPoolExecutor(max_workers=2) as pool:
         futures = {k: pool.submit(run_figure_job, k, out) for k in jobs}
         ctx = {k: f.result() for k, f in futures.items()}

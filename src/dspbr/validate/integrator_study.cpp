@@ -8,6 +8,10 @@
 #include <map>
 #include <vector>
 
+namespace dspbr {
+std::string_view integrator_study_csv();  // generated (cmake/generated_sources.cmake)
+}  // namespace dspbr
+
 namespace dspbr::validate {
 
 namespace {
@@ -110,6 +114,8 @@ std::string integrator_study_markdown_row(const IntegratorStudyRow& r) {
   return fmt::format("| {} | {} | {} | {} | {:.3f} | {:.3f} | {:.2e} | {:.2e} |", r.table, r.grid, r.integrator,
                      r.samples, r.wall_s, r.ms_per_cell, r.max_abs_error, r.max_std_error);
 }
+
+std::string_view committed_integrator_study_csv() { return dspbr::integrator_study_csv(); }
 
 std::string integrator_study_csv_header() {
   return "table,grid,integrator,budget,wall_s,ms_per_cell,max_abs_error,max_stated_error,reference";

@@ -6,6 +6,7 @@
 #pragma once
 #include <functional>
 #include <string>
+#include <string_view>
 
 #include "dspbr/lut/generate.h"
 
@@ -19,6 +20,11 @@ struct IntegratorStudyRow {
 
 // Runs the study for base.tables; calls on_row for each row as soon as it is measured.
 void run_integrator_study(const LutOptions& base, const std::function<void(const IntegratorStudyRow&)>& on_row);
+
+// The committed run of the study (luts/integrator_study.csv, written by `dspbr lut
+// --bench-integrators --bench-csv luts/integrator_study.csv`), compiled in: the validation report
+// plots it.
+std::string_view committed_integrator_study_csv();
 
 // The Markdown header of the study's table, and one row.
 std::string integrator_study_markdown_header();

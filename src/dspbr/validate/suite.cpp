@@ -18,6 +18,7 @@
 #include "dspbr/lut/table_registry.h"
 #include "dspbr/progress.h"
 #include "dspbr/validate/furnace_image.h"
+#include "dspbr/validate/integrator_study.h"
 #include "dspbr/validate/provenance.h"
 #include "dspbr/validate/waivers.h"
 
@@ -636,6 +637,9 @@ SuiteResult run_suite(const Catalog& cat, const LutSet* luts, const SuiteSetting
   if (!luts) report["skipped"].push_back("tables: no LUT file (luts/dspbr_luts.json) could be loaded");
   timed("furnace_images", [&] { return run_images(cat, s, dir); });
   timed("convergence", [&] { return run_convergence(cat, s); });
+  // The table integrators' trade (docs/luts.md, "Speed"): the committed study, plotted by the report.
+  report["integrator_study"] = {{"source", "luts/integrator_study.csv (dspbr lut --bench-integrators)"},
+                                {"csv", std::string(committed_integrator_study_csv())}};
   json summary = json::array();
   int failed = 0;
   for (const auto& [name, c] : verdicts.counts) {
