@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The undefined-behaviour pass of the README's test command (docs/limits.md, "Sanitizers"):
+# builds the library, the dspbr tool and the GoogleTest suite into ${SANITIZE_DIR:-build-sanitize}
+# with AddressSanitizer and UndefinedBehaviorSanitizer (any report fails the test that hit it)
+# and with link-time optimisation under -Werror=odr (a one-definition-rule clash between
+# translation units fails the link), then runs the GoogleTest cases (the tests that run the
+# dspbr tool run the sanitized one). Installs packages first (scripts/setup.sh).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+bash "$here/scripts/setup.sh"
+build="${SANITIZE_DIR:-$here/build-sanitize}"
+flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined"
+lto="-flto=auto -Werror=odr"
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=None \
+  -DCMAKE_CXX_FLAGS="$flags $lto" -DCMAKE_C_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined $lto" \
+  -DDSPBR_BUILD_BENCH=OFF -DDSPBR_BUILD_PYTHON=OFF -DDSPBR_FUZZ=OFF -DDSPBR_INSTALL=OFF >/dev/null
+cmake --build "$build" -j "$(nproc)" --target dspbr dspbr_tests
+cd "$build"
+# halt_on_error: the first report ends the process (the test fails); leaks are reports too.
+export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:abort_on_error=0"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+# The GoogleTest cases (names Suite.Case); the shader, Python and example entries run in the
+# main pass.
+ctest --output-on-failure -j "$(nproc)" -R '\.'
