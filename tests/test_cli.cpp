@@ -8,6 +8,8 @@
 #include <regex>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "dspbr/version.h"
 #include "test_params_run.h"
 
@@ -96,4 +98,45 @@ TEST(Cli, ThreadCountAboveTheLimitIsRefused) {
                      "--threads: must be a thread count from 0 (all cores) to 1024, got '2147483647'");
   expect_usage_error("lut --threads -1 --tables GGX_E --size GGX_E=4x4 --formats json" + out, "--threads:");
   expect_usage_error("fit --quick --threads 1025" + out, "--threads:");
+}
+
+// A mistyped option or parameter gets the nearest valid name (within 2 edits), whatever else is
+// missing from the command line.
+TEST(Cli, UnknownOptionsAndParametersGetTheNearestName) {
+  expect_usage_error("eval --veiw 0,0,1 --light 0,0,1", "unknown option '--veiw' of 'eval'; did you mean '--view'?");
+  expect_usage_error("lut --out x --tabels GGX_E", "unknown option '--tabels' of 'lut'; did you mean '--tables'?");
+  expect_usage_error("eval --view 0,0,1 --light 0,0,1 --zzzzzzz", "unknown option '--zzzzzzz' of 'eval' (--help lists");
+  expect_usage_error("eval --view 0,0,1 --light 0,0,1 --set rougness=0.3",
+                     "unknown material parameter 'rougness'; did you mean 'roughness'?");
+  // --opt=value forms are names too; a known option with a value passes through to CLI11.
+  expect_usage_error("eval --veiw=0,0,1 --light 0,0,1", "did you mean '--view'?");
+}
+
+// Colour parameters take one number (grey) or three, on the command line as in files.
+TEST(Cli, ColourParametersTakeOneOrThreeNumbers) {
+  const ToolRun grey = run_dspbr("eval --view 0,0,1 --light 0,0.2,1 --set albedo=0.5");
+  const ToolRun three = run_dspbr("eval --view 0,0,1 --light 0,0.2,1 --set albedo=0.5,0.5,0.5");
+  ASSERT_EQ(grey.status, 0) << grey.output;
+  ASSERT_EQ(three.status, 0) << three.output;
+  auto f = [](const std::string& out) { return nlohmann::json::parse(out)["f"]; };
+  EXPECT_EQ(f(grey.output), f(three.output));
+  expect_usage_error("eval --view 0,0,1 --light 0,0,1 --set albedo=0.5,0.5",
+                     "parameter 'albedo' expects one number (grey) or 3 comma-separated numbers (r,g,b), got '0.5,0.5'");
+  // A material instance file: a number is grey as well.
+  const std::string path = temp_path("grey_instance.json");
+  std::ofstream(path) << R"({"material": "generic", "values": {"albedo": 0.5}})";
+  const ToolRun file = run_dspbr("eval --material " + path + " --view 0,0,1 --light 0,0.2,1");
+  ASSERT_EQ(file.status, 0) << file.output;
+  EXPECT_EQ(f(file.output), f(three.output));
+  // Vectors stay three numbers.
+  expect_usage_error("eval --view 0,0,1 --light 0,0,1 --set normal=0.5", "expects 3 comma-separated numbers (x,y,z)");
+}
+
+// `params show MATERIAL` reads the built-in definitions, as documented (docs/params.md).
+TEST(Cli, ParamsShowDefaultsToTheBuiltInDefinitions) {
+  const ToolRun builtin = run_dspbr("params show glass");
+  const ToolRun file = run_dspbr("params show " DSPBR_REFERENCE_DIR "/params-2025x.json glass");
+  ASSERT_EQ(builtin.status, 0) << builtin.output;
+  EXPECT_EQ(builtin.output, file.output);
+  EXPECT_NE(builtin.output.find("roughness"), std::string::npos);
 }

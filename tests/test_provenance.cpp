@@ -39,6 +39,11 @@ TEST(Provenance, PrintedDocumentsCarryTheVersionAndTheCommandLine) {
   }
   const nlohmann::json eval = nlohmann::json::parse(run_dspbr("eval --view 0,0,1 --light 0,0.2,1 --tables published").output);
   EXPECT_EQ(eval["provenance"]["settings"]["tables"], "published");
+  EXPECT_EQ(eval["provenance"]["settings"]["transmission_compensation"], false);
+  // Every option that changes a value is recorded: the transmission compensation too.
+  const nlohmann::json comp = nlohmann::json::parse(
+      run_dspbr("eval --view 0,0,1 --light 0,0.2,-1 --set transparency=1 --transmission-compensation").output);
+  EXPECT_EQ(comp["provenance"]["settings"]["transmission_compensation"], true);
 }
 
 TEST(Provenance, TableFilesRecordTheProjectVersionAndTheSameBytesInAnyFolderWithAnyThreads) {

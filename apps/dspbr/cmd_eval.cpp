@@ -202,7 +202,8 @@ Json provenance(const EvalArgs& a) {
   Json p = output_provenance();
   p["settings"] = {{"tables", a.tables},           {"sheen", a.sheen}, {"position", a.position},
                    {"object_normal", a.object_normal}, {"wavelength_nm", a.wavelength}, {"area_m2", a.area},
-                   {"components", a.components.empty() ? "active" : a.components}};
+                   {"components", a.components.empty() ? "active" : a.components},
+                   {"transmission_compensation", a.transmission_compensation}};
   return p;
 }
 

@@ -1,7 +1,7 @@
 // `dspbr params`: parameter definition files (spec appendix "Parameter JSON file format") and
 // material instance files.
 //   dspbr params list [FILE] [--json]          materials of a definition file
-//   dspbr params show FILE MATERIAL [--json]   resolved parameters in UI order and groups
+//   dspbr params show [FILE] MATERIAL [--json]   resolved parameters in UI order and groups
 //   dspbr params check INSTANCE... [--params FILE]
 #include <cstdio>
 #include <iostream>
@@ -69,6 +69,7 @@ void add_params_command(CLI::App& app) {
 
   struct Options {
     std::string file, material, params;
+    std::vector<std::string> show_args;  // params show: [FILE] MATERIAL
     std::vector<std::string> instances;
     bool json = false;
   };
@@ -97,12 +98,17 @@ void add_params_command(CLI::App& app) {
   });
 
   auto* show = cmd->add_subcommand("show", "Show a material's resolved parameters in UI order and groups");
-  show->add_option("FILE", opt->file, "Parameter definition file")->required();
-  show->add_option("MATERIAL", opt->material, "Material id, e.g. glass")->required();
+  show->add_option("[FILE] MATERIAL", opt->show_args,
+                   "Parameter definition file (default: $DSPBR_PARAMS, else the built-in params-2025x.json), then "
+                   "the material id, e.g. glass")
+      ->expected(1, 2)
+      ->required();
   show->add_flag("--json", opt->json,
                  "Print {\"parameters\": {\"<id>\": {\"name\", \"type\", \"default\", \"min\", \"max\", \"uniform\", "
                  "\"hidden\", \"group\", \"uiOrder\", ...}}}");
   show->callback([opt] {
+    opt->material = opt->show_args.back();
+    opt->file = opt->show_args.size() == 2 ? opt->show_args.front() : std::string();
     const ParamDefs defs = load_defs(opt->file);
     const MaterialDef* m = nullptr;
     try {

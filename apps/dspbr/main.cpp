@@ -8,25 +8,10 @@
 #include <vector>
 
 #include "commands.h"
+#include "dspbr/nearest_name.h"
 #include "dspbr/version.h"
 
 namespace {
-
-// Levenshtein distance: insertions, deletions and substitutions of one character.
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
 
 // The error for a word of the command line that stands where a subcommand must be (the app has
 // subcommands and no positional arguments) but names none: "unknown subcommand 'lutt'; did you
@@ -45,15 +30,47 @@ std::string unknown_subcommand(CLI::App& app, int argc, char** argv) {
       current = *named;
       continue;
     }
-    std::string nearest, names;
-    std::size_t best = 3;  // suggest only within 2 edits
+    std::vector<std::string> candidates;
+    std::string names;
     for (CLI::App* s : subs) {
-      const std::size_t d = edit_distance(word, s->get_name());
-      if (d < best) best = d, nearest = s->get_name();
+      candidates.push_back(s->get_name());
       names += (names.empty() ? "" : ", ") + s->get_name();
     }
+    const std::string nearest = dspbr::nearest_name(word, candidates);  // within 2 edits
     return "unknown subcommand '" + word + "'" +
            (nearest.empty() ? " (choose from " + names + ")" : "; did you mean '" + nearest + "'?");
+  }
+  return "";
+}
+
+// The error for an option of the command line ("--veiw") that the (sub)command it follows does
+// not have: "unknown option '--veiw' of 'eval'; did you mean '--view'?" (within 2 edits). Found
+// before CLI11's own message, which may be about a required option instead. "" when every
+// option is known.
+std::string unknown_option(CLI::App& app, int argc, char** argv) {
+  CLI::App* current = &app;
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--") return "";  // positionals from here on
+    if (word.rfind("--", 0) != 0) {
+      const std::vector<CLI::App*> subs = current->get_subcommands([](CLI::App*) { return true; });
+      const auto named = std::find_if(subs.begin(), subs.end(), [&](CLI::App* s) { return s->check_name(word); });
+      if (named != subs.end()) current = *named;
+      continue;  // a value or a positional
+    }
+    const std::string name = word.substr(0, word.find('='));
+    bool known = false;
+    std::vector<std::string> names;
+    for (CLI::App* a = current; a != nullptr; a = a->get_parent())
+      for (const CLI::Option* o : a->get_options([](const CLI::Option*) { return true; }))
+        for (const std::string& l : o->get_lnames()) {
+          names.push_back("--" + l);
+          known = known || name == "--" + l;
+        }
+    if (known) continue;
+    const std::string nearest = dspbr::nearest_name(name, names);
+    return "unknown option '" + name + "'" + (current == &app ? "" : " of '" + current->get_name() + "'") +
+           (nearest.empty() ? " (--help lists the options)" : "; did you mean '" + nearest + "'?");
   }
   return "";
 }
@@ -76,7 +93,8 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // help, version
-    const std::string unknown = unknown_subcommand(app, argc, argv);
+    std::string unknown = unknown_subcommand(app, argc, argv);
+    if (unknown.empty()) unknown = unknown_option(app, argc, argv);
     std::fprintf(stderr, "dspbr: error: %s\n", unknown.empty() ? e.what() : unknown.c_str());
     return 2;
   } catch (const dspbr::cli::UsageError& e) {

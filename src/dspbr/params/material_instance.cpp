@@ -48,8 +48,15 @@ void check_value(const ParamDef& d, const Json& v, std::vector<std::string>& pro
     case ParamKind::Normal:
     case ParamKind::Vector: {
       const char* type = param_type_name(d.type);
+      // A colour is one number (grey) or three, as on the command line.
+      if (d.type == ParamKind::Color && v.is_number()) {
+        check_value(d, Json::array({v, v, v}), problems);
+        return;
+      }
       if (!v.is_array()) {
-        problems.push_back(p + ": wrong type, expected an array of 3 numbers (" + type + "), got " + v.dump());
+        problems.push_back(p + ": wrong type, expected " +
+                           (d.type == ParamKind::Color ? "a number (grey) or " : "") + "an array of 3 numbers (" +
+                           type + "), got " + v.dump());
         return;
       }
       if (v.size() != 3) {

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dspbr/nearest_name.h"
+
 namespace dspbr {
 
 namespace {
@@ -51,6 +53,15 @@ const std::map<std::string, Field>& fields() {
       t[id] = {ParamKind::Color,
                [mem](const Material& m) { return Json::array({(m.*mem).r, (m.*mem).g, (m.*mem).b}); },
                [mem, id](Material& m, const Json& v) {
+                 // A colour is one number (grey) or three, in files as on the command line.
+                 if (v.is_number()) {
+                   const double g = json_number(id, v);
+                   m.*mem = Rgb(g, g, g);
+                   return;
+                 }
+                 if (!v.is_array() || v.size() != 3)
+                   throw std::invalid_argument("parameter '" + std::string(id) +
+                                               "' expects a number (grey) or an array of 3 numbers, got " + v.dump());
                  const auto a = json_triple(id, v);
                  m.*mem = Rgb(a[0], a[1], a[2]);
                }};
@@ -124,7 +135,11 @@ const std::map<std::string, Field>& fields() {
 
 const Field& field(const std::string& id) {
   const auto it = fields().find(id);
-  if (it == fields().end()) throw std::invalid_argument("unknown material parameter '" + id + "'");
+  if (it == fields().end()) {
+    const std::string near = nearest_name(id, material_parameter_ids());
+    throw std::invalid_argument("unknown material parameter '" + id + "'" +
+                                (near.empty() ? "" : "; did you mean '" + near + "'?"));
+  }
   return it->second;
 }
 
@@ -171,9 +186,13 @@ Json parse_parameter_text(const std::string& id, const std::string& text) {
       std::stringstream ss(text);
       std::string part;
       while (std::getline(ss, part, ',')) arr.push_back(number(part));
-      if (arr.size() == 1) arr = Json::array({arr[0], arr[0], arr[0]});  // "0.5" -> grey
+      const bool colour = material_parameter_kind(id) == ParamKind::Color;
+      if (colour && arr.size() == 1) return arr[0];  // "0.5": grey, as in files
       if (arr.size() != 3)
-        throw std::invalid_argument("parameter '" + id + "' expects 3 comma-separated numbers (r,g,b or x,y,z), got '" + text + "'");
+        throw std::invalid_argument("parameter '" + id + "' expects " +
+                                    (colour ? "one number (grey) or 3 comma-separated numbers (r,g,b)"
+                                            : "3 comma-separated numbers (x,y,z)") +
+                                    ", got '" + text + "'");
       return arr;
     }
     case ParamKind::Boolean:
