@@ -3,12 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <sstream>
 
+#include "dspbr/io/read_file.h"
 #include "dspbr/lut/generate.h"
 #include "dspbr/lut/lut_io.h"
 #include "dspbr/lut/renderer_io.h"
@@ -18,17 +18,6 @@
 
 namespace fs = std::filesystem;
 using namespace dspbr;
-
-namespace {
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-}  // namespace
 
 TEST(LutRegistry, IdsIndexTheRegistryAndNamesAreUnique) {
   std::set<std::string> names;
@@ -136,7 +125,7 @@ TEST(LutRegistry, TableFilesAreCheckedAgainstTheSchema) {
   missing.erase("version");
   refused(missing, "\"version\" must be 1 (this build reads table files of that version)");
   // The renderer layout's reader: the committed set passes, an unknown table or version does not.
-  nlohmann::json ren = nlohmann::json::parse(read_text(fs::path(DSPBR_SOURCE_DIR) / "luts/dspbr_renderer_luts.json"));
+  nlohmann::json ren = nlohmann::json::parse(read_file((fs::path(DSPBR_SOURCE_DIR) / "luts/dspbr_renderer_luts.json").string()));
   EXPECT_NO_THROW((void)read_renderer_json_value(ren, "ren.json"));
   nlohmann::json ren_unknown = ren;
   ren_unknown["tables"]["Base_E"] = ren["tables"]["GGX_E"];  // a published table only
@@ -161,7 +150,7 @@ TEST(LutRegistry, NoTableNameLiteralOutsideTheRegistry) {
       if (!e.is_regular_file() || (ext != ".cpp" && ext != ".h")) continue;
       if (e.path().filename() == "table_registry.cpp") continue;
       ++files;
-      std::istringstream in(read_text(e.path()));
+      std::istringstream in(read_file(e.path().string()));
       std::string line;
       for (int n = 1; std::getline(in, line); ++n) {
         const std::string code = line.substr(0, line.find("//"));  // comments may name tables
