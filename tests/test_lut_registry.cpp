@@ -37,7 +37,15 @@ TEST(LutRegistry, IdsIndexTheRegistryAndNamesAreUnique) {
   EXPECT_EQ(lut_names(kPublishedLayout),
             (std::vector<std::string>{"GGX_E", "GGX_E_avg", "Base_E", "Base_E_avg", "Sheen_E", "Sheen_ash_E", "Glass_E",
                                       "Glass_inv_E", "Glass_E_avg", "Glass_inv_E_avg"}));
-  EXPECT_EQ(lut_names(kRendererLayout).size(), 10u);
+  // The renderer layout's order (its file and generated code follow it; the committed luts/ too).
+  EXPECT_EQ(lut_names(kRendererLayout),
+            (std::vector<std::string>{"GGX_E", "GGX_beta", "GGX_E_avg", "GGX_B_avg", "Sheen_E", "Sheen_ash_E", "Glass_E",
+                                      "Glass_inv_E", "Glass_E_avg", "Glass_inv_E_avg"}));
+  const nlohmann::ordered_json committed = nlohmann::ordered_json::parse(
+      read_file((fs::path(DSPBR_SOURCE_DIR) / "luts/dspbr_renderer_luts.json").string()));
+  std::vector<std::string> in_file;
+  for (const auto& item : committed["tables"].items()) in_file.push_back(item.key());
+  EXPECT_EQ(in_file, lut_names(kRendererLayout));
 }
 
 // What the generator makes is what the registry declares: names, axis names and order, sizes.

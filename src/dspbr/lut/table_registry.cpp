@@ -10,8 +10,12 @@ const std::vector<LutInfo>& lut_registry() {
   static const std::vector<LutInfo> r{
       {Lut::GgxE, "GGX_E", kBothLayouts, true, false, false, false, {"roughness", "cos_theta"}, {32, 32}, 0, 16,
        "E_m(mu; r), GGX single-scattering albedo", "specular and coat energy compensation"},
+      {Lut::GgxBeta, "GGX_beta", kRendererLayout, true, false, false, false, {}, {}, kNoStream, 17,
+       "beta - (1 - mu)^5, beta = B / E_m", "Base_E composed in f0 (renderer layout)"},
       {Lut::GgxEAvg, "GGX_E_avg", kBothLayouts, true, false, true, false, {"roughness"}, {32}, 1, kNoStream,
        "E_m,avg(r) = 2 Integral E_m mu dmu (renderer: ln(1 - E_m,avg))", "multiple-scattering lobe"},
+      {Lut::GgxBAvg, "GGX_B_avg", kRendererLayout, true, false, true, false, {}, {}, kNoStream, kNoStream,
+       "2 Integral B mu dmu", "Base_E_avg composed in f0 (renderer layout)"},
       {Lut::BaseE, "Base_E", kPublishedLayout, true, false, false, false, {"f0", "roughness", "cos_theta"},
        {16, 16, 16}, 2, kNoStream, "E(mu; r, f0), metal/dielectric base albedo", "base layering (sheen, coat)"},
       {Lut::BaseEAvg, "Base_E_avg", kPublishedLayout, true, false, true, false, {"f0", "roughness"}, {16, 16}, 3, kNoStream,
@@ -28,10 +32,6 @@ const std::vector<LutInfo>& lut_registry() {
        "2 Integral E_g mu dmu, outside", "transmission compensation"},
       {Lut::GlassInvEAvg, "Glass_inv_E_avg", kBothLayouts, false, true, true, true, {"ior_x", "roughness"},
        {16, 16}, 10, kNoStream, "2 Integral E_g mu dmu, inside", "transmission compensation"},
-      {Lut::GgxBeta, "GGX_beta", kRendererLayout, true, false, false, false, {}, {}, kNoStream, 17,
-       "beta - (1 - mu)^5, beta = B / E_m", "Base_E composed in f0 (renderer layout)"},
-      {Lut::GgxBAvg, "GGX_B_avg", kRendererLayout, true, false, true, false, {}, {}, kNoStream, kNoStream,
-       "2 Integral B mu dmu", "Base_E_avg composed in f0 (renderer layout)"},
   };
   return r;
 }

@@ -10,11 +10,15 @@
 
 namespace dspbr {
 
-// The tables, in canonical order: DSPBR 2025x's six, the rough-glass tables beyond it, then the
-// renderer layout's own.
+// The tables, in canonical order: DSPBR 2025x's tables, then the rough-glass tables beyond it.
+// Each layout's order is this order restricted to its tables (published: GGX_E, GGX_E_avg,
+// Base_E, ...; renderer: GGX_E, GGX_beta, GGX_E_avg, GGX_B_avg, Sheen_E, ...), the order of its
+// files and generated code.
 enum class Lut : uint8_t {
   GgxE,
+  GgxBeta,  // renderer layout only
   GgxEAvg,
+  GgxBAvg,  // renderer layout only
   BaseE,
   BaseEAvg,
   SheenE,
@@ -23,8 +27,6 @@ enum class Lut : uint8_t {
   GlassInvE,
   GlassEAvg,
   GlassInvEAvg,
-  GgxBeta,  // renderer layout only
-  GgxBAvg,  // renderer layout only
 };
 
 // Layouts, as bits: a table may belong to both.
