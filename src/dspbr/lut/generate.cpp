@@ -1,5 +1,7 @@
 #include "dspbr/lut/generate.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -18,11 +20,6 @@ namespace {
 constexpr uint64_t kBaseEMAvgStream = 6;  // E_m,avg on Base_E's roughness axis
 uint64_t stream_of(uint64_t table, uint64_t cell) { return (table << 32) | cell; }
 
-std::string join_names(const std::vector<std::string>& names) {
-  std::string s;
-  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
-  return s;
-}
 
 // Largest size per axis and total cells accepted (keeps memory and run time sane).
 constexpr int kMaxAxisSize = limits::kTableAxisSize;
@@ -113,7 +110,7 @@ void validate_lut_options(const LutOptions& opt) {
     (void)published_lut(t);
     if (std::find(opt.tables.begin(), opt.tables.end(), t) == opt.tables.end())
       throw std::invalid_argument("a size is given for " + t + ", which is not being generated (tables: " +
-                                  join_names(opt.tables) + ")");
+                                  fmt::format("{}", fmt::join(opt.tables, ", ")) + ")");
     const size_t rank = lut_axis_names(t).size();
     if (size.size() != rank)
       throw std::invalid_argument("size of " + t + " needs " + std::to_string(rank) + " dimensions, e.g. " +

@@ -62,12 +62,17 @@ double cosine_average_of_lookup(const WarpedAxis& mu_axis, double r, G&& g) {
   return cosine_average_ggx_cos(mu_axis, r * r, g);
 }
 
-// Progress label "[renderer k/n] NAME cells": the integrated tables in the order they are made
-// (the averages follow from them), n = 4 without the glass tables.
+// Progress label "[renderer k/n] NAME cells": k-th of the n integrated renderer tables (those
+// with a stream; the averages follow from them), in registry order, the order they are made;
+// the glass ones counted only when made.
 std::string progress_label(Lut id, bool glass) {
-  static const Lut order[] = {Lut::GgxE, Lut::GgxBeta, Lut::SheenE, Lut::SheenAshE, Lut::GlassE, Lut::GlassInvE};
-  const size_t k = size_t(std::find(std::begin(order), std::end(order), id) - std::begin(order)) + 1;
-  return "[renderer " + std::to_string(k) + "/" + (glass ? "6" : "4") + "] " + lut_name(id) + " cells";
+  size_t k = 0, n = 0;
+  for (const LutInfo& t : lut_registry()) {
+    if ((t.layouts & kRendererLayout) == 0 || t.renderer_stream == kNoStream || (t.glass && !glass)) continue;
+    ++n;
+    if (t.id <= id) ++k;
+  }
+  return "[renderer " + std::to_string(k) + "/" + std::to_string(n) + "] " + lut_name(id) + " cells";
 }
 
 bool wants_glass(const LutOptions& opt) {

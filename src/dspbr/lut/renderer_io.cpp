@@ -137,7 +137,7 @@ RendererLuts read_renderer_json_value(const nlohmann::json& j, const std::string
     for (const char* name : wanted) {
       if (!jt.contains(name))
         throw std::runtime_error(std::string("table ") + name + " is missing" +
-                                 (glass_present > 0 && lut_info(require_lut(name, kRendererLayout).id).glass
+                                 (glass_present > 0 && require_lut(name, kRendererLayout).glass
                                       ? " (the Glass tables come as a set of four)"
                                       : ""));
       const std::string where = std::string("tables.") + name;

@@ -1,5 +1,8 @@
 #include "dspbr/lut/table_registry.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <stdexcept>
 
 namespace dspbr {
@@ -62,10 +65,6 @@ std::vector<std::string> lut_names(unsigned layouts) {
   return n;
 }
 
-std::string lut_names_list(unsigned layouts) {
-  std::string s;
-  for (const std::string& n : lut_names(layouts)) s += (s.empty() ? "" : ", ") + n;
-  return s;
-}
+std::string lut_names_list(unsigned layouts) { return fmt::format("{}", fmt::join(lut_names(layouts), ", ")); }
 
 }  // namespace dspbr
