@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "dspbr/io/json_write.h"
+#include "dspbr/io/message.h"
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/limits.h"
 #include "dspbr/lut/generate.h"
@@ -39,7 +41,19 @@ namespace {
 
 constexpr int kMaxThreads = limits::kThreads;  // as the CLI's --threads
 
-[[noreturn]] void fail(const std::string& message) { throw py::value_error(message); }
+[[noreturn]] void fail(const std::string& message) { throw py::value_error(one_line(message)); }
+
+// An integer argument in [lo, hi], compared as Python integers (so 2**40 or -1 is a ValueError
+// with the command line's wording, never the binding library's conversion error); bools and
+// other types are a TypeError.
+std::uint64_t integer_arg(const py::object& v, const char* name, std::uint64_t lo, std::uint64_t hi,
+                          const std::string& meaning) {
+  const std::string text = py::repr(v).cast<std::string>();
+  if (!py::isinstance<py::int_>(v) || py::isinstance<py::bool_>(v))
+    throw py::type_error(std::string(name) + ": must be an integer, got " + quote_input(text));
+  if (v < py::int_(lo) || v > py::int_(hi)) fail(std::string(name) + ": " + integer_range_message(meaning, lo, hi, text));
+  return v.cast<std::uint64_t>();
+}
 
 // Python value -> JSON (numbers, bools, strings, sequences, numpy arrays, dicts; +inf as
 // {"infinity": true}, the parameter files' spelling); nested at most limits::kJsonDepth deep, as
@@ -49,7 +63,17 @@ Json to_json(const py::handle& obj, const std::string& what, int depth = 0) {
     fail(what + ": nested deeper than " + std::to_string(limits::kJsonDepth) + " levels");
   if (obj.is_none()) return nullptr;
   if (py::isinstance<py::bool_>(obj)) return obj.cast<bool>();
-  if (py::isinstance<py::int_>(obj)) return obj.cast<long long>();
+  if (py::isinstance<py::int_>(obj)) {
+    // Integers beyond 64 bits become the nearest double (10**30 is 1e30); beyond double's range, an error.
+    if (obj >= py::int_(std::numeric_limits<long long>::min()) && obj <= py::int_(std::numeric_limits<long long>::max()))
+      return obj.cast<long long>();
+    const double x = PyLong_AsDouble(obj.ptr());
+    if (x == -1.0 && PyErr_Occurred()) {
+      PyErr_Clear();
+      fail(what + ": the integer " + quote_input(py::repr(obj).cast<std::string>()) + " is beyond the range of a double");
+    }
+    return x;
+  }
   if (py::isinstance<py::float_>(obj)) {
     const double x = obj.cast<double>();
     if (std::isinf(x) && x > 0) return Json{{"infinity", true}};
@@ -74,7 +98,16 @@ Json to_json(const py::handle& obj, const std::string& what, int depth = 0) {
 }
 
 // JSON -> Python, through the json module (the same objects `json.loads` gives for the CLI output).
-py::object to_python(const nlohmann::ordered_json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
+// Non-finite numbers are refused (json_write.h) rather than turned into None.
+py::object to_python(const nlohmann::ordered_json& j) {
+  std::string text;
+  try {
+    text = json_text(j, -1, "result");
+  } catch (const std::runtime_error& e) {
+    fail(e.what());
+  }
+  return py::module_::import("json").attr("loads")(text);
+}
 
 bool is_path(const py::handle& obj) {
   return py::isinstance<py::str>(obj) || py::isinstance(obj, py::module_::import("os").attr("PathLike"));
@@ -114,6 +147,8 @@ Material material_of(const py::object& obj) {
     throw;
   } catch (const py::value_error&) {
     throw;
+  } catch (const std::bad_alloc&) {
+    throw;  // MemoryError
   } catch (const std::exception& e) {
     fail(e.what());
   }
@@ -150,7 +185,8 @@ Triples triples_of(const py::object& obj, const char* name) {
   Triples t;
   try {
     t.a = Array::ensure(obj);
-  } catch (const py::error_already_set&) {
+  } catch (const py::error_already_set& e) {
+    if (e.matches(PyExc_MemoryError)) throw;
   }
   if (!t.a) fail(std::string(name) + " must be an array of numbers of shape (3,) or (N, 3)");
   if (t.a.ndim() == 1 && t.a.shape(0) == 3) return t;
@@ -390,7 +426,8 @@ std::vector<int> dims_of(const py::handle& obj, const std::string& name) {
 }
 
 LutOptions lut_options(const py::object& tables, const py::object& size, const std::string& integrator,
-                       long long samples, double target_error, int randomizations, const py::int_& seed, int threads,
+                       const py::object& samples, double target_error, const py::object& randomizations,
+                       const py::object& seed, const py::object& threads,
                        const std::string& grid) {
   LutOptions opt;
   opt.progress = false;
@@ -430,18 +467,11 @@ LutOptions lut_options(const py::object& tables, const py::object& size, const s
   } catch (const std::invalid_argument& e) {
     fail(std::string("integrator: ") + e.what());
   }
-  if (samples < 0 || samples > std::numeric_limits<int>::max())
-    fail("samples must be a non-negative integer, got " + std::to_string(samples));
-  opt.samples = int(samples);
+  opt.samples = int(integer_arg(samples, "samples", 0, std::numeric_limits<int>::max(), "a sample count (0: the default)"));
   opt.target_error = target_error;
-  opt.randomizations = randomizations;
-  if (py::int_(0) > seed || seed >= py::int_(py::module_::import("builtins").attr("pow")(2, 64)))
-    fail("seed must be a non-negative integer below 2^64, got " + py::repr(seed).cast<std::string>());
-  opt.seed = seed.cast<uint64_t>();
-  if (threads < 0 || threads > kMaxThreads)
-    fail("threads must be a thread count from 0 (all cores) to " + std::to_string(kMaxThreads) + ", got " +
-         std::to_string(threads));
-  opt.threads = threads;
+  opt.randomizations = int(integer_arg(randomizations, "randomizations", 2, 1024, "a randomization count"));
+  opt.seed = integer_arg(seed, "seed", 0, std::numeric_limits<std::uint64_t>::max(), "an integer");
+  opt.threads = int(integer_arg(threads, "threads", 0, kMaxThreads, "a thread count (0: all cores)"));
   try {
     validate_lut_options(opt);
   } catch (const std::invalid_argument& e) {
@@ -461,7 +491,8 @@ py::array_t<double> array_of(const std::vector<double>& values, const std::vecto
 }
 
 py::dict lut_generate(const py::object& tables, const py::object& size, const std::string& integrator,
-                      long long samples, double target_error, int randomizations, const py::int_& seed, int threads,
+                      const py::object& samples, double target_error, const py::object& randomizations,
+                      const py::object& seed, const py::object& threads,
                       const std::string& grid, bool errors) {
   const LutOptions opt =
       lut_options(tables, size, integrator, samples, target_error, randomizations, seed, threads, grid);
@@ -488,7 +519,7 @@ py::list lut_axes_of(const std::string& name, const py::object& size, const std:
   py::dict sizes;
   if (!size.is_none()) sizes[py::str(name)] = size;
   const LutOptions opt =
-      lut_options(py::str(name), sizes, "", 0, kLutIntegratorDefault, 8, py::int_(1), 0, grid);
+      lut_options(py::str(name), sizes, "", py::int_(0), kLutIntegratorDefault, py::int_(8), py::int_(1), py::int_(0), grid);
   py::list out;
   for (const Axis& a : lut_axes(name, opt)) {
     py::array_t<double> x(std::vector<py::ssize_t>{a.size});
@@ -505,6 +536,8 @@ py::dict lut_load(const py::object& path_obj) {
   try {
     py::gil_scoped_release release;
     set = LutSet::load(path);
+  } catch (const std::bad_alloc&) {
+    throw;  // MemoryError
   } catch (const std::exception& e) {
     fail(e.what());
   }
@@ -531,6 +564,8 @@ py::object scene_analyze(const py::object& path_obj, bool parameters) {
   try {
     py::gil_scoped_release release;
     j = scene_analysis_json(analyze_scene(path), parameters);
+  } catch (const std::bad_alloc&) {
+    throw;  // MemoryError
   } catch (const std::exception& e) {
     fail(e.what());
   }

@@ -84,9 +84,9 @@ TEST(Cli, PngRenamedGltfIsNamedAsSuch) {
 TEST(Cli, NegativeOrOversizedUnsignedOptionsAreRefused) {
   const std::string out = " --out " + temp_path("refused");
   expect_usage_error("lut --seed -1 --tables GGX_E --size GGX_E=4x4 --formats json" + out,
-                     "--seed: must be a non-negative integer below 2^64, got '-1'");
+                     "--seed: must be an integer from 0 to 18446744073709551615 (decimal digits), got '-1'");
   expect_usage_error("lut --seed 18446744073709551616 --tables GGX_E --size GGX_E=4x4 --formats json" + out,
-                     "--seed: must be a non-negative integer below 2^64");
+                     "--seed: must be an integer from 0 to 18446744073709551615 (decimal digits), got '18446744073709551616'");
   expect_usage_error("lut --samples -5 --tables GGX_E --size GGX_E=4x4 --formats json" + out, "--samples:");
   expect_usage_error("fit --quick --seed -1" + out, "--seed:");
   expect_usage_error("validate --quick --no-html --seed -1" + out, "--seed:");
@@ -95,7 +95,7 @@ TEST(Cli, NegativeOrOversizedUnsignedOptionsAreRefused) {
 TEST(Cli, ThreadCountAboveTheLimitIsRefused) {
   const std::string out = " --out " + temp_path("refused");
   expect_usage_error("lut --threads 2147483647 --tables GGX_E --size GGX_E=4x4 --formats json" + out,
-                     "--threads: must be a thread count from 0 (all cores) to 1024, got '2147483647'");
+                     "--threads: must be a thread count (0: all cores) from 0 to 1024 (decimal digits), got '2147483647'");
   expect_usage_error("lut --threads -1 --tables GGX_E --size GGX_E=4x4 --formats json" + out, "--threads:");
   expect_usage_error("fit --quick --threads 1025" + out, "--threads:");
 }

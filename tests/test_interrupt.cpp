@@ -102,7 +102,7 @@ TEST(Interrupt, LutRemovesTheFolderItCreated) {
     EXPECT_FALSE(fs::exists(out)) << "left behind: " << out;
     const std::string log = read_all(r.log);
     EXPECT_NE(log.find(std::string("dspbr: interrupted (") + (sig == SIGINT ? "SIGINT" : "SIGTERM") +
-                       "): removed the output folder '" + out.string() + "' it created"),
+                       "): nothing was written; removed the 1 folder(s) it created ('" + out.string() + "')"),
               std::string::npos)
         << log;
   }
@@ -120,5 +120,18 @@ TEST(Interrupt, LutKeepsWhatWasThereBefore) {
   EXPECT_EQ(status, 128 + SIGINT) << read_all(r.log);
   EXPECT_EQ(listing(out), before);
   EXPECT_EQ(read_all((out / "keep.txt").string()), "kept");
-  EXPECT_NE(read_all(r.log).find("dspbr: interrupted (SIGINT): removed "), std::string::npos) << read_all(r.log);
+  EXPECT_NE(read_all(r.log).find("dspbr: interrupted (SIGINT): nothing was written\n"), std::string::npos)
+      << read_all(r.log);
+}
+
+// Missing parents are created one by one and removed again, the folder that existed kept.
+TEST(Interrupt, LutRemovesTheParentsItCreated) {
+  const fs::path root = fs::path(::testing::TempDir()) / "interrupt_parents";
+  fs::remove_all(root);
+  fs::create_directories(root);
+  const fs::path out = root / "a" / "b" / "c";
+  const LutRun r = start(out.string(), root.string() + ".log");
+  EXPECT_EQ(interrupt(r, out, SIGTERM), 128 + SIGTERM) << read_all(r.log);
+  EXPECT_TRUE(fs::is_empty(root)) << read_all(r.log);
+  EXPECT_NE(read_all(r.log).find("removed the 3 folder(s) it created"), std::string::npos) << read_all(r.log);
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "dspbr/io/read_file.h"
+#include "dspbr/limits.h"
 #include "dspbr/lut/generate.h"
 #include "dspbr/lut/lut_io.h"
 #include "dspbr/lut/renderer_io.h"
@@ -42,7 +43,7 @@ TEST(LutRegistry, IdsIndexTheRegistryAndNamesAreUnique) {
             (std::vector<std::string>{"GGX_E", "GGX_beta", "GGX_E_avg", "GGX_B_avg", "Sheen_E", "Sheen_ash_E", "Glass_E",
                                       "Glass_inv_E", "Glass_E_avg", "Glass_inv_E_avg"}));
   const nlohmann::ordered_json committed = nlohmann::ordered_json::parse(
-      read_file((fs::path(DSPBR_SOURCE_DIR) / "luts/dspbr_renderer_luts.json").string()));
+      read_file((fs::path(DSPBR_SOURCE_DIR) / "luts/dspbr_renderer_luts.json").string(), limits::kDocumentBytes));
   std::vector<std::string> in_file;
   for (const auto& item : committed["tables"].items()) in_file.push_back(item.key());
   EXPECT_EQ(in_file, lut_names(kRendererLayout));
@@ -133,7 +134,7 @@ TEST(LutRegistry, TableFilesAreCheckedAgainstTheSchema) {
   missing.erase("version");
   refused(missing, "\"version\" must be 1 (this build reads table files of that version)");
   // The renderer layout's reader: the committed set passes, an unknown table or version does not.
-  nlohmann::json ren = nlohmann::json::parse(read_file((fs::path(DSPBR_SOURCE_DIR) / "luts/dspbr_renderer_luts.json").string()));
+  nlohmann::json ren = nlohmann::json::parse(read_file((fs::path(DSPBR_SOURCE_DIR) / "luts/dspbr_renderer_luts.json").string(), limits::kDocumentBytes));
   EXPECT_NO_THROW((void)read_renderer_json_value(ren, "ren.json"));
   nlohmann::json ren_unknown = ren;
   ren_unknown["tables"]["Base_E"] = ren["tables"]["GGX_E"];  // a published table only
@@ -158,7 +159,7 @@ TEST(LutRegistry, NoTableNameLiteralOutsideTheRegistry) {
       if (!e.is_regular_file() || (ext != ".cpp" && ext != ".h")) continue;
       if (e.path().filename() == "table_registry.cpp") continue;
       ++files;
-      std::istringstream in(read_file(e.path().string()));
+      std::istringstream in(read_file(e.path().string(), limits::kDocumentBytes));
       std::string line;
       for (int n = 1; std::getline(in, line); ++n) {
         const std::string code = line.substr(0, line.find("//"));  // comments may name tables

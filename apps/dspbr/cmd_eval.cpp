@@ -17,6 +17,7 @@
 
 #include "commands.h"
 #include "provenance.h"
+#include "dspbr/io/json_write.h"
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/io/json_values.h"
 #include "dspbr/params/material_instance.h"
@@ -83,24 +84,11 @@ Vec3 parse_direction(const std::string& option, const std::string& text) {
   return d;
 }
 
-// Path of the first number of `j` that is not finite (JSON would print it as null), "" if none.
-std::string non_finite_path(const Json& j, const std::string& path) {
-  if (j.is_number_float()) return std::isfinite(j.get<double>()) ? "" : path;
-  if (j.is_object()) {
-    for (const auto& [key, v] : j.items())
-      if (const std::string p = non_finite_path(v, path.empty() ? key : path + "." + key); !p.empty()) return p;
-  } else if (j.is_array()) {
-    for (std::size_t i = 0; i < j.size(); ++i)
-      if (const std::string p = non_finite_path(j[i], path + "[" + std::to_string(i) + "]"); !p.empty()) return p;
-  }
-  return "";
-}
-
 // Prints the result; a value that overflows double precision (e.g. emission of a luminance near
 // 1e308 times a colour above 1) is an error, never a null in the output.
 void print_result(const Json& out) {
-  if (const std::string p = non_finite_path(out, ""); !p.empty())
-    throw UsageError("the result \"" + p + "\" is not finite: the material values are too large to evaluate in double precision");
+  if (const auto p = non_finite_path(out))
+    throw UsageError("the result \"" + *p + "\" is not finite: the material values are too large to evaluate in double precision");
   std::cout << out.dump(2) << "\n";
 }
 

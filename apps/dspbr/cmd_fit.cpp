@@ -8,16 +8,20 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "commands.h"
+#include "interrupt_cleanup.h"
+#include "dspbr/limits.h"
+#include "dspbr/io/json_write.h"
 #include "dspbr/fit/fit_documents.h"
 #include "dspbr/fit/fits_header.h"
 #include "dspbr/fit/fits_shader.h"
 #include "dspbr/io/atomic_file.h"
+#include "dspbr/io/read_file.h"
 #include "dspbr/progress.h"
 
 namespace dspbr::cli {
@@ -61,13 +65,14 @@ std::vector<std::string> parse_only(const std::string& s) {
   return out;
 }
 
+// A fit document of an earlier run in the output folder (--only regenerates some), or null.
 json read_json_if_exists(const fs::path& p) {
-  if (!fs::exists(p)) return nullptr;
-  std::ifstream in(p);
+  std::error_code ec;
+  if (!fs::exists(p, ec)) return nullptr;
   try {
-    return json::parse(in);
+    return read_json_file(p.string(), "fit document", limits::kDocumentBytes);
   } catch (const std::exception& e) {
-    throw std::runtime_error(fmt::format("{}: not valid JSON ({}); delete it or rerun without --only", p.string(), e.what()));
+    throw std::runtime_error(std::string(e.what()) + "; delete it or rerun without --only");
   }
 }
 
@@ -94,34 +99,39 @@ void print_summary(const std::string& name, const json& d) {
 
 void run(const FitArgs& a, const std::string& command_line) {
   const auto names = parse_only(a.only);
-  std::error_code ec;
-  fs::create_directories(a.out, ec);
-  if (ec || !fs::is_directory(a.out)) throw UsageError("--out: cannot create folder '" + a.out + "'");
+  // Written into a private staging folder inside --out, moved into place once complete.
+  OutputFolder out = open_output_folder(a.out);
+  const InterruptCleanup cleanup(out);
   fit::FitContext ctx;
   ctx.threads = a.threads;
   ctx.seed = a.seed;
   ctx.quick = a.quick;
   ctx.command = command_line;
   Progress progress("dspbr fit", names.size());
+  std::map<std::string, json> docs;  // this run's documents
   for (const auto& name : names) {
     const auto t0 = std::chrono::steady_clock::now();
     const json doc = name == "sheen_lambda" ? fit::sheen_lambda_document(ctx)
                      : name == "albedo"     ? fit::albedo_document(ctx)
                                             : fit::flake_roughness_document(ctx);
     print_summary(name, doc);
-    write_text_atomically((fs::path(a.out) / (name + ".json")).string(), doc.dump(1) + "\n");
+    write_text_atomically((fs::path(out.staging()) / (name + ".json")).string(), json_text(doc, 1, name + " fit document") + "\n");
+    docs[name] = doc;
     progress.add();
     std::printf("  (%s: %.1f s)\n", name.c_str(),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   progress.finish();
-  // The header always reflects every JSON present in the folder.
-  const fs::path dir(a.out);
-  const json sl = read_json_if_exists(dir / "sheen_lambda.json"), al = read_json_if_exists(dir / "albedo.json"),
-             fl = read_json_if_exists(dir / "flake_roughness.json");
+  // The header always reflects every document: this run's, else the one already in --out.
+  auto document = [&](const std::string& name) {
+    return docs.count(name) ? docs[name] : read_json_if_exists(fs::path(a.out) / (name + ".json"));
+  };
+  const json sl = document("sheen_lambda"), al = document("albedo"), fl = document("flake_roughness");
+  const fs::path dir(out.staging());
   write_text_atomically((dir / "dspbr_fits.hpp").string(), fit::generate_fits_header(sl, al, fl));
   write_text_atomically((dir / "dspbr_fits.glsl").string(), fit::generate_fits_shader(sl, al, fl, fit::ShaderDialect::Glsl));
   write_text_atomically((dir / "dspbr_fits.hlsl").string(), fit::generate_fits_shader(sl, al, fl, fit::ShaderDialect::Hlsl));
+  out.commit();
   std::printf("wrote %s/{%s}.json and dspbr_fits.{hpp,glsl,hlsl}\n", a.out.c_str(), fmt::format("{}", fmt::join(names, ",")).c_str());
 }
 
@@ -136,8 +146,8 @@ void add_fit_command(CLI::App& app) {
                   "flake_roughness (default: all)");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores); results do not depend on it")
       ->capture_default_str()
-      ->check(thread_count());
-  cmd->add_option("--seed", args->seed, "Seed of the QMC reference integrals")->capture_default_str()->check(non_negative_integer());
+      ->transform(thread_count());
+  cmd->add_option("--seed", args->seed, "Seed of the QMC reference integrals")->capture_default_str()->transform(non_negative_integer());
   cmd->add_flag("--quick", args->quick, "Small grids and sample counts (smoke tests; coarser error figures)");
   cmd->callback([args] { run(*args, "dspbr fit"); });
 }

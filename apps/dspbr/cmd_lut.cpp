@@ -14,6 +14,7 @@
 #include "interrupt_cleanup.h"
 #include "provenance.h"
 #include "dspbr/io/atomic_file.h"
+#include "dspbr/io/output_folder.h"
 #include "dspbr/lut/generate.h"
 #include "dspbr/lut/lookup_codegen.h"
 #include "dspbr/lut/lut_io.h"
@@ -146,30 +147,12 @@ LutFormats to_formats(const LutArgs& a) {
   return f;
 }
 
-// Creates the output folder if needed and checks that a file can be written into it, before any
-// work is done (so a bad --out costs nothing and leaves nothing behind).
-void prepare_output_folder(const std::string& dir) {
-  std::error_code ec;
-  const bool existed = fs::exists(dir, ec);
-  if (existed && !fs::is_directory(dir, ec)) throw UsageError("--out: '" + dir + "' exists and is not a folder");
-  fs::create_directories(dir, ec);
-  if (ec) throw UsageError("--out: cannot create folder '" + dir + "': " + ec.message());
-  const fs::path probe = fs::path(dir) / ".tmp-dspbr-write-probe";
-  FILE* f = std::fopen(probe.c_str(), "wb");
-  if (!f) {
-    if (!existed) fs::remove(dir, ec);
-    throw UsageError("--out: folder '" + dir + "' is not writable");
-  }
-  std::fclose(f);
-  fs::remove(probe, ec);
-}
-
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // The renderer layout (lut/renderer_luts.h): JSON, images, and the generated lookup code.
-void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& formats) {
+void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& formats, const std::string& dir) {
   const auto t0 = std::chrono::steady_clock::now();
   const RendererLuts luts = generate_renderer_luts(opt, a.renderer_scale);
   const double t_gen = seconds_since(t0);
@@ -179,15 +162,15 @@ void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& for
                   lut_settings(lut_name(Lut::GgxE), opt).target_error, opt.seed,
                   a.renderer_scale);
   if (formats.json)
-    write_text_atomically((fs::path(a.out) / "dspbr_renderer_luts.json").string(),
+    write_text_atomically((fs::path(dir) / "dspbr_renderer_luts.json").string(),
                           renderer_json_text(luts, opt, a.renderer_scale));
-  if (formats.exr || formats.png) write_renderer_images(luts, (fs::path(a.out) / "renderer").string(), formats.half, kSplitSumSize,
+  if (formats.exr || formats.png) write_renderer_images(luts, (fs::path(dir) / "renderer").string(), formats.half, kSplitSumSize,
                                                         opt.command);
   if (formats.hpp)
     for (LookupDialect d : {LookupDialect::C, LookupDialect::Glsl, LookupDialect::Hlsl}) {
-      write_text_atomically((fs::path(a.out) / lookup_file_name(d)).string(), lookup_code(luts, d, provenance));
+      write_text_atomically((fs::path(dir) / lookup_file_name(d)).string(), lookup_code(luts, d, provenance));
       if (luts.has_glass())
-        write_text_atomically((fs::path(a.out) / glass_lookup_file_name(d)).string(),
+        write_text_atomically((fs::path(dir) / glass_lookup_file_name(d)).string(),
                               glass_lookup_code(luts, d, provenance));
     }
   for (const char* name : luts.held_names()) {
@@ -220,15 +203,20 @@ void run_generate(const LutArgs& a) {
     else if (l == "renderer") renderer = true;
     else throw UsageError("--layout: unknown layout '" + l + "' (choose from published, renderer)");
   }
-  if (a.renderer_scale < 1 || a.renderer_scale > 16) throw UsageError("--renderer-scale must be in [1, 16]");
-  const InterruptCleanup cleanup(a.out);  // SIGINT/SIGTERM from here on: remove what the run created
-  prepare_output_folder(a.out);
-  if (renderer) run_renderer(a, opt, formats);
-  if (!published) return;
+  // Every file is written into a private staging folder inside --out and moved into place once
+  // the whole set is complete (io/output_folder.h); SIGINT/SIGTERM discard the staging folder.
+  OutputFolder out = open_output_folder(a.out);
+  const InterruptCleanup cleanup(out);
+  if (renderer) run_renderer(a, opt, formats, out.staging());
+  if (!published) {
+    out.commit();
+    return;
+  }
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<Table> tables = generate_luts(opt);
   const double t_gen = seconds_since(t0);
-  const std::vector<double> rounding = write_luts(tables, opt, a.out, formats);
+  const std::vector<double> rounding = write_luts(tables, opt, out.staging(), formats);
+  out.commit();
   for (size_t i = 0; i < tables.size(); ++i) {
     const Table& t = tables[i];
     double max_err = 0, max_v = -1e300;
@@ -246,7 +234,6 @@ void run_generate(const LutArgs& a) {
 // Point-of-use study: lookup errors of the committed published and renderer layouts and of the
 // fits against independent quadrature, furnaces built from the lookups (validate/lookup_study.h).
 void run_lookup_bench(const LutArgs& a) {
-  if (a.bench_points < 10 || a.bench_points > 100000) throw UsageError("--bench-points must be in [10, 100000]");
   const validate::LookupStudy s =
       validate::run_lookup_study(LutSet::published(), LutSet::builtin(), a.bench_points, a.seed);
   std::printf("%s\n", validate::lookup_study_markdown(s).c_str());
@@ -290,20 +277,22 @@ void add_lut_command(CLI::App& app) {
   cmd->add_option("--samples", args->samples,
                   "Maximum samples per cell, all randomizations together (default: 524288; 2097152 for the "
                   "averages); exactly this many with --target-error 0")
-      ->check(non_negative_integer());
+      ->transform(decimal_integer(1, INT_MAX, "a sample count"));
   cmd->add_option("--target-error", args->target_error,
                   "Error target per cell: quad's error estimate (default 1e-7), qmc/mc's standard error "
                   "(default 1e-5; 0: the fixed budget of --samples)");
   cmd->add_option("--randomizations", args->randomizations,
-                  "Independent randomizations per cell for the error estimate (default: 8)");
-  cmd->add_option("--seed", args->seed, "Random seed (default: 1)")->check(non_negative_integer());
-  cmd->add_option("--threads", args->threads, "Worker threads (default: 0 = all cores)")->check(thread_count());
+                  "Independent randomizations per cell for the error estimate (default: 8)")
+      ->transform(decimal_integer(2, 1024, "a randomization count"));
+  cmd->add_option("--seed", args->seed, "Random seed (default: 1)")->transform(non_negative_integer());
+  cmd->add_option("--threads", args->threads, "Worker threads (default: 0 = all cores)")->transform(thread_count());
   auto* layout_opt = cmd->add_option("--layout", args->layouts,
                   "Comma-separated layouts: published (the published grids: EXR, pbrlut.hpp, dspbr_luts.json) and "
                   "renderer (warped grids, Catmull-Rom lookups: dspbr_renderer_luts.json, renderer/*.exr|png, "
                   "dspbr_lookup.h|glsl|hlsl); default: both, or published alone with --tables/--scene/--size");
   cmd->add_option("--renderer-scale", args->renderer_scale,
-                  "Renderer layout: (N - 1) * scale + 1 samples per axis of the default N (default: 1)");
+                  "Renderer layout: (N - 1) * scale + 1 samples per axis of the default N (default: 1)")
+      ->transform(decimal_integer(1, 16, "a scale"));
   cmd->add_flag("--half", args->half, "Write EXRs as 16-bit half floats (default: 32-bit float)");
   cmd->add_flag("--quiet", args->quiet,
                 "No progress on stderr (default: a live line per table on a terminal, one plain line per table "
@@ -314,7 +303,8 @@ void add_lut_command(CLI::App& app) {
   cmd->add_flag("--bench-lookups", args->bench_lookups,
                 "Only the point-of-use part of --bench: lookup error of each layout and fit against quadrature, "
                 "white furnaces from the lookups (Markdown)");
-  cmd->add_option("--bench-points", args->bench_points, "Random points of the lookup study (default: 400)");
+  cmd->add_option("--bench-points", args->bench_points, "Random points of the lookup study (default: 400)")
+      ->transform(decimal_integer(10, 100000, "a point count"));
   cmd->add_flag("--bench-integrators", args->bench_integrators,
                 "Only the integrators' part of --bench: error against time per cell of qmc, mc and quad for each "
                 "table (Markdown)");

@@ -11,6 +11,8 @@
 
 #include "commands.h"
 #include "provenance.h"
+#include "dspbr/limits.h"
+#include "dspbr/io/json_write.h"
 #include "dspbr/io/read_file.h"
 #include "dspbr/params/material_instance.h"
 #include "dspbr/params/param_defs.h"
@@ -87,7 +89,7 @@ void add_params_command(CLI::App& app) {
         out["materials"].push_back({{"id", id}, {"name", m.name}, {"inherits", m.inherits}});
       }
       out["provenance"] = output_provenance();
-      std::cout << out.dump(2) << "\n";
+      std::cout << json_text(out, 2, "params --json") << "\n";
       return;
     }
     for (const auto& id : defs.material_ids()) {
@@ -119,7 +121,7 @@ void add_params_command(CLI::App& app) {
     if (opt->json) {
       nlohmann::ordered_json out = material_def_to_json(*m);
       out["provenance"] = output_provenance();
-      std::cout << out.dump(2) << "\n";
+      std::cout << json_text(out, 2, "params --json") << "\n";
     }
     else print_material(*m);
   });
@@ -134,7 +136,7 @@ void add_params_command(CLI::App& app) {
     for (const auto& path : opt->instances) {
       nlohmann::json doc;
       try {
-        doc = read_json_file(path, "material instance file");
+        doc = read_json_file(path, "material instance file", limits::kDocumentBytes);
       } catch (const std::exception& e) {
         ++bad;
         std::fprintf(stderr, "%s\n", e.what());  // names the file

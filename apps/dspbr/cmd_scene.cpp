@@ -7,6 +7,7 @@
 
 #include "commands.h"
 #include "provenance.h"
+#include "dspbr/io/json_write.h"
 #include "dspbr/params/material_params.h"
 #include "dspbr/scene/components.h"
 #include "dspbr/scene/scene_analysis.h"
@@ -49,7 +50,7 @@ void add_scene_command(CLI::App& app) {
     if (opt->json) {
       auto doc = scene_analysis_json(s, opt->parameters);
       doc["provenance"] = output_provenance();
-      std::cout << doc.dump(2) << "\n";
+      std::cout << json_text(doc, 2, "scene analyze --json") << "\n";
       return;
     }
     std::printf("%s: %zu material(s)\n", s.path.c_str(), s.materials.size());

@@ -16,6 +16,8 @@
 #include <tbb/global_control.h>
 
 #include "commands.h"
+#include "interrupt_cleanup.h"
+#include "dspbr/limits.h"
 #include "dspbr/io/read_file.h"
 #include "dspbr/lut/lut_set.h"
 #include "dspbr/validate/catalog.h"
@@ -65,12 +67,6 @@ std::string report_script() {
 }
 
 void run_validate(const ValidateArgs& a) {
-  namespace fs = std::filesystem;
-  if (a.out.empty()) throw UsageError("--out must name a folder");
-  std::error_code ec;
-  fs::create_directories(a.out, ec);
-  if (ec || !fs::is_directory(a.out))
-    throw UsageError("cannot create the output folder '" + a.out + "': " + (ec ? ec.message() : "not a folder"));
   const std::string script = a.html ? report_script() : std::string();
   std::unique_ptr<tbb::global_control> threads;
   if (a.threads > 0)
@@ -88,7 +84,7 @@ void run_validate(const ValidateArgs& a) {
   LutSet loaded;
   if (!a.luts.empty()) {
     try {
-      const std::string bytes = read_file(a.luts);  // read once: the tables and their provenance
+      const std::string bytes = read_file(a.luts, limits::kTableFileBytes);  // read once: the tables and their provenance
       loaded = LutSet::from_text(bytes, a.luts);
       s.table_file = validate::table_text_settings(bytes, a.luts);
     } catch (const std::exception& e) {
@@ -117,6 +113,10 @@ void run_validate(const ValidateArgs& a) {
       std::fprintf(stderr, "dspbr validate: tables skipped: %s\n", e.what());
     }
   }
+  // The report is written into a private staging folder inside --out and moved into place once
+  // complete (io/output_folder.h); a refused or interrupted run leaves --out as it was.
+  OutputFolder out = open_output_folder(a.out);
+  const InterruptCleanup cleanup(out);
   validate::CatalogOptions co;
   co.quick = a.quick;
   co.seed = a.seed;
@@ -128,16 +128,17 @@ void run_validate(const ValidateArgs& a) {
   std::fprintf(stderr, "dspbr validate (%s): %zu cases, %zu stability corners, %zu furnace rows -> %s\n",
                a.quick ? "quick" : "full", cat.cases.size(), cat.stability.size(), cat.furnace_rows.size(),
                a.out.c_str());
-  const validate::SuiteResult r = validate::run_suite(cat, checked, s, a.out);
+  const validate::SuiteResult r = validate::run_suite(cat, checked, s, out.staging());
 
   if (a.html) {
-    const std::string cmd = shell_quote(a.python) + " " + shell_quote(script) + " " + shell_quote(a.out);
+    const std::string cmd = shell_quote(a.python) + " " + shell_quote(script) + " " + shell_quote(out.staging());
     const int st = std::system(cmd.c_str());
     const int rc = (st != -1 && WIFEXITED(st)) ? WEXITSTATUS(st) : -1;
     if (rc != 0)
-      throw std::runtime_error(fmt::format("the report script failed (exit status {}): {}\n  (the data is in {}/data/report.json)",
+      throw std::runtime_error(fmt::format("the report script failed (exit status {}): {} (nothing was written to {})",
                                            rc, cmd, a.out));
   }
+  out.commit();
 
   // Summary on stdout.
   std::printf("validation (%s run, seed %llu): report in %s/%s\n", a.quick ? "quick" : "full",
@@ -182,7 +183,7 @@ void add_validate_command(CLI::App& app) {
   cmd->add_flag("--quick", args->quick, "Reduced run (seconds): fewer cases, directions and samples");
   cmd->add_option("--seed", args->seed, "Seed of every random stream (same seed -> same report)")
       ->capture_default_str()
-      ->check(non_negative_integer());
+      ->transform(non_negative_integer());
   cmd->add_option("--luts", args->luts, "Table file (dspbr_luts.json or dspbr_renderer_luts.json) the BSDF cases read; a published-layout file is also checked against the reference")
       ->check(CLI::ExistingFile);
   cmd->add_option("--tables", args->tables,
@@ -193,7 +194,7 @@ void add_validate_command(CLI::App& app) {
   cmd->add_flag("--no-html", [args](int64_t) { args->html = false; }, "Write only the data (data/report.json, images/)");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores); the report does not depend on it")
       ->capture_default_str()
-      ->check(thread_count());
+      ->transform(thread_count());
   cmd->add_flag("--allow-failures", args->allow_failures,
                 "Exit with status 0 even when checks fail (waived failures never fail the run)");
   cmd->callback([args] { run_validate(*args); });

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "dspbr/limits.h"
+#include "dspbr/io/message.h"
 
 namespace dspbr::cli {
 
@@ -22,32 +23,28 @@ struct UsageError : std::runtime_error {
 // usage error "--seed: ...", exit status 2).
 inline constexpr int kMaxThreads = limits::kThreads;
 
-// Digits only, below 2^64: CLI11 would convert "-1" to an unsigned option as 2^64 - 1 and clamp
-// larger numbers to it.
-inline CLI::Validator non_negative_integer() {
+// An integer option written in decimal digits, from lo to hi (docs/limits.md): CLI11 alone would
+// read "010" as octal 8, "0x10" as 16, convert "-1" to an unsigned option as 2^64 - 1 and clamp
+// larger numbers. Leading zeros are dropped ("010" is ten) before CLI11 converts the digits.
+inline CLI::Validator decimal_integer(unsigned long long lo, unsigned long long hi,
+                                     const std::string& meaning = "an integer") {
   return CLI::Validator(
-      [](std::string& s) -> std::string {
-        const bool digits = !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
+      [lo, hi, meaning](std::string& s) -> std::string {
+        const bool digits = !s.empty() && s.size() < 200 && s.find_first_not_of("0123456789") == std::string::npos;
         errno = 0;
-        if (!digits || (std::strtoull(s.c_str(), nullptr, 10) == ULLONG_MAX && errno == ERANGE))
-          return "must be a non-negative integer below 2^64, got '" + s + "'";
+        const unsigned long long v = digits ? std::strtoull(s.c_str(), nullptr, 10) : 0;
+        if (!digits || errno == ERANGE || v < lo || v > hi) return integer_range_message(meaning, lo, hi, s);
+        s = std::to_string(v);
         return "";
       },
-      ">= 0");
+      std::to_string(lo) + " to " + std::to_string(hi));
 }
 
+// Seeds: any 64-bit unsigned integer.
+inline CLI::Validator non_negative_integer() { return decimal_integer(0, ULLONG_MAX); }
+
 // --threads: 0 (all cores) to kMaxThreads.
-inline CLI::Validator thread_count() {
-  return CLI::Validator(
-      [](std::string& s) -> std::string {
-        const std::string v = s.substr(std::min(s.find_first_not_of('0'), s.size()));  // no leading zeros
-        if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || v.size() > 4 ||
-            (!v.empty() && std::stoi(v) > kMaxThreads))
-          return "must be a thread count from 0 (all cores) to " + std::to_string(kMaxThreads) + ", got '" + s + "'";
-        return "";
-      },
-      "0 to " + std::to_string(kMaxThreads));
-}
+inline CLI::Validator thread_count() { return decimal_integer(0, kMaxThreads, "a thread count (0: all cores)"); }
 
 void add_lut_command(CLI::App& app);       // cmd_lut.cpp      (tables)
 void add_eval_commands(CLI::App& app);     // cmd_eval.cpp     (eval, sample)

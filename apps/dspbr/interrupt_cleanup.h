@@ -1,20 +1,24 @@
 // An interrupted run removes what it created and says so: while an InterruptCleanup lives,
-// SIGINT and SIGTERM make the command remove the output folder when the run created it, else
-// every file and folder the run created inside it (temporary files included; files that existed
-// before are kept, complete since outputs are renamed into place, io/atomic_file.h), print
-// "dspbr: interrupted (SIGINT): removed ..." on stderr and exit with status 128 + the signal
-// number (130 for SIGINT, 143 for SIGTERM).
+// SIGINT and SIGTERM discard the run's OutputFolder (io/output_folder.h: its staging folder and
+// the folders it created, nothing else), print "dspbr: interrupted (SIGINT): <what was removed>"
+// on stderr and exit with status 128 + the signal number (130 for SIGINT, 143 for SIGTERM). An
+// interrupt while the outputs are being moved into place waits until they all are.
 #pragma once
 #include <memory>
 #include <string>
 
+#include "dspbr/io/output_folder.h"
+
 namespace dspbr::cli {
+
+// The run's output folder for `option` (io/output_folder.h); a folder that cannot be used is a
+// UsageError (exit 2), checked before any work is done.
+OutputFolder open_output_folder(const std::string& dir, const std::string& option = "--out");
 
 class InterruptCleanup {
  public:
-  // Records what `dir` holds now (nothing when it does not exist yet) and installs the handlers.
-  explicit InterruptCleanup(const std::string& dir);
-  ~InterruptCleanup();  // restores the previous handlers
+  explicit InterruptCleanup(OutputFolder& out);  // installs the handlers
+  ~InterruptCleanup();                          // restores the previous handlers
   InterruptCleanup(const InterruptCleanup&) = delete;
   InterruptCleanup& operator=(const InterruptCleanup&) = delete;
 

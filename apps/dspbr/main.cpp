@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "dspbr/io/message.h"
 #include "dspbr/nearest_name.h"
 #include "dspbr/version.h"
 
@@ -95,13 +96,16 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // help, version
     std::string unknown = unknown_subcommand(app, argc, argv);
     if (unknown.empty()) unknown = unknown_option(app, argc, argv);
-    std::fprintf(stderr, "dspbr: error: %s\n", unknown.empty() ? e.what() : unknown.c_str());
+    std::fprintf(stderr, "dspbr: error: %s\n", dspbr::one_line(unknown.empty() ? e.what() : unknown).c_str());
     return 2;
   } catch (const dspbr::cli::UsageError& e) {
-    std::fprintf(stderr, "dspbr: error: %s\n", e.what());
+    std::fprintf(stderr, "dspbr: error: %s\n", dspbr::one_line(e.what()).c_str());
     return 2;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "dspbr: error: out of memory\n");
+    return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "dspbr: error: %s\n", e.what());
+    std::fprintf(stderr, "dspbr: error: %s\n", dspbr::one_line(e.what()).c_str());
     return 1;
   }
   return 0;

@@ -30,6 +30,17 @@ inline constexpr int kTableAxisSize = 4096;
 // Cells of one table (the product of its axis sizes), generated or read.
 inline constexpr std::size_t kTableCells = std::size_t(1) << 24;
 
+// Bytes of one input file, checked (fstat) before it is read; only regular files are read at
+// all (io/read_file.h). Parameter definitions, material instances and fit documents: the
+// largest committed one has 95 kB.
+inline constexpr std::uint64_t kDocumentBytes = std::uint64_t(16) << 20;
+// Table files of either layout: the committed renderer file has 2 MB; a table at the cell limit
+// written as JSON needs about 0.7 GB.
+inline constexpr std::uint64_t kTableFileBytes = std::uint64_t(1) << 30;
+// glTF and GLB files (read whole; the buffer files they name are only sized, never read): the
+// validation scenes have at most 64 kB.
+inline constexpr std::uint64_t kGltfBytes = std::uint64_t(256) << 20;
+
 // Worker threads (--threads, Python threads=): 0 means all cores; far above the cores of any
 // machine (TBB fails near INT_MAX).
 inline constexpr int kThreads = 1024;

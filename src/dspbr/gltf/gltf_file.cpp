@@ -1,12 +1,17 @@
+#include "dspbr/limits.h"
 #include "dspbr/gltf/gltf_file.h"
 
+#include "dspbr/gltf/gltf_uri.h"
+#include "dspbr/io/json_fields.h"
+#include "dspbr/io/message.h"
 #include "dspbr/io/read_file.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <memory>
+#include <sstream>
 #include <stdexcept>
 
 namespace dspbr::gltf {
@@ -25,16 +30,20 @@ std::uint32_t le32(const std::uint8_t* p) {
   return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
 }
 
+// An integer member of at least `min` (the glTF schema's "minimum"), `fallback` when absent and
+// not required.
 std::uint64_t count(const Json& obj, const char* key, const std::string& path, const std::string& where,
-                    std::uint64_t fallback, bool required) {
+                    std::uint64_t fallback, bool required, std::uint64_t min = 0) {
   if (!obj.contains(key)) {
     if (required) fail(path, where + " has no \"" + key + "\"");
     return fallback;
   }
   const Json& v = obj[key];
   if (!v.is_number_unsigned() && !(v.is_number_integer() && v.get<long long>() >= 0))
-    fail(path, where + ": \"" + key + "\" must be a non-negative integer, got " + v.dump());
-  return v.get<std::uint64_t>();
+    fail(path, where + ": \"" + key + "\" must be a non-negative integer, got " + json_fields::excerpt(v));
+  const std::uint64_t n = v.get<std::uint64_t>();
+  if (n < min) fail(path, where + ": \"" + key + "\" must be at least " + std::to_string(min) + ", got " + std::to_string(n));
+  return n;
 }
 
 // Decoded size of a base64 "data:" URI payload (RFC 4648); throws on characters outside the alphabet.
@@ -55,9 +64,9 @@ std::uint64_t base64_size(const std::string& data, const std::string& path, cons
 
 // A Git LFS pointer file (https://github.com/git-lfs/git-lfs/blob/main/docs/spec.md): small text
 // starting with "version https://git-lfs.github.com/spec/v1" and holding "size <bytes>".
-bool is_lfs_pointer(const std::string& file, std::uint64_t file_size, std::uint64_t& announced) {
-  if (file_size > 1024) return false;  // pointers are ~130 bytes; the spec caps them at 1024
-  std::ifstream in(file);
+bool is_lfs_pointer(const RegularFile& file, std::uint64_t& announced) {
+  if (file.size() > 1024) return false;  // pointers are ~130 bytes; the spec caps them at 1024
+  std::istringstream in(file.read(1024));
   std::string line;
   if (!std::getline(in, line) || line.rfind("version https://git-lfs.github.com/spec/", 0) != 0) return false;
   while (std::getline(in, line))
@@ -72,19 +81,16 @@ bool is_lfs_pointer(const std::string& file, std::uint64_t file_size, std::uint6
   return false;
 }
 
-std::string percent_decode(const std::string& uri) {
-  std::string out;
-  for (std::size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
-        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
-      out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
-      out += uri[i];
-    }
+// The file a local (non-data:) URI names, confined to the glTF's folder (gltf_uri.h).
+std::string local_file(const std::string& path, const std::string& where, const std::string& uri) {
+  try {
+    return resolve_local_uri(path, uri);
+  } catch (const std::invalid_argument& e) {
+    fail(path, where + ": " + e.what());
   }
-  return out;
 }
+
+std::uint64_t element_size(const Json& a, const std::string& path, const std::string& where);
 
 void check_buffers(GltfFile& f, std::uint64_t bin_chunk_size, bool has_bin) {
   const std::string& path = f.path;
@@ -107,13 +113,12 @@ void check_buffers(GltfFile& f, std::uint64_t bin_chunk_size, bool has_bin) {
     if (b >= buffers.size()) fail(path, where + " refers to buffer " + std::to_string(b) + ", which does not exist");
     used[b] = true;
   }
-  const std::string dir = std::filesystem::path(path).parent_path().string();
   f.buffer_sizes.assign(buffers.size(), 0);
   for (std::size_t i = 0; i < buffers.size(); ++i) {
     const Json& buf = buffers[i];
     const std::string where = "buffers[" + std::to_string(i) + "]";
     if (!buf.is_object()) fail(path, where + " must be an object");
-    const std::uint64_t declared = count(buf, "byteLength", path, where, 0, true);
+    const std::uint64_t declared = count(buf, "byteLength", path, where, 0, true, 1);
     std::uint64_t available = 0;
     if (!buf.contains("uri")) {
       // GLB: the first buffer without uri is the BIN chunk (glTF 2.0, "Binary buffer").
@@ -132,23 +137,24 @@ void check_buffers(GltfFile& f, std::uint64_t bin_chunk_size, bool has_bin) {
           fail(path, where + ": only base64 data URIs are supported");
         available = base64_size(uri.substr(comma + 1), path, where);
       } else if (uri.find("://") != std::string::npos) {
-        if (used[i]) fail(path, where + ": external URI '" + uri + "' is not a local file");
+        if (used[i]) fail(path, where + ": external URI '" + quote_input(uri) + "' is not a local file");
         continue;
       } else {
-        const std::string file = (std::filesystem::path(dir) / percent_decode(uri)).string();
-        std::error_code ec;
-        const auto size = std::filesystem::file_size(file, ec);
-        if (ec || !std::ifstream(file, std::ios::binary)) {
-          if (used[i]) fail(path, where + ": cannot read buffer file '" + file + "'");
+        const std::string file = local_file(path, where, uri);
+        std::unique_ptr<RegularFile> opened;
+        try {
+          opened = std::make_unique<RegularFile>(file);
+        } catch (const std::runtime_error& e) {
+          if (used[i]) fail(path, where + ": cannot read buffer file '" + quote_input(uri) + "': " + e.what());
           continue;
         }
-        available = size;
+        available = opened->size();
         std::uint64_t lfs_size = 0;
-        if (is_lfs_pointer(file, size, lfs_size)) {
+        if (is_lfs_pointer(*opened, lfs_size)) {
           if (used[i] && lfs_size < declared)
-            fail(path, where + ": '" + uri + "' is a Git LFS pointer to " + std::to_string(lfs_size) +
+            fail(path, where + ": '" + quote_input(uri) + "' is a Git LFS pointer to " + std::to_string(lfs_size) +
                            " bytes, less than the declared byteLength " + std::to_string(declared));
-          f.warnings.push_back(where + ": '" + uri + "' is a Git LFS pointer (" + std::to_string(lfs_size) +
+          f.warnings.push_back(where + ": '" + quote_input(uri) + "' is a Git LFS pointer (" + std::to_string(lfs_size) +
                                " bytes not fetched): geometry unavailable, materials unaffected");
           available = lfs_size;
         }
@@ -164,20 +170,130 @@ void check_buffers(GltfFile& f, std::uint64_t bin_chunk_size, bool has_bin) {
     const std::string where = "bufferViews[" + std::to_string(i) + "]";
     const std::uint64_t b = count(views[i], "buffer", path, where, 0, true);
     const std::uint64_t off = count(views[i], "byteOffset", path, where, 0, false);
-    const std::uint64_t len = count(views[i], "byteLength", path, where, 0, true);
+    const std::uint64_t len = count(views[i], "byteLength", path, where, 0, true, 1);
     if (off > f.buffer_sizes[b] || len > f.buffer_sizes[b] - off)  // off + len may wrap around 2^64
       fail(path, where + " (bytes " + std::to_string(off) + ".." + std::to_string(off + len) + ") lies outside buffer " +
                      std::to_string(b) + " (" + std::to_string(f.buffer_sizes[b]) + " bytes)");
     view_sizes[i] = len;
   }
+  std::vector<std::uint64_t> view_strides(views.size());
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    const std::string where = "bufferViews[" + std::to_string(i) + "]";
+    view_strides[i] = count(views[i], "byteStride", path, where, 0, false, 4);
+    if (view_strides[i] > 252 || view_strides[i] % 4 != 0)
+      fail(path, where + ": \"byteStride\" must be a multiple of 4 from 4 to 252, got " + std::to_string(view_strides[i]));
+  }
   for (std::size_t i = 0; i < accessors.size(); ++i) {
     const std::string where = "accessors[" + std::to_string(i) + "]";
-    if (!accessors[i].is_object()) fail(path, where + " must be an object");
-    if (!accessors[i].contains("bufferView")) continue;  // all zeros (or sparse): no storage
-    const std::uint64_t v = count(accessors[i], "bufferView", path, where, 0, true);
+    const Json& a = accessors[i];
+    if (!a.is_object()) fail(path, where + " must be an object");
+    const std::uint64_t n = count(a, "count", path, where, 0, true, 1);
+    const std::uint64_t element = element_size(a, path, where);
+    if (!a.contains("bufferView")) continue;  // all zeros (or sparse): no storage
+    const std::uint64_t v = count(a, "bufferView", path, where, 0, true);
     if (v >= views.size()) fail(path, where + " refers to bufferView " + std::to_string(v) + ", which does not exist");
-    const std::uint64_t off = count(accessors[i], "byteOffset", path, where, 0, false);
-    if (off > view_sizes[v]) fail(path, where + ": byteOffset lies outside bufferView " + std::to_string(v));
+    const std::uint64_t off = count(a, "byteOffset", path, where, 0, false);
+    // The last element ends at off + stride * (count - 1) + element (glTF 2.0, 3.6.2.4), within
+    // the view; compared without overflow.
+    const std::uint64_t stride = view_strides[v] ? view_strides[v] : element, size = view_sizes[v];
+    if (off > size || element > size - off || (n - 1) > (size - off - element) / stride)
+      fail(path, where + ": " + std::to_string(n) + " elements of " + std::to_string(element) + " bytes from byteOffset " +
+                     std::to_string(off) + " do not fit in bufferView " + std::to_string(v) + " (" + std::to_string(size) +
+                     " bytes)");
+  }
+}
+
+// Bytes of one accessor element (glTF 2.0, 3.6.2: componentType and type).
+std::uint64_t element_size(const Json& a, const std::string& path, const std::string& where) {
+  const std::uint64_t ct = count(a, "componentType", path, where, 0, true);
+  const std::uint64_t component = ct == 5120 || ct == 5121 ? 1 : ct == 5122 || ct == 5123 ? 2 : ct == 5125 || ct == 5126 ? 4 : 0;
+  if (component == 0) fail(path, where + ": \"componentType\" " + std::to_string(ct) + " is not a glTF component type");
+  if (!a.contains("type") || !a["type"].is_string()) fail(path, where + ": \"type\" must be a string (SCALAR, VEC2, ...)");
+  static const std::pair<const char*, int> kTypes[] = {{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4},
+                                                       {"MAT2", 4},   {"MAT3", 9}, {"MAT4", 16}};
+  for (const auto& [name, n] : kTypes)
+    if (a["type"] == name) return component * std::uint64_t(n);
+  fail(path, where + ": \"type\" " + json_fields::excerpt(a["type"]) + " is not a glTF accessor type");
+}
+
+// An index member (glTF "glTFid") that must name an element of the top-level array `target`.
+void check_index(const Json& j, const Json& obj, const char* key, const char* target, const std::string& path,
+                 const std::string& where) {
+  if (!obj.is_object() || !obj.contains(key)) return;
+  const std::uint64_t n = j.contains(target) && j[target].is_array() ? j[target].size() : 0;
+  const std::uint64_t i = count(obj, key, path, where, 0, true);
+  if (i >= n) fail(path, where + ": \"" + key + "\" refers to " + target + "[" + std::to_string(i) + "], which does not exist");
+}
+
+// Each element of the array member `key` of `obj` (when present), which must be an array.
+template <class F>
+void each(const Json& obj, const char* key, const std::string& path, const std::string& where, F f) {
+  if (!obj.is_object() || !obj.contains(key)) return;
+  const Json& arr = obj[key];
+  if (!arr.is_array()) fail(path, where + ": \"" + key + "\" must be an array");
+  for (std::size_t i = 0; i < arr.size(); ++i) f(arr[i], where + (where.empty() ? "" : ".") + key + "[" + std::to_string(i) + "]");
+}
+
+// The references between top-level arrays (glTF 2.0 schema: indices within their arrays) and
+// the "extensions" members, which are objects of objects wherever they appear.
+void check_references(const Json& j, const std::string& path) {
+  each(j, "meshes", path, "", [&](const Json& mesh, const std::string& w) {
+    each(mesh, "primitives", path, w, [&](const Json& prim, const std::string& wp) {
+      if (!prim.is_object()) fail(path, wp + " must be an object");
+      check_index(j, prim, "indices", "accessors", path, wp);
+      check_index(j, prim, "material", "materials", path, wp);
+      if (prim.contains("attributes")) {
+        if (!prim["attributes"].is_object()) fail(path, wp + ": \"attributes\" must be an object");
+        for (const auto& [name, v] : prim["attributes"].items())
+          check_index(j, prim["attributes"], name.c_str(), "accessors", path, wp + ".attributes");
+      }
+    });
+  });
+  each(j, "nodes", path, "", [&](const Json& node, const std::string& w) {
+    check_index(j, node, "mesh", "meshes", path, w);
+    check_index(j, node, "camera", "cameras", path, w);
+    check_index(j, node, "skin", "skins", path, w);
+    each(node, "children", path, w, [&](const Json& c, const std::string& wc) {
+      check_index(j, Json{{"node", c}}, "node", "nodes", path, wc);
+    });
+  });
+  each(j, "scenes", path, "", [&](const Json& scene, const std::string& w) {
+    each(scene, "nodes", path, w, [&](const Json& n, const std::string& wn) {
+      check_index(j, Json{{"node", n}}, "node", "nodes", path, wn);
+    });
+  });
+  check_index(j, j, "scene", "scenes", path, "the asset");
+  each(j, "textures", path, "", [&](const Json& t, const std::string& w) {
+    check_index(j, t, "source", "images", path, w);
+    check_index(j, t, "sampler", "samplers", path, w);
+  });
+  each(j, "images", path, "", [&](const Json& im, const std::string& w) {
+    if (!im.is_object()) fail(path, w + " must be an object");
+    check_index(j, im, "bufferView", "bufferViews", path, w);
+    if (im.contains("uri")) {
+      if (!im["uri"].is_string()) fail(path, w + ": \"uri\" must be a string");
+      const std::string uri = im["uri"].get<std::string>();
+      if (uri.rfind("data:", 0) != 0 && uri.find("://") == std::string::npos) local_file(path, w, uri);
+    }
+  });
+  // "extensions" (glTF 2.0, 3.12): an object whose members are objects, anywhere in the asset.
+  std::vector<std::pair<const Json*, std::string>> todo = {{&j, ""}};
+  while (!todo.empty()) {
+    const auto [v, w] = todo.back();
+    todo.pop_back();
+    if (v->is_object()) {
+      for (const auto& [key, member] : v->items()) {
+        const std::string wm = w.empty() ? key : w + "." + key;
+        if (key == "extensions") {
+          if (!member.is_object()) fail(path, quote_input(wm) + " must be an object, got " + json_fields::excerpt(member));
+          for (const auto& [name, ext] : member.items())
+            if (!ext.is_object()) fail(path, quote_input(wm + "." + name) + " must be an object, got " + json_fields::excerpt(ext));
+        }
+        if (key != "extras") todo.push_back({&member, wm});
+      }
+    } else if (v->is_array()) {
+      for (std::size_t i = 0; i < v->size(); ++i) todo.push_back({&(*v)[i], w + "[" + std::to_string(i) + "]"});
+    }
   }
 }
 
@@ -228,11 +344,12 @@ GltfFile parse_gltf(const std::vector<std::uint8_t>& bytes, const std::string& p
   if (!version.is_string() || version.get<std::string>().rfind("2.", 0) != 0)
     fail(path, "glTF asset version " + version.dump() + " is not supported (expected \"2.x\")");
   check_buffers(f, bin_size, has_bin);
+  check_references(f.json, path);
   return f;
 }
 
 GltfFile read_gltf(const std::string& path) {
-  const std::string bytes = read_file(path);
+  const std::string bytes = read_file(path, limits::kGltfBytes);
   return parse_gltf({bytes.begin(), bytes.end()}, path);
 }
 

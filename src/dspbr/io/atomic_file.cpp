@@ -1,7 +1,10 @@
 #include "dspbr/io/atomic_file.h"
 
+#include <stdlib.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -12,27 +15,31 @@ namespace fs = std::filesystem;
 
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
   const fs::path target(path);
-  if (target.has_parent_path()) {
-    std::error_code ec;
-    fs::create_directories(target.parent_path(), ec);
-    if (ec) throw std::runtime_error("cannot create folder '" + target.parent_path().string() + "': " + ec.message());
-  }
-  // Keep the extension last: image writers pick the format from it.
-  const fs::path tmp = target.parent_path() /
-                       (".tmp-" + std::to_string(::getpid()) + "-" + target.stem().string() + target.extension().string());
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  fs::create_directories(parent, ec);
+  if (ec) throw std::runtime_error("cannot create folder '" + parent.string() + "': " + ec.message());
+  std::string folder = (parent / ".dspbr-tmp-XXXXXX").string();
+  if (::mkdtemp(folder.data()) == nullptr)
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  // Keep the file name (and its extension last: image writers pick the format from it).
+  const fs::path tmp = fs::path(folder) / target.filename();
+  auto clean = [&] {
+    fs::remove(tmp, ec);
+    ::rmdir(folder.c_str());
+  };
   try {
     write(tmp.string());
   } catch (...) {
-    std::error_code ec;
-    fs::remove(tmp, ec);
+    clean();
     throw;
   }
-  std::error_code ec;
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw std::runtime_error("cannot write '" + path + "': " + ec.message());
+  if (::rename(tmp.c_str(), target.c_str()) != 0) {
+    const int err = errno;
+    clean();
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(err));
   }
+  ::rmdir(folder.c_str());
 }
 
 void write_text_atomically(const std::string& path, const std::string& text) {

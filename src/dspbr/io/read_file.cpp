@@ -1,32 +1,94 @@
 #include "dspbr/io/read_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
+#include <set>
 #include <stdexcept>
+#include <vector>
 
+#include "dspbr/io/json_fields.h"
+#include "dspbr/io/message.h"
 #include "dspbr/limits.h"
 
 namespace dspbr {
 
-namespace fs = std::filesystem;
+namespace {
 
-std::string read_file(const std::string& path) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (st.type() == fs::file_type::not_found) throw std::runtime_error(path + " does not exist");
-  if (st.type() == fs::file_type::directory) throw std::runtime_error(path + " is a directory");
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) throw std::runtime_error(path + " cannot be read: " + std::strerror(errno));
+[[noreturn]] void fail(const std::string& path, const std::string& what) { throw std::runtime_error(path + what); }
+
+const char* file_kind(mode_t mode) {
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a plain file";
+}
+
+std::string bytes_text(std::uint64_t n) {
+  char buf[32];
+  if (n >= (std::uint64_t(1) << 30)) std::snprintf(buf, sizeof buf, "%.1f GB", double(n) / double(1 << 30));
+  else if (n >= (std::uint64_t(1) << 20)) std::snprintf(buf, sizeof buf, "%.1f MB", double(n) / double(1 << 20));
+  else std::snprintf(buf, sizeof buf, "%llu bytes", static_cast<unsigned long long>(n));
+  return buf;
+}
+
+}  // namespace
+
+RegularFile::RegularFile(const std::string& path) : path_(path) {
+  // O_NONBLOCK: opening a FIFO without a writer would block; it is refused after fstat instead.
+  fd_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd_ < 0) {
+    const int err = errno;
+    if (err == ENOENT) fail(path, " does not exist");
+    if (err == ENXIO) fail(path, " is not a regular file (a socket or a device)");
+    fail(path, std::string(" cannot be read: ") + std::strerror(err));
+  }
+  struct stat st {};
+  if (::fstat(fd_, &st) != 0) {
+    const int err = errno;
+    ::close(fd_);
+    fail(path, std::string(" cannot be read: ") + std::strerror(err));
+  }
+  if (!S_ISREG(st.st_mode)) {
+    ::close(fd_);
+    if (S_ISDIR(st.st_mode)) fail(path, " is a directory");
+    fail(path, std::string(" is not a regular file (") + file_kind(st.st_mode) + ")");
+  }
+  size_ = static_cast<std::uint64_t>(st.st_size);
+}
+
+RegularFile::~RegularFile() { ::close(fd_); }
+
+std::string RegularFile::read(std::uint64_t max_bytes) const {
   std::string out;
+  out.reserve(static_cast<std::size_t>(std::min(size_, max_bytes)));
   char buf[65536];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) out.append(buf, n);
-  const bool failed = std::ferror(f);
-  const int err = errno;
-  std::fclose(f);
-  if (failed) throw std::runtime_error(path + " cannot be read: " + std::strerror(err));
+  while (out.size() < max_bytes) {
+    const ssize_t n = ::pread(fd_, buf, static_cast<std::size_t>(std::min<std::uint64_t>(sizeof buf, max_bytes - out.size())),
+                              static_cast<off_t>(out.size()));
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) fail(path_, std::string(" cannot be read: ") + std::strerror(errno));
+    if (n == 0) break;
+    out.append(buf, static_cast<std::size_t>(n));
+  }
+  return out;
+}
+
+std::string read_file(const std::string& path, std::uint64_t max_bytes) {
+  const RegularFile f(path);
+  // The size from fstat, and again while reading (a file that grows meanwhile).
+  auto too_large = [&](std::uint64_t n) {
+    fail(path, " is " + bytes_text(n) + ", larger than the limit of " + bytes_text(max_bytes) +
+                   " for this kind of file (docs/limits.md)");
+  };
+  if (f.size() > max_bytes) too_large(f.size());
+  std::string out = f.read(max_bytes + 1);
+  if (out.size() > max_bytes) too_large(out.size());
   return out;
 }
 
@@ -51,20 +113,6 @@ std::string sniff_format(std::string_view bytes) {
 }
 
 namespace {
-
-std::string printable(std::string_view s) {
-  std::string out;
-  for (unsigned char c : s) {
-    if (c >= 0x20 && c < 0x7f) {
-      out += static_cast<char>(c);
-    } else {
-      char hex[5];
-      std::snprintf(hex, sizeof hex, "\\x%02x", c);
-      out += hex;
-    }
-  }
-  return out;
-}
 
 // Throws when arrays and objects nest deeper than limits::kJsonDepth (before parsing: the parser
 // itself is iterative, but copies, merges and dumps of the document recurse per level). Brackets
@@ -91,6 +139,33 @@ void check_nesting(std::string_view text, const std::string& path) {
   }
 }
 
+// Where the parser is: one frame per open array or object, with the element being read.
+struct JsonCursor {
+  struct Frame {
+    bool array = false;
+    std::size_t index = 0;  // arrays: the element being read
+    std::string key;        // objects: the member being read
+    std::set<std::string> keys;
+  };
+  std::vector<Frame> frames;
+
+  // The JSON path of the first `n` frames' current elements ("tables.GGX_E.values[3]").
+  std::string path(std::size_t n) const {
+    std::string p;
+    for (std::size_t i = 0; i < n && i < frames.size(); ++i)
+      p = frames[i].array ? json_fields::index_path(p, frames[i].index)
+                          : json_fields::member_path(p, quote_input(frames[i].key));
+    return p;
+  }
+  std::string here() const {
+    const std::string p = path(frames.size());
+    return p.empty() ? "the top level" : p;
+  }
+  void element_done() {
+    if (!frames.empty() && frames.back().array) ++frames.back().index;
+  }
+};
+
 }  // namespace
 
 template <class Json>
@@ -98,15 +173,46 @@ Json parse_json(std::string_view text, const std::string& path, const std::strin
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) throw std::runtime_error(path + " is empty");
   if (const std::string format = sniff_format(text); !format.empty())
     throw std::runtime_error(path + " is not a " + what + " (it starts like " + format + ")");
+  // The parser takes a NUL byte for the end of the input (and would ignore what follows); JSON
+  // text holds none (RFC 8259: control characters in strings are escaped).
+  if (const auto nul = text.find('\0'); nul != std::string_view::npos)
+    throw std::runtime_error(path + ": a NUL byte at offset " + std::to_string(nul) + " (not JSON text)");
   check_nesting(text, path);
+  JsonCursor cursor;
+  using Event = nlohmann::json::parse_event_t;
+  const auto callback = [&](int, Event event, Json& parsed) {
+    switch (event) {
+      case Event::object_start: cursor.frames.push_back({}); break;
+      case Event::array_start: cursor.frames.push_back(JsonCursor::Frame{true, 0, {}, {}}); break;
+      case Event::key: {
+        auto& f = cursor.frames.back();
+        f.key = parsed.template get<std::string>();
+        // I-JSON (RFC 7493, 2.3): member names are unique.
+        if (!f.keys.insert(f.key).second)
+          throw std::runtime_error(path + ": duplicate key \"" + quote_input(f.key) + "\" in " +
+                                   (cursor.frames.size() > 1 ? cursor.path(cursor.frames.size() - 1) : "the top-level object"));
+        break;
+      }
+      case Event::object_end:
+      case Event::array_end:
+        cursor.frames.pop_back();
+        cursor.element_done();
+        break;
+      case Event::value: cursor.element_done(); break;
+    }
+    return true;
+  };
   try {
-    return Json::parse(text.begin(), text.end());
+    return Json::parse(text.begin(), text.end(), callback);
+  } catch (const nlohmann::json::out_of_range&) {
+    // The parser's only out_of_range while parsing: a number beyond double's range (1e999).
+    throw std::runtime_error(path + ": the number at " + cursor.here() + " overflows a double");
   } catch (const nlohmann::json::parse_error& e) {
     // nlohmann's message: "[json.exception.parse_error.101] parse error at line L, column C: ...".
     std::string detail = e.what();
     const std::string marker = "parse error at ";
     if (const auto pos = detail.find(marker); pos != std::string::npos) detail = "at " + detail.substr(pos + marker.size());
-    throw std::runtime_error(path + ": malformed JSON " + printable(detail));
+    throw std::runtime_error(path + ": malformed JSON " + quote_input(detail));
   }
 }
 

@@ -1,3 +1,4 @@
+#include "dspbr/io/json_write.h"
 #include "dspbr/lut/lut_io.h"
 
 #include <OpenImageIO/imageio.h>
@@ -262,11 +263,11 @@ std::string lut_json_text(const std::vector<Table>& tables, const LutOptions& op
     jt[t.name] = e;
   }
   j["tables"] = jt;
-  return j.dump(1) + "\n";
+  return json_text(j, 1, "table file") + "\n";
 }
 
 std::vector<Table> read_lut_json(const std::string& path) {
-  return read_lut_json_value(read_json_file(path, "table file"), path);
+  return read_lut_json_value(read_json_file(path, "table file", limits::kTableFileBytes), path);
 }
 
 std::vector<Table> read_lut_json_text(std::string_view text, const std::string& name) {

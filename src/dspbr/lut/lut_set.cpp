@@ -1,3 +1,4 @@
+#include "dspbr/limits.h"
 #include "dspbr/lut/lut_set.h"
 
 #include <nlohmann/json.hpp>
@@ -88,7 +89,7 @@ double LutSet::E_glass_avg(double r, double ior, bool inside) const {
 }
 
 LutSet LutSet::load(const std::string& json_path) {
-  return from_json(read_json_file(json_path, "table file"), json_path);
+  return from_json(read_json_file(json_path, "table file", limits::kTableFileBytes), json_path);
 }
 
 LutSet LutSet::from_text(std::string_view text, const std::string& name) {

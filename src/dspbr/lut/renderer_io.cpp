@@ -1,3 +1,4 @@
+#include "dspbr/io/json_write.h"
 #include "dspbr/lut/renderer_io.h"
 
 #include <OpenImageIO/imageio.h>
@@ -99,11 +100,11 @@ std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, 
     jt[name] = e;
   }
   j["tables"] = jt;
-  return j.dump(1) + "\n";
+  return json_text(j, 1, "renderer table file") + "\n";
 }
 
 RendererLuts read_renderer_json(const std::string& path) {
-  return read_renderer_json_value(read_json_file(path, "table file"), path);
+  return read_renderer_json_value(read_json_file(path, "table file", limits::kTableFileBytes), path);
 }
 
 RendererLuts read_renderer_json_text(std::string_view text, const std::string& name) {

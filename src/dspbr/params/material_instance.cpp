@@ -1,3 +1,4 @@
+#include "dspbr/limits.h"
 #include "dspbr/params/material_instance.h"
 
 #include <cmath>
@@ -184,7 +185,7 @@ Material material_from_instance(const ParamDefs& defs, const Json& instance) {
 }
 
 Material load_material_instance(const std::string& path) {
-  const Json doc = read_json_file(path, "material instance file");
+  const Json doc = read_json_file(path, "material instance file", limits::kDocumentBytes);
   const ParamDefs defs = default_param_defs();
   try {
     return material_from_instance(defs, doc);

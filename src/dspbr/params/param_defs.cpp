@@ -296,7 +296,7 @@ const char* param_type_name(ParamKind kind) {
 }
 
 ParamDefs ParamDefs::load(const std::string& path) {
-  return from_json(read_json_file<nlohmann::ordered_json>(path, "parameter definition file"), path);
+  return from_json(read_json_file<nlohmann::ordered_json>(path, "parameter definition file", limits::kDocumentBytes), path);
 }
 
 // Defined in the source CMake generates from data/dspbr/params-2025x.json.

@@ -1,3 +1,4 @@
+#include "dspbr/limits.h"
 #include "dspbr/scene/scene_analysis.h"
 
 #include <nlohmann/json.hpp>
@@ -36,7 +37,7 @@ void finish(MaterialAnalysis& a, SceneAnalysis& s, bool compensation) {
 }  // namespace
 
 SceneAnalysis analyze_scene(const std::string& path, bool transmission_compensation) {
-  const std::string bytes = read_file(path);
+  const std::string bytes = read_file(path, limits::kGltfBytes);
   SceneAnalysis s;
   s.path = path;
   const bool glb = bytes.rfind("glTF", 0) == 0;

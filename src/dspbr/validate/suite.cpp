@@ -1,3 +1,4 @@
+#include "dspbr/io/json_write.h"
 #include "dspbr/validate/suite.h"
 
 #include <tbb/parallel_for.h>
@@ -658,7 +659,7 @@ SuiteResult run_suite(const Catalog& cat, const LutSet* luts, const SuiteSetting
                        {"used", verdicts.waiver_uses[k]}});
   }
   report["waivers"] = waivers;
-  write_text_atomically(dir + "/data/report.json", report.dump(1));
+  write_text_atomically(dir + "/data/report.json", json_text(report, 1, "validation report"));
   SuiteResult r;
   r.failed_checks = failed;
   r.failures = verdicts.failures;

@@ -1,0 +1,20 @@
+// Where a glTF's URI may lead (docs/limits.md, "Confinement"): a buffer or image URI that is not
+// a data: URI names a file inside the glTF's own folder. The URI is percent-decoded (RFC 3986,
+// 2.1), must be a relative path, and is resolved component by component with lstat: ".." may not
+// leave the folder and a symbolic link is followed only while its target stays inside. Nothing
+// outside the folder is touched (not even stat), so no message can tell anything about it.
+#pragma once
+#include <string>
+
+namespace dspbr::gltf {
+
+// RFC 3986 percent-decoding; throws std::invalid_argument on a malformed escape or an encoded
+// NUL byte.
+std::string percent_decode(const std::string& uri);
+
+// The file `uri` names, inside the folder of the glTF at `gltf_path`. Throws
+// std::invalid_argument "URI '<uri>' <reason>" (absolute, leaves the glTF's folder, leaves it
+// through a symbolic link, too many links, malformed escape).
+std::string resolve_local_uri(const std::string& gltf_path, const std::string& uri);
+
+}  // namespace dspbr::gltf

@@ -1,0 +1,143 @@
+#include "dspbr/io/output_folder.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
+
+namespace dspbr {
+
+namespace fs = std::filesystem;
+
+struct OutputFolder::State {
+  std::string dir, staging;
+  std::vector<fs::path> created;  // folders this object made, outermost first
+  std::mutex mutex;
+  bool done = false;  // committed or discarded
+
+  // Removes the staging folder (made by this run, mode 0700: only its files are in it) and the
+  // created parents when they are empty (rmdir fails on anything else: nothing is lost).
+  std::string remove_own() {
+    std::error_code ec;
+    const std::uintmax_t n = staging.empty() ? 0 : fs::remove_all(staging, ec);
+    std::size_t parents = 0;
+    for (auto it = created.rbegin(); it != created.rend(); ++it)
+      if (::rmdir(it->c_str()) == 0) ++parents;
+    done = true;
+    std::string what = n > 1 ? "removed its unfinished outputs (" + std::to_string(n - 1) + " file(s) and folder(s))"
+                             : "nothing was written";
+    if (parents > 0) what += "; removed the " + std::to_string(parents) + " folder(s) it created ('" + dir + "')";
+    else if (!created.empty()) what += "; kept '" + dir + "' (not empty)";
+    return what;
+  }
+};
+
+OutputFolder::OutputFolder(const std::string& dir, const std::string& option) : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.dir = dir;
+  if (dir.empty()) throw std::invalid_argument(option + ": give a folder name");
+  std::error_code ec;
+  const fs::path target(dir);
+  if (fs::exists(target, ec) && !fs::is_directory(target, ec))
+    throw std::invalid_argument(option + ": '" + dir + "' exists and is not a folder");
+  // Create the missing folders one by one, outermost first, remembering them for discard().
+  std::vector<fs::path> missing;
+  for (fs::path p = fs::absolute(target, ec).lexically_normal(); !p.empty() && !fs::exists(p, ec);
+       p = p.parent_path()) {
+    if (p == p.parent_path()) break;
+    missing.push_back(p);
+  }
+  std::reverse(missing.begin(), missing.end());
+  for (const fs::path& p : missing) {
+    if (::mkdir(p.c_str(), 0777) != 0) {
+      const int err = errno;
+      s.remove_own();
+      throw std::invalid_argument(option + ": cannot create folder '" + p.string() + "': " + std::strerror(err));
+    }
+    s.created.push_back(p);
+  }
+  std::string templ = (target / ".dspbr-staging-XXXXXX").string();
+  if (::mkdtemp(templ.data()) == nullptr) {
+    const int err = errno;
+    s.remove_own();
+    throw std::invalid_argument(option + ": cannot write into folder '" + dir + "': " + std::strerror(err));
+  }
+  s.staging = templ;
+}
+
+OutputFolder::~OutputFolder() {
+  if (state_) discard();
+}
+
+const std::string& OutputFolder::dir() const { return state_->dir; }
+const std::string& OutputFolder::staging() const { return state_->staging; }
+
+namespace {
+
+// `p` is a real folder (lstat: not a symbolic link to one).
+bool is_real_folder(const fs::path& p) {
+  struct stat st {};
+  return ::lstat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+}  // namespace
+
+std::vector<std::string> OutputFolder::commit() {
+  State& s = *state_;
+  const std::lock_guard<std::mutex> lock(s.mutex);
+  if (s.done) throw std::logic_error("OutputFolder::commit after commit or discard");
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(s.staging, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec))
+    if (it->is_regular_file()) files.push_back(fs::relative(it->path(), s.staging).string());
+  std::sort(files.begin(), files.end());
+  // First every check and sub-folder, then the renames: a refused set moves no file at all.
+  for (const std::string& rel : files) {
+    // Sub-folders of the output folder: real folders, created when missing, never a link.
+    fs::path folder = fs::path(s.dir);
+    for (const fs::path& part : fs::path(rel).parent_path()) {
+      folder /= part;
+      if (::mkdir(folder.c_str(), 0777) == 0) {
+        s.created.push_back(folder);  // removed again (when empty) if the set is refused
+      } else if (errno != EEXIST) {
+        const int err = errno;
+        s.remove_own();
+        throw std::runtime_error("cannot create folder '" + folder.string() + "': " + std::strerror(err));
+      }
+      if (!is_real_folder(folder)) {
+        s.remove_own();
+        throw std::runtime_error("'" + folder.string() + "' is not a folder (a symbolic link or a file): nothing written");
+      }
+    }
+    // rename(2) replaces a file or a symbolic link, not a folder.
+    if (is_real_folder(fs::path(s.dir) / rel)) {
+      s.remove_own();
+      throw std::runtime_error("'" + (fs::path(s.dir) / rel).string() + "' is a folder: nothing written");
+    }
+  }
+  for (const std::string& rel : files) {
+    if (::rename((fs::path(s.staging) / rel).c_str(), (fs::path(s.dir) / rel).c_str()) != 0) {
+      const int err = errno;
+      s.remove_own();
+      throw std::runtime_error("cannot move '" + rel + "' into '" + s.dir + "': " + std::strerror(err));
+    }
+  }
+  fs::remove_all(s.staging, ec);  // the emptied staging folders
+  s.done = true;
+  return files;
+}
+
+std::string OutputFolder::discard() {
+  State& s = *state_;
+  const std::lock_guard<std::mutex> lock(s.mutex);
+  if (s.done) return "the outputs were in place already";
+  return s.remove_own();
+}
+
+}  // namespace dspbr
