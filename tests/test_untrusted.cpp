@@ -1,0 +1,262 @@
+// Untrusted input (docs/limits.md: "Confinement", "Input files", "Messages", "Numbers on the
+// command line"): a glTF's URIs never reach outside its folder and no message tells anything
+// about a file there; glTF fields are checked as the schema says; no non-finite number is
+// written; command-line numbers are decimal; a refused run leaves no folder behind. Every input
+// is built by the test.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "dspbr/gltf/gltf_file.h"
+#include "dspbr/gltf/gltf_uri.h"
+#include "test_params_run.h"
+
+using namespace dspbr;
+using Json = nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path fresh(const std::string& name) {
+  const fs::path p = fs::path(::testing::TempDir()) / ("untrusted_" + name);
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  fs::create_directories(p.parent_path());
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+template <class F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// A usage error: exit status 2 and one line "dspbr: error: ..." containing `needle`.
+void expect_usage_error(const std::string& args, const std::string& needle) {
+  const ToolRun r = run_dspbr(args);
+  EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
+  EXPECT_EQ(r.output.rfind("dspbr: error: ", 0), 0u) << args << "\n" << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << "\n" << r.output;
+  EXPECT_NE(r.output.find(needle), std::string::npos) << args << "\n" << r.output;
+}
+
+// A minimal glTF 2.0 asset: one 24-byte buffer at `uri`, one view, one VEC3 float accessor of
+// `count` elements, one mesh using material 0.
+Json asset(const std::string& uri, const Json& count = 2) {
+  return Json{{"asset", {{"version", "2.0"}}},
+              {"buffers", {{{"byteLength", 24}, {"uri", uri}}}},
+              {"bufferViews", {{{"buffer", 0}, {"byteLength", 24}}}},
+              {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", count}, {"type", "VEC3"}}}},
+              {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"material", 0}}}}}}},
+              {"materials", {{{"name", "m"}}}}};
+}
+
+}  // namespace
+
+// Each URI is resolved inside the glTF's folder, component by component: what stays inside is
+// the file it names, what leaves (absolute, "..", percent-encoded "..", through a link) is refused.
+TEST(Untrusted, UrisResolveOnlyInsideTheGltfsFolder) {
+  const fs::path root = fresh("uris");
+  const fs::path scene = root / "scene";
+  write(scene / "sub" / "a.bin", std::string(24, 'a'));
+  write(root / "secret.bin", std::string(24, 's'));
+  fs::create_directory_symlink("sub", scene / "in");              // relative, stays inside
+  fs::create_directory_symlink(scene / "sub", scene / "in_abs");  // absolute, stays inside
+  fs::create_directory_symlink("..", scene / "out");              // relative, leaves
+  fs::create_symlink(root / "secret.bin", scene / "out_abs.bin");  // absolute, leaves
+  fs::create_symlink("loop", scene / "loop");
+  const std::string gltf = (scene / "s.gltf").string();
+  const std::string canon = fs::canonical(scene).string();
+  auto resolved = [&](const std::string& uri) { return gltf::resolve_local_uri(gltf, uri); };
+  EXPECT_EQ(resolved("sub/a.bin"), canon + "/sub/a.bin");
+  EXPECT_EQ(resolved("sub/../sub/./a.bin"), canon + "/sub/a.bin");
+  EXPECT_EQ(resolved("s%75b/a.bin"), canon + "/sub/a.bin");  // %75 is 'u'
+  EXPECT_EQ(resolved("in/a.bin"), canon + "/sub/a.bin");
+  EXPECT_EQ(resolved("in_abs/a.bin"), canon + "/sub/a.bin");
+  EXPECT_EQ(resolved("missing.bin"), canon + "/missing.bin");  // the reader says it does not exist
+  const std::pair<const char*, const char*> refused[] = {
+      {"/etc/passwd", "is an absolute path"},
+      {"../secret.bin", "leaves the glTF's folder"},
+      {"../../../../etc/passwd", "leaves the glTF's folder"},
+      {"..%2Fsecret.bin", "leaves the glTF's folder"},
+      {"%2E%2E/secret.bin", "leaves the glTF's folder"},
+      {"%2Fetc%2Fpasswd", "is an absolute path"},
+      {"sub/../../secret.bin", "leaves the glTF's folder"},
+      {"out/secret.bin", "leaves the glTF's folder"},
+      {"out_abs.bin", "leaves the glTF's folder through a symbolic link"},
+      {"loop", "more than 40 symbolic links"},
+      {"a%zz.bin", "malformed percent-encoding"},
+      {"a%2", "malformed percent-encoding"},
+      {"a%00.bin", "encodes a NUL byte"},
+      {"", "is empty"},
+  };
+  for (const auto& [uri, why] : refused) {
+    const std::string e = error_of([&] { resolved(uri); });
+    EXPECT_NE(e.find(why), std::string::npos) << uri << ": " << e;
+    EXPECT_EQ(e.rfind(std::string("URI '") + uri + "'", 0), 0u) << e;
+  }
+}
+
+// Through the command, the Python-free readers and `lut --scene`: one line naming the glTF and the
+// URI, exit 2, and the same words whether the file outside exists or not (no message tells).
+TEST(Untrusted, AnEscapingUriIsRefusedAndSaysNothingAboutTheFileOutside) {
+  const fs::path root = fresh("escape");
+  write(root / "secret.bin", std::string(24, 's'));
+  const fs::path scene = root / "scene";
+  const std::string there = (scene / "there.gltf").string(), absent = (scene / "absent.gltf").string();
+  write(there, asset("../secret.bin").dump());
+  write(absent, asset("../no_such.bin").dump());
+  const ToolRun a = run_dspbr("scene analyze " + there), b = run_dspbr("scene analyze " + absent);
+  EXPECT_EQ(a.status, 2) << a.output;
+  EXPECT_EQ(b.status, 2) << b.output;
+  EXPECT_EQ(a.output, "dspbr: error: " + there + ": buffers[0]: URI '../secret.bin' leaves the glTF's folder\n");
+  EXPECT_EQ(b.output, "dspbr: error: " + absent + ": buffers[0]: URI '../no_such.bin' leaves the glTF's folder\n");
+  for (const std::string uri : {"/etc/passwd", "..%2F..%2F..%2Fetc%2Fpasswd"}) {
+    const std::string path = (scene / "abs.gltf").string();
+    write(path, asset(uri).dump());
+    expect_usage_error("scene analyze " + path, path + ": buffers[0]: URI '" + uri + "'");
+    expect_usage_error("lut --scene " + path + " --out " + (root / "out").string(), path + ": buffers[0]: URI");
+    EXPECT_FALSE(fs::exists(root / "out"));
+  }
+  // Images too (they are never read, but their URIs are checked the same way).
+  Json doc = asset("data:application/octet-stream;base64,AAECAwQFBgcICQoLDA0ODxAREhMUFRYX");
+  doc["images"] = {{{"uri", "../secret.png"}}};
+  write(scene / "image.gltf", doc.dump());
+  expect_usage_error("scene analyze " + (scene / "image.gltf").string(), "images[0]: URI '../secret.png' leaves the glTF's folder");
+  // A buffer inside the folder is read as before.
+  write(scene / "geo.bin", std::string(24, 'g'));
+  write(scene / "ok.gltf", asset("geo.bin").dump());
+  const ToolRun ok = run_dspbr("scene analyze " + (scene / "ok.gltf").string());
+  EXPECT_EQ(ok.status, 0) << ok.output;
+}
+
+// glTF 2.0 schema: counts at least 1 and within their views, indices within their arrays,
+// extension members objects.
+TEST(Untrusted, GltfFieldsAreCheckedAsTheSchemaSays) {
+  const std::string data = "data:application/octet-stream;base64,AAECAwQFBgcICQoLDA0ODxAREhMUFRYX";
+  const fs::path dir = fresh("fields");
+  const std::string path = (dir / "f.gltf").string();
+  auto error = [&](const Json& doc) {
+    write(path, doc.dump());
+    return error_of([&] { gltf::read_gltf(path); });
+  };
+  EXPECT_EQ(error(asset(data)), "(no error)");
+  EXPECT_EQ(error(asset(data, 2)), "(no error)");  // 2 x 12 bytes: exactly the view
+  const std::pair<Json, std::string> counts[] = {
+      {-5, "accessors[0]: \"count\" must be a non-negative integer, got -5"},
+      {0, "accessors[0]: \"count\" must be at least 1, got 0"},
+      {3, "accessors[0]: 3 elements of 12 bytes from byteOffset 0 do not fit in bufferView 0 (24 bytes)"},
+      {Json(std::uint64_t(18446744073709551615ull)), "accessors[0]: 18446744073709551615 elements of 12 bytes from byteOffset 0 do not fit in bufferView 0 (24 bytes)"},
+      {1.5, "accessors[0]: \"count\" must be a non-negative integer, got 1.5"},
+  };
+  for (const auto& [count, why] : counts) EXPECT_EQ(error(asset(data, count)), path + ": " + why);
+  Json doc = asset(data);
+  doc["buffers"][0]["byteLength"] = 0;
+  EXPECT_EQ(error(doc), path + ": buffers[0]: \"byteLength\" must be at least 1, got 0");
+  doc = asset(data);
+  doc["accessors"][0]["byteOffset"] = 16;  // 16 + 12 + 12 > 24
+  EXPECT_NE(error(doc).find("do not fit in bufferView 0"), std::string::npos);
+  doc = asset(data);
+  doc["accessors"][0]["type"] = "VEC7";
+  EXPECT_EQ(error(doc), path + ": accessors[0]: \"type\" \"VEC7\" is not a glTF accessor type");
+  doc = asset(data);
+  doc["meshes"][0]["primitives"][0]["material"] = 9;
+  EXPECT_EQ(error(doc), path + ": meshes[0].primitives[0]: \"material\" refers to materials[9], which does not exist");
+  doc = asset(data);
+  doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 4;
+  EXPECT_NE(error(doc).find("\"NORMAL\" refers to accessors[4], which does not exist"), std::string::npos);
+  doc = asset(data);
+  doc["nodes"] = {{{"children", {7}}}};
+  EXPECT_NE(error(doc).find("nodes[0].children[0]: \"node\" refers to nodes[7]"), std::string::npos);
+  doc = asset(data);
+  doc["extensions"] = "KHR";
+  EXPECT_EQ(error(doc), path + ": extensions must be an object, got \"KHR\"");
+  doc = asset(data);
+  doc["materials"][0]["extensions"] = {{"KHR_materials_sheen", 3}};
+  EXPECT_EQ(error(doc), path + ": materials[0].extensions.KHR_materials_sheen must be an object, got 3");
+  doc = asset(data);
+  doc["materials"][0]["extras"] = {{"extensions", "anything"}};  // extras are the application's own
+  EXPECT_EQ(error(doc), "(no error)");
+}
+
+// `scene analyze --json` refuses to print a value that overflows (emission 1e308 x 1e308) instead
+// of writing null; a large finite value is printed.
+TEST(Untrusted, SceneAnalysisWritesNoNonFiniteNumber) {
+  const fs::path dir = fresh("nonfinite");
+  Json doc = asset("data:application/octet-stream;base64,AAECAwQFBgcICQoLDA0ODxAREhMUFRYX");
+  doc["materials"][0]["emissiveFactor"] = {1e308, 1e308, 1e308};
+  doc["materials"][0]["extensions"] = {{"KHR_materials_emissive_strength", {{"emissiveStrength", 1e308}}}};
+  doc["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+  const std::string path = (dir / "bright.gltf").string();
+  write(path, doc.dump());
+  const ToolRun r = run_dspbr("scene analyze --json --parameters " + path);
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_NE(r.output.find("is not finite (NaN or infinity); nothing written"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("null"), std::string::npos) << r.output;
+  doc["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = 1;
+  write(path, doc.dump());
+  const ToolRun ok = run_dspbr("scene analyze --json --parameters " + path);
+  EXPECT_EQ(ok.status, 0) << ok.output;
+  EXPECT_EQ(ok.output.find("null"), std::string::npos) << ok.output;
+}
+
+// Integers on the command line are decimal ("010" is ten, never octal eight), out-of-range ones
+// are named with their option, and --samples 0 is refused instead of meaning the default.
+TEST(Untrusted, CommandLineNumbersAreDecimal) {
+  const fs::path dir = fresh("decimal");
+  const std::string out = (dir / "t").string();
+  const ToolRun r = run_dspbr("lut --quiet --seed 010 --integrator qmc --samples 64 --tables GGX_E --size GGX_E=4x4 --formats json --out " + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::ifstream in(dir / "t" / "dspbr_luts.json");
+  const Json j = Json::parse(in);
+  EXPECT_EQ(j["seed"], 10) << j["seed"];
+  const std::string base = "lut --tables GGX_E --size GGX_E=4x4 --formats json --out " + (dir / "refused").string();
+  expect_usage_error(base + " --samples 0", "--samples: must be a sample count from 1 to 2147483647 (decimal digits), got '0'");
+  expect_usage_error(base + " --samples 99999999999", "--samples: must be a sample count from 1 to 2147483647 (decimal digits), got '99999999999'");
+  expect_usage_error(base + " --seed 0x10", "--seed: must be an integer from 0 to 18446744073709551615 (decimal digits), got '0x10'");
+  expect_usage_error(base + " --threads 1e3", "--threads:");
+  EXPECT_FALSE(fs::exists(dir / "refused"));
+  // A parameter too small for a normal double is a number (subnormal or zero), one beyond the
+  // range of a double is named.
+  const ToolRun tiny = run_dspbr("eval --set attenuationDistance=1e-308 --set transparency=1 --view 0,0,1 --light 0,0,-1");
+  EXPECT_EQ(tiny.status, 0) << tiny.output;
+  expect_usage_error("eval --set roughness=1e999 --view 0,0,1 --light 0,0,1", "parameter 'roughness': '1e999' is beyond the range of a double");
+  expect_usage_error("eval --set roughness=0x1p-2 --view 0,0,1 --light 0,0,1", "parameter 'roughness': '0x1p-2' is not a number");
+}
+
+// A refused validate (its table file malformed) leaves no output folder behind.
+TEST(Untrusted, ARefusedValidateLeavesNoFolder) {
+  const fs::path dir = fresh("validate");
+  const fs::path tables = fresh("validate_tables") / "tables.json";
+  write(tables, R"({"format": "dspbr_luts", "version": 1, "tables": {}})");
+  const std::string out = (dir / "a" / "report").string();
+  const ToolRun r = run_dspbr("validate --quick --no-html --luts " + tables.string() + " --out " + out);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(tables.string()), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_empty(dir)) << r.output;
+}
+
+// A file name with a newline or ESC stays on one line in the message (control characters escaped).
+TEST(Untrusted, ControlCharactersInAFileNameAreEscaped) {
+  const fs::path dir = fresh("names");
+  const std::string name = (dir / "a\nb\x1b[31m.gltf").string();
+  const ToolRun r = run_dspbr("scene analyze '" + name + "'");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(r.output, "dspbr: error: " + dir.string() + "/a\\x0ab\\x1b[31m.gltf does not exist\n");
+}
