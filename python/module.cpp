@@ -183,8 +183,10 @@ struct Triples {
 
 Triples triples_of(const py::object& obj, const char* name) {
   Triples t;
+  // The converting constructor, not Array::ensure (which swallows every error): a copy that does
+  // not fit in memory stays a MemoryError, anything else that is not numbers is the shape error.
   try {
-    t.a = Array::ensure(obj);
+    t.a = Array(obj);
   } catch (const py::error_already_set& e) {
     if (e.matches(PyExc_MemoryError)) throw;
   }

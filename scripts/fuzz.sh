@@ -2,7 +2,7 @@
 # Builds and runs the libFuzzer targets of fuzz/ (docs/limits.md, "Fuzzing"): clang++,
 # AddressSanitizer + UndefinedBehaviorSanitizer, a seed corpus from the project's own JSON and
 # glTF files, the dictionary fuzz/json.dict.
-#   bash scripts/fuzz.sh [SECONDS]        build, then run each target SECONDS (default 150: 10 min in all)
+#   bash scripts/fuzz.sh [SECONDS]        build, then run each target SECONDS (default 100: 10 min in all)
 #   bash scripts/fuzz.sh --build-only     configure and build only (the main build's dspbr_fuzz target)
 #   bash scripts/fuzz.sh --no-build SECONDS   run only (CTest fuzz_short)
 # Work folder: ${FUZZ_DIR:-${BUILD_DIR:-build}/fuzz} (build, corpora, artifacts, logs).
@@ -11,14 +11,14 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 work="${FUZZ_DIR:-${BUILD_DIR:-$here/build}/fuzz}"
-build=1 run=1 seconds=150
+build=1 run=1 seconds=100
 case "${1:-}" in
   --build-only) run=0 ;;
   --no-build) build=0; seconds="${2:-3}" ;;
   "") ;;
   *) seconds="$1" ;;
 esac
-targets=(params instance gltf luts)
+targets=(params instance gltf luts uri output)
 
 if ((build)); then
   cxx="${FUZZ_CXX:-$(command -v clang++ || true)}"
@@ -31,7 +31,7 @@ fi
 # Seed corpora (rebuilt each run from the sources; what the fuzzer adds goes to corpus/<target>).
 seeds="$work/seeds"
 rm -rf "$seeds"
-mkdir -p "$seeds"/{params,instance,gltf,luts}
+mkdir -p "$seeds"/{params,instance,gltf,luts,uri,output}
 cp "$here/data/dspbr/params-2025x.json" "$seeds/params/"
 for f in "$here"/tests/data/params/*.json; do
   if grep -q '"materials"' "$f"; then cp "$f" "$seeds/params/"; else cp "$f" "$seeds/instance/"; fi
@@ -55,6 +55,18 @@ for name in ("dspbr_luts.json", "dspbr_renderer_luts.json"):
         t["errors"] = t["errors"][:n]
     json.dump(doc, open(f"{dst}/{name}", "w"), indent=1)
 PY
+
+# URIs that stay inside, leave, or go through the links fuzz_uri plants; output sets for fuzz_output
+# (first byte: odd commits), some of them through the links it plants.
+i=0
+for u in sub/a.bin in/a.bin in_abs/a.bin ../secret.bin out/secret.bin out_abs/secret.bin sub/up2/secret.bin \
+         '..%2Fsecret.bin' '%2E%2E/x' sub/../sub/a.bin loop /etc/passwd 'a%00b'; do
+  printf '%s' "$u" >"$seeds/uri/$((i++))"
+done
+printf '1a.json\nrenderer/b.exr\nc.png\n' >"$seeds/output/0"
+printf '1x.json\ny/z.json\n' >"$seeds/output/1"
+printf '0a.json\nfile/q.json\n' >"$seeds/output/2"
+printf '1file\n' >"$seeds/output/3"
 
 mkdir -p "$work/artifacts" "$work/logs"
 # The short run (--no-build, CTest) starts from the seeds alone each time, so that it stays a few

@@ -36,6 +36,7 @@ bool inside(const fs::path& p, const fs::path& base) {
 std::string percent_decode(const std::string& uri) {
   std::string out;
   for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '\0') throw std::invalid_argument("holds a NUL byte");  // C paths end there: "..\0x" would be ".."
     if (uri[i] != '%') {
       out += uri[i];
       continue;

@@ -8,8 +8,8 @@
 
 namespace dspbr::gltf {
 
-// RFC 3986 percent-decoding; throws std::invalid_argument on a malformed escape or an encoded
-// NUL byte.
+// RFC 3986 percent-decoding; throws std::invalid_argument on a malformed escape or a NUL byte,
+// raw (a JSON string may hold \u0000) or encoded.
 std::string percent_decode(const std::string& uri);
 
 // The file `uri` names, inside the folder of the glTF at `gltf_path`. Throws
