@@ -116,9 +116,17 @@ TEST(Interrupt, LutKeepsWhatWasThereBefore) {
   std::ofstream(out / "sub" / "dspbr_luts.json") << "an older file";
   const std::set<std::string> before = listing(out);
   const LutRun r = start(out.string(), out.string() + ".log");
+  // Files another program writes into the folder while the run works are not the run's either,
+  // including one at the name of an output (the run once removed every file that appeared).
+  std::set<std::string> expected = before;
+  EXPECT_TRUE(wait_for([&] { return catches(r.pid, SIGINT); })) << read_all(r.log);
+  std::ofstream(out / "written_meanwhile.txt") << "someone else's";
+  std::ofstream(out / "dspbr_luts.json") << "someone else's table";
+  expected.insert({"written_meanwhile.txt", "dspbr_luts.json"});
   const int status = interrupt(r, out, SIGINT);
   EXPECT_EQ(status, 128 + SIGINT) << read_all(r.log);
-  EXPECT_EQ(listing(out), before);
+  EXPECT_EQ(listing(out), expected);
+  EXPECT_EQ(read_all((out / "dspbr_luts.json").string()), "someone else's table");
   EXPECT_EQ(read_all((out / "keep.txt").string()), "kept");
   EXPECT_NE(read_all(r.log).find("dspbr: interrupted (SIGINT): nothing was written\n"), std::string::npos)
       << read_all(r.log);

@@ -115,6 +115,9 @@ TEST(ReadFile, NulByteAndOverflowingNumbersAreNamed) {
   const std::string nul = write_bytes("nul.json", std::string("{}\0{\"hidden\": 1}", 16));
   EXPECT_EQ(error_of([&] { read_json_file(nul, "file", limits::kDocumentBytes); }),
             nul + ": a NUL byte at offset 2 (not JSON text)");
+  const std::string trailing = write_bytes("trailing.json", "{\"a\": 1} {\"b\": 2}");
+  EXPECT_EQ(error_of([&] { read_json_file(trailing, "file", limits::kDocumentBytes); }).rfind(trailing + ": malformed JSON at line 1, column 10: syntax error while parsing value - unexpected '{'; expected end of input", 0), 0u)
+      << error_of([&] { read_json_file(trailing, "file", limits::kDocumentBytes); });
   const std::string big = write_bytes("big.json", R"({"t": {"values": [1, 2, 1e999]}})");
   EXPECT_EQ(error_of([&] { read_json_file(big, "file", limits::kDocumentBytes); }),
             big + ": the number at t.values[2] overflows a double");
