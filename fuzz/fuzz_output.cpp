@@ -15,18 +15,15 @@
 #include <string>
 
 #include "dspbr/io/output_folder.h"
+#include "temp_folder.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
 const fs::path& root() {
-  static const fs::path dir = [] {
-    std::string t = (fs::temp_directory_path() / "dspbr-fuzz-output-XXXXXX").string();
-    if (!::mkdtemp(t.data())) std::abort();
-    return fs::path(t);
-  }();
-  return dir;
+  static const TempFolder dir("dspbr-fuzz-output");
+  return dir.path();
 }
 
 std::string listing(const fs::path& dir) {

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "dspbr/gltf/gltf_uri.h"
+#include "temp_folder.h"
 
 namespace fs = std::filesystem;
 
@@ -22,10 +23,9 @@ namespace {
 // root/scene/{sub/a.bin, in -> sub, in_abs -> <root>/scene/sub, out -> .., out_abs -> <root>,
 // loop -> loop}, root/secret.bin.
 const fs::path& scene() {
+  static const TempFolder scratch("dspbr-fuzz-uri");
   static const fs::path dir = [] {
-    std::string t = (fs::temp_directory_path() / "dspbr-fuzz-uri-XXXXXX").string();
-    if (!::mkdtemp(t.data())) std::abort();
-    const fs::path root = fs::canonical(t), s = root / "scene";
+    const fs::path root = scratch.path(), s = root / "scene";
     fs::create_directories(s / "sub" / "deeper");
     std::ofstream(s / "sub" / "a.bin") << "a";
     std::ofstream(root / "secret.bin") << "s";
