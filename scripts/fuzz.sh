@@ -6,6 +6,7 @@
 #   bash scripts/fuzz.sh --build-only     configure and build only (the main build's dspbr_fuzz target)
 #   bash scripts/fuzz.sh --no-build SECONDS   run only (CTest fuzz_short)
 # Work folder: ${FUZZ_DIR:-${BUILD_DIR:-build}/fuzz} (build, corpora, artifacts, logs).
+# FUZZ_TARGETS="gltf uri" runs only those targets (default: all six).
 # Exit status: 0 when no target crashed, hung (10 s per input), leaked past 2 GB or got a
 # sanitizer report; else 1, with the reproducer in <work folder>/artifacts/.
 set -euo pipefail
@@ -18,7 +19,7 @@ case "${1:-}" in
   "") ;;
   *) seconds="$1" ;;
 esac
-targets=(params instance gltf luts uri output)
+read -r -a targets <<<"${FUZZ_TARGETS:-params instance gltf luts uri output}"
 
 if ((build)); then
   cxx="${FUZZ_CXX:-$(command -v clang++ || true)}"
