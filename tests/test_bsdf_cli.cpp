@@ -29,13 +29,6 @@ Json run_json(const std::string& args) {
   }
 }
 
-void expect_usage_error(const std::string& args, const std::string& needle) {
-  const ToolRun r = run_dspbr(args);
-  EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
-  EXPECT_EQ(count_lines_with(r.output, "dspbr: error:"), 1) << r.output;
-  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
-  EXPECT_NE(r.output.find(needle), std::string::npos) << r.output;
-}
 
 std::string temp_file(const std::string& name, const std::string& text) {
   const std::string path = ::testing::TempDir() + "/" + name;

@@ -26,14 +26,6 @@ TEST(Cli, VersionPrintsProjectVersionAndGitDescription) {
 
 namespace {
 
-// A usage error: exit status 2 and one line "dspbr: error: ..." containing `needle`.
-void expect_usage_error(const std::string& args, const std::string& needle) {
-  const ToolRun r = run_dspbr(args);
-  EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
-  EXPECT_EQ(r.output.rfind("dspbr: error: ", 0), 0u) << args << "\n" << r.output;
-  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << "\n" << r.output;
-  EXPECT_NE(r.output.find(needle), std::string::npos) << args << "\n" << r.output;
-}
 
 std::string temp_path(const std::string& name) { return ::testing::TempDir() + "/cli_" + name; }
 

@@ -27,14 +27,6 @@ std::string temp_file(const std::string& name, const std::string& content) {
   return path;
 }
 
-// A usage error: exit status 2, one line "dspbr: error: ..." containing `needle`.
-void expect_usage_error(const std::string& args, const std::string& needle) {
-  const ToolRun r = run_dspbr(args);
-  EXPECT_EQ(r.status, 2) << args << "\n" << r.output.substr(0, 2000);
-  EXPECT_EQ(r.output.rfind("dspbr: error: ", 0), 0u) << args << "\n" << r.output.substr(0, 2000);
-  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << "\n" << r.output.substr(0, 2000);
-  EXPECT_NE(r.output.find(needle), std::string::npos) << args << "\n" << r.output.substr(0, 2000);
-}
 
 // `n` arrays nested inside each other.
 std::string nested(int n) { return std::string(std::size_t(n), '[') + std::string(std::size_t(n), ']'); }

@@ -1,8 +1,10 @@
 // Runs the built `dspbr` tool (DSPBR_EXE) for end-to-end CLI tests of the params / scene
 // commands: exit status and combined stdout+stderr.
 #pragma once
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <string>
@@ -37,4 +39,15 @@ inline int count_lines_with(const std::string& text, const std::string& needle) 
     start = end + 1;
   }
   return n;
+}
+
+// A usage error: exit status 2 and one line "dspbr: error: ..." containing `needle` (the output
+// shown cut to 2000 characters when the check fails).
+inline void expect_usage_error(const std::string& args, const std::string& needle) {
+  const ToolRun r = run_dspbr(args);
+  const std::string shown = args + "\n" + r.output.substr(0, 2000);
+  EXPECT_EQ(r.status, 2) << shown;
+  EXPECT_EQ(r.output.rfind("dspbr: error: ", 0), 0u) << shown;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << shown;
+  EXPECT_NE(r.output.find(needle), std::string::npos) << shown;
 }

@@ -46,14 +46,6 @@ std::string error_of(F f) {
   return "(no error)";
 }
 
-// A usage error: exit status 2 and one line "dspbr: error: ..." containing `needle`.
-void expect_usage_error(const std::string& args, const std::string& needle) {
-  const ToolRun r = run_dspbr(args);
-  EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
-  EXPECT_EQ(r.output.rfind("dspbr: error: ", 0), 0u) << args << "\n" << r.output;
-  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << "\n" << r.output;
-  EXPECT_NE(r.output.find(needle), std::string::npos) << args << "\n" << r.output;
-}
 
 // A minimal glTF 2.0 asset: one 24-byte buffer at `uri`, one view, one VEC3 float accessor of
 // `count` elements, one mesh using material 0.
