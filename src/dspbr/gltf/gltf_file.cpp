@@ -1,5 +1,6 @@
-#include "dspbr/limits.h"
 #include "dspbr/gltf/gltf_file.h"
+
+#include "dspbr/limits.h"
 
 #include "dspbr/gltf/gltf_uri.h"
 #include "dspbr/io/json_fields.h"
@@ -342,7 +343,7 @@ GltfFile parse_gltf(const std::vector<std::uint8_t>& bytes, const std::string& p
     fail(path, "not a glTF asset: missing \"asset\": {\"version\": \"2.0\"}");
   const Json& version = f.json["asset"]["version"];
   if (!version.is_string() || version.get<std::string>().rfind("2.", 0) != 0)
-    fail(path, "glTF asset version " + version.dump() + " is not supported (expected \"2.x\")");
+    fail(path, "glTF asset version " + json_fields::quoted(version) + " is not supported (expected \"2.x\")");
   check_buffers(f, bin_size, has_bin);
   check_references(f.json, path);
   return f;

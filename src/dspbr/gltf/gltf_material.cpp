@@ -10,6 +10,7 @@
 #include "dspbr/params/material_instance.h"
 #include "dspbr/params/material_params.h"
 #include "dspbr/params/param_defs.h"
+#include "dspbr/io/json_fields.h"
 
 namespace dspbr::gltf {
 
@@ -53,7 +54,7 @@ class Mapper {
 
   double number(const Json& obj, const char* key, double fallback, const std::string& prefix) const {
     if (!obj.contains(key)) return fallback;
-    if (!obj[key].is_number()) fail(prefix + key + " must be a number, got " + obj[key].dump());
+    if (!obj[key].is_number()) fail(prefix + key + " must be a number, got " + json_fields::quoted(obj[key]));
     const double x = obj[key].get<double>();
     if (!std::isfinite(x)) fail(prefix + key + " must be finite");
     return x;
@@ -65,10 +66,10 @@ class Mapper {
     if (!obj.contains(key)) return fallback;
     const Json& v = obj[key];
     if (!v.is_array() || v.size() != N)
-      fail(prefix + key + " must be an array of " + std::to_string(N) + " numbers, got " + v.dump());
+      fail(prefix + key + " must be an array of " + std::to_string(N) + " numbers, got " + json_fields::quoted(v));
     std::array<double, N> out{};
     for (std::size_t i = 0; i < N; ++i) {
-      if (!v[i].is_number()) fail(prefix + key + " must be an array of " + std::to_string(N) + " numbers, got " + v.dump());
+      if (!v[i].is_number()) fail(prefix + key + " must be an array of " + std::to_string(N) + " numbers, got " + json_fields::quoted(v));
       out[i] = v[i].get<double>();
       if (!std::isfinite(out[i])) fail(prefix + key + " must hold finite numbers");
     }
@@ -104,7 +105,7 @@ class Mapper {
     texture(pbr, "metallicRoughnessTexture", pp, {"metallic", "roughness"});
     // Alpha: BLEND uses alpha as coverage, MASK thresholds it at alphaCutoff, OPAQUE ignores it.
     if (mat_.contains("alphaMode") && !mat_["alphaMode"].is_string())
-      fail("alphaMode must be a string (OPAQUE, MASK or BLEND), got " + mat_["alphaMode"].dump());
+      fail("alphaMode must be a string (OPAQUE, MASK or BLEND), got " + json_fields::quoted(mat_["alphaMode"]));
     const std::string alpha_mode = mat_.value("alphaMode", std::string("OPAQUE"));
     if (alpha_mode == "BLEND") {
       m.cutoutOpacity = base[3];

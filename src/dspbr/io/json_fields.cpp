@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dspbr/io/message.h"
+
 namespace dspbr::json_fields {
 
 namespace {
@@ -34,6 +36,13 @@ std::string excerpt(const Json& v) {
   if (s.size() > 60) s = s.substr(0, 57) + "...";
   return s;
 }
+
+template <class J>
+std::string quoted(const J& v) {
+  return quote_input(v.dump(-1, ' ', false, J::error_handler_t::replace));
+}
+template std::string quoted<nlohmann::json>(const nlohmann::json&);
+template std::string quoted<nlohmann::ordered_json>(const nlohmann::ordered_json&);
 
 const Json& member(const Json& obj, const std::string& key, const std::string& where) {
   if (!obj.is_object()) fail(where.empty() ? "the document" : where, "must be an object, got " + excerpt(obj));

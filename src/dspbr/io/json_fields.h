@@ -15,6 +15,11 @@ std::string index_path(const std::string& where, std::size_t i);
 // A short excerpt of a value for messages (at most ~60 characters).
 std::string excerpt(const nlohmann::json& v);
 
+// A value quoted in a message as its JSON text, cut like other quoted input (io/message.h:
+// kQuoteChars characters, then "..."; invalid UTF-8 replaced, never an exception).
+template <class Json>
+std::string quoted(const Json& v);
+
 // obj[key]; throws "<where> must be an object" or "<where>.<key> is missing".
 const nlohmann::json& member(const nlohmann::json& obj, const std::string& key, const std::string& where);
 const nlohmann::json& object_member(const nlohmann::json& obj, const std::string& key, const std::string& where);

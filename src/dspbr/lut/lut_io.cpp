@@ -1,5 +1,6 @@
-#include "dspbr/io/json_write.h"
 #include "dspbr/lut/lut_io.h"
+
+#include "dspbr/io/json_write.h"
 
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>

@@ -1,5 +1,6 @@
-#include "dspbr/limits.h"
 #include "dspbr/lut/lut_set.h"
+
+#include "dspbr/limits.h"
 
 #include <nlohmann/json.hpp>
 #include <stdexcept>

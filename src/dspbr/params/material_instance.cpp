@@ -1,5 +1,6 @@
-#include "dspbr/limits.h"
 #include "dspbr/params/material_instance.h"
+
+#include "dspbr/limits.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -8,6 +9,8 @@
 #include "dspbr/io/read_file.h"
 #include "dspbr/params/material_params.h"
 #include "dspbr/params/param_defs.h"
+#include "dspbr/io/json_fields.h"
+#include "dspbr/io/message.h"
 
 namespace dspbr {
 
@@ -36,7 +39,7 @@ void check_value(const ParamDef& d, const Json& v, std::vector<std::string>& pro
     case ParamKind::Float: {
       double x = 0, lo = 0, hi = 0;
       if (!read_number(v, x)) {
-        problems.push_back(p + ": wrong type, expected a number (float), got " + v.dump());
+        problems.push_back(p + ": wrong type, expected a number (float), got " + json_fields::quoted(v));
         return;
       }
       read_number(d.min, lo);
@@ -57,7 +60,7 @@ void check_value(const ParamDef& d, const Json& v, std::vector<std::string>& pro
       if (!v.is_array()) {
         problems.push_back(p + ": wrong type, expected " +
                            (d.type == ParamKind::Color ? "a number (grey) or " : "") + "an array of 3 numbers (" +
-                           type + "), got " + v.dump());
+                           type + "), got " + json_fields::quoted(v));
         return;
       }
       if (v.size() != 3) {
@@ -67,14 +70,14 @@ void check_value(const ParamDef& d, const Json& v, std::vector<std::string>& pro
       double c[3];
       for (int i = 0; i < 3; ++i)
         if (!read_number(v[i], c[i])) {
-          problems.push_back(p + ": wrong type, component " + std::to_string(i) + " is not a number: " + v[i].dump());
+          problems.push_back(p + ": wrong type, component " + std::to_string(i) + " is not a number: " + json_fields::quoted(v[i]));
           return;
         }
       if (d.type == ParamKind::Normal) {
         // 1e-3: tolerance for unit length of a normal written with a few decimals.
         const double len = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
         if (!(std::abs(len - 1.0) <= 1e-3))
-          problems.push_back(p + ": normal " + v.dump() + " must have unit length (has " + show(len) + ")");
+          problems.push_back(p + ": normal " + json_fields::quoted(v) + " must have unit length (has " + show(len) + ")");
         return;
       }
       for (int i = 0; i < 3; ++i) {
@@ -82,25 +85,25 @@ void check_value(const ParamDef& d, const Json& v, std::vector<std::string>& pro
         read_number(d.min[i], lo);
         read_number(d.max[i], hi);
         if (c[i] < lo || c[i] > hi) {
-          problems.push_back(p + ": value " + v.dump() + " is out of range [" + d.min.dump() + ", " + d.max.dump() + "]");
+          problems.push_back(p + ": value " + json_fields::quoted(v) + " is out of range [" + json_fields::quoted(d.min) + ", " + json_fields::quoted(d.max) + "]");
           return;
         }
       }
       return;
     }
     case ParamKind::Boolean:
-      if (!v.is_boolean()) problems.push_back(p + ": wrong type, expected true or false (boolean), got " + v.dump());
+      if (!v.is_boolean()) problems.push_back(p + ": wrong type, expected true or false (boolean), got " + json_fields::quoted(v));
       return;
     case ParamKind::Enum: {
       std::string allowed;
       for (const auto& e : d.enum_values) allowed += (allowed.empty() ? "" : ", ") + e;
       if (!v.is_string()) {
-        problems.push_back(p + ": wrong type, expected one of " + allowed + " (enum string), got " + v.dump());
+        problems.push_back(p + ": wrong type, expected one of " + allowed + " (enum string), got " + json_fields::quoted(v));
         return;
       }
       for (const auto& e : d.enum_values)
         if (v.get<std::string>() == e) return;
-      problems.push_back(p + ": value " + v.dump() + " is not one of " + allowed);
+      problems.push_back(p + ": value " + json_fields::quoted(v) + " is not one of " + allowed);
       return;
     }
   }
@@ -121,10 +124,10 @@ std::vector<std::string> check_material_instance(const ParamDefs& defs, const Js
   }
   for (const auto& [key, _] : instance.items())
     if (key != "material" && key != "values")
-      problems.push_back("unknown key '" + key + "' (an instance has only \"material\" and \"values\")");
+      problems.push_back("unknown key '" + quote_input(key) + "' (an instance has only \"material\" and \"values\")");
   if (instance.contains("material") && !instance["material"].is_string()) {
     problems.push_back("\"material\" must be a string (the material type, e.g. \"glass\"), got " +
-                       instance["material"].dump());
+                       json_fields::quoted(instance["material"]));
     return problems;
   }
   if (!instance.contains("material")) {

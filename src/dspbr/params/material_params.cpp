@@ -11,6 +11,7 @@
 
 #include "dspbr/io/message.h"
 #include "dspbr/nearest_name.h"
+#include "dspbr/io/json_fields.h"
 
 namespace dspbr {
 
@@ -28,7 +29,7 @@ double json_number(const std::string& id, const Json& v) {
   if (v.is_number()) return v.get<double>();
   if (v.is_object() && v.size() == 1 && v.contains("infinity") && v["infinity"] == true)
     return std::numeric_limits<double>::infinity();
-  throw std::invalid_argument("parameter '" + id + "' expects a number, got " + v.dump());
+  throw std::invalid_argument("parameter '" + id + "' expects a number, got " + json_fields::quoted(v));
 }
 
 Json number_json(double x) {
@@ -38,7 +39,7 @@ Json number_json(double x) {
 
 std::array<double, 3> json_triple(const std::string& id, const Json& v) {
   if (!v.is_array() || v.size() != 3)
-    throw std::invalid_argument("parameter '" + id + "' expects an array of 3 numbers, got " + v.dump());
+    throw std::invalid_argument("parameter '" + id + "' expects an array of 3 numbers, got " + json_fields::quoted(v));
   std::array<double, 3> out{};
   for (int i = 0; i < 3; ++i) out[i] = json_number(id, v[i]);
   return out;
@@ -63,7 +64,7 @@ const std::map<std::string, Field>& fields() {
                  }
                  if (!v.is_array() || v.size() != 3)
                    throw std::invalid_argument("parameter '" + std::string(id) +
-                                               "' expects a number (grey) or an array of 3 numbers, got " + v.dump());
+                                               "' expects a number (grey) or an array of 3 numbers, got " + json_fields::quoted(v));
                  const auto a = json_triple(id, v);
                  m.*mem = Rgb(a[0], a[1], a[2]);
                }};
@@ -79,7 +80,7 @@ const std::map<std::string, Field>& fields() {
       t[id] = {ParamKind::Boolean, [mem](const Material& m) { return Json(m.*mem); },
                [mem, id](Material& m, const Json& v) {
                  if (!v.is_boolean())
-                   throw std::invalid_argument(std::string("parameter '") + id + "' expects true or false, got " + v.dump());
+                   throw std::invalid_argument(std::string("parameter '") + id + "' expects true or false, got " + json_fields::quoted(v));
                  m.*mem = v.get<bool>();
                }};
     };
@@ -120,7 +121,7 @@ const std::map<std::string, Field>& fields() {
         [](Material& m, const Json& v) {
           if (v == "LUMINOUS_EMITTANCE") m.emissionMode = EmissionMode::LuminousEmittance;
           else if (v == "LUMINOUS_POWER") m.emissionMode = EmissionMode::LuminousPower;
-          else throw std::invalid_argument("parameter 'emissionMode' expects \"LUMINOUS_EMITTANCE\" or \"LUMINOUS_POWER\", got " + v.dump());
+          else throw std::invalid_argument("parameter 'emissionMode' expects \"LUMINOUS_EMITTANCE\" or \"LUMINOUS_POWER\", got " + json_fields::quoted(v));
         }};
     add_bool("emissionEnergyNormalization", &Material::emissionEnergyNormalization);
     add_bool("thinWalled", &Material::thinWalled);

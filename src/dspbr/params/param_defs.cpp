@@ -2,6 +2,7 @@
 
 #include "dspbr/io/read_file.h"
 #include "dspbr/limits.h"
+#include "dspbr/io/json_fields.h"
 
 #include <algorithm>
 #include <climits>
@@ -80,13 +81,13 @@ struct RefResolver {
         fail(source, "circular or too deep \"$ref\" chain (more than " + std::to_string(limits::kRefDepth) + " nested)");
       const Json& ref = node["$ref"];
       if (!ref.is_string() || ref.get<std::string>().rfind("#/", 0) != 0)
-        fail(source, "\"$ref\" must be a string \"#/...\" pointing into the same file, got " + ref.dump());
+        fail(source, "\"$ref\" must be a string \"#/...\" pointing into the same file, got " + json_fields::quoted(ref));
       const std::string pointer = ref.get<std::string>().substr(1);
       Json target;
       try {
         target = doc.at(Json::json_pointer(pointer));
       } catch (const std::exception&) {
-        fail(source, "\"$ref\" " + ref.dump() + " points to nothing");
+        fail(source, "\"$ref\" " + json_fields::quoted(ref) + " points to nothing");
       }
       --values;  // the reference itself is replaced
       resolve(target, ref_depth + 1, level);
@@ -147,25 +148,25 @@ Json typed_value(const Json& v, ParamKind type, const std::string& what, const s
   double x = 0;
   switch (type) {
     case ParamKind::Float:
-      if (!read_number(v, x)) fail(source, what + " must be a number or {\"infinity\": true}, got " + v.dump());
+      if (!read_number(v, x)) fail(source, what + " must be a number or {\"infinity\": true}, got " + json_fields::quoted(v));
       return number_json(x);
     case ParamKind::Color:
     case ParamKind::Normal:
     case ParamKind::Vector: {
-      if (!v.is_array() || v.size() != 3) fail(source, what + " must be an array of 3 numbers, got " + v.dump());
+      if (!v.is_array() || v.size() != 3) fail(source, what + " must be an array of 3 numbers, got " + json_fields::quoted(v));
       Json out = Json::array();
       for (const auto& c : v) {
-        if (!read_number(c, x)) fail(source, what + " must be an array of 3 numbers, got " + v.dump());
+        if (!read_number(c, x)) fail(source, what + " must be an array of 3 numbers, got " + json_fields::quoted(v));
         out.push_back(number_json(x));
       }
       return out;
     }
     case ParamKind::Boolean:
-      if (!v.is_boolean()) fail(source, what + " must be true or false, got " + v.dump());
+      if (!v.is_boolean()) fail(source, what + " must be true or false, got " + json_fields::quoted(v));
       return v;
     case ParamKind::Enum:
       if (!v.is_string() || std::find(enum_values.begin(), enum_values.end(), v.get<std::string>()) == enum_values.end())
-        fail(source, what + " must be one of the parameter's \"enum\" values, got " + v.dump());
+        fail(source, what + " must be one of the parameter's \"enum\" values, got " + json_fields::quoted(v));
       return v;
   }
   return v;
@@ -180,7 +181,7 @@ ParamDef make_param(const std::string& mat, const std::string& id, const Json& p
   if (!p.contains("type") || !p["type"].is_string())
     fail(source, where + " has no \"type\" (float, color, normal, vector, boolean or enum)");
   if (!parse_type(p["type"].get<std::string>(), d.type))
-    fail(source, where + " has unknown type " + p["type"].dump() + " (expected float, color, normal, vector, boolean or enum)");
+    fail(source, where + " has unknown type " + json_fields::quoted(p["type"]) + " (expected float, color, normal, vector, boolean or enum)");
   if (p.contains("name")) {
     if (!p["name"].is_string()) fail(source, where + ": \"name\" must be a string");
     d.name = p["name"].get<std::string>();
@@ -198,7 +199,7 @@ ParamDef make_param(const std::string& mat, const std::string& id, const Json& p
     if (!order.is_number_integer() || (order.is_number_unsigned() ? order.get<std::uint64_t>() > INT_MAX
                                                                   : order.get<std::int64_t>() < 0))
       fail(source, where + ": \"uiOrder\" must be an integer from 0 to " + std::to_string(INT_MAX) + ", got " +
-                       order.dump());
+                       json_fields::quoted(order));
     d.ui_order = order.get<int>();
   }
   if (p.contains("group")) {
@@ -243,9 +244,9 @@ ParamDef make_param(const std::string& mat, const std::string& id, const Json& p
       read_number(scalar ? d.default_value : d.default_value[i], v);
       read_number(scalar ? d.min : d.min[i], a);
       read_number(scalar ? d.max : d.max[i], b);
-      if (a > b) fail(source, where + ": min " + d.min.dump() + " exceeds max " + d.max.dump());
+      if (a > b) fail(source, where + ": min " + json_fields::quoted(d.min) + " exceeds max " + json_fields::quoted(d.max));
       if (v < a || v > b)
-        fail(source, where + ": default " + d.default_value.dump() + " lies outside [" + d.min.dump() + ", " + d.max.dump() + "]");
+        fail(source, where + ": default " + json_fields::quoted(d.default_value) + " lies outside [" + json_fields::quoted(d.min) + ", " + json_fields::quoted(d.max) + "]");
     }
   }
   if (d.type == ParamKind::Normal) {
@@ -253,7 +254,7 @@ ParamDef make_param(const std::string& mat, const std::string& id, const Json& p
     for (int i = 0; i < 3; ++i) read_number(d.default_value[i], v[i]);
     // 1e-3: tolerance for unit length of a normal written with a few decimals.
     if (std::abs(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) - 1.0) > 1e-3)
-      fail(source, where + ": default normal " + d.default_value.dump() + " is not unit length");
+      fail(source, where + ": default normal " + json_fields::quoted(d.default_value) + " is not unit length");
   }
   return d;
 }

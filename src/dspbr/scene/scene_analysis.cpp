@@ -1,5 +1,6 @@
-#include "dspbr/limits.h"
 #include "dspbr/scene/scene_analysis.h"
+
+#include "dspbr/limits.h"
 
 #include <nlohmann/json.hpp>
 #include <stdexcept>

@@ -1,5 +1,6 @@
-#include "dspbr/io/json_write.h"
 #include "dspbr/validate/suite.h"
+
+#include "dspbr/io/json_write.h"
 
 #include <tbb/parallel_for.h>
 
