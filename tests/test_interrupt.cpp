@@ -14,6 +14,7 @@
 #include <string>
 #include <thread>
 #include <vector>
+#include "test_files.h"
 
 namespace {
 
@@ -65,19 +66,6 @@ bool wait_for(F ready) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   return false;
-}
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-std::set<std::string> listing(const fs::path& dir) {
-  std::set<std::string> out;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) out.insert(fs::relative(e.path(), dir).string());
-  return out;
 }
 
 // Interrupts the run with `sig` once it catches it and its output folder exists; returns the

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "dspbr/io/output_folder.h"
+#include "test_files.h"
 
 using namespace dspbr;
 namespace fs = std::filesystem;
@@ -22,24 +23,6 @@ fs::path fresh(const std::string& name) {
   const fs::path p = fs::path(::testing::TempDir()) / ("output_folder_" + name);
   fs::remove_all(p);
   return p;
-}
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-void write(const fs::path& p, const std::string& text) {
-  fs::create_directories(p.parent_path());
-  std::ofstream(p) << text;
-}
-
-std::set<std::string> listing(const fs::path& dir) {
-  std::set<std::string> out;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) out.insert(e.path().lexically_relative(dir).string());
-  return out;
 }
 
 }  // namespace

@@ -12,17 +12,7 @@
 
 #include "dspbr/version.h"
 #include "test_params_run.h"
-
-namespace {
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-}  // namespace
+#include "test_files.h"
 
 TEST(Provenance, PrintedDocumentsCarryTheVersionAndTheCommandLine) {
   for (const std::string args : {"eval --view 0,0,1 --light 0,0.2,1 --tables published",

@@ -17,6 +17,7 @@
 #include "dspbr/gltf/gltf_file.h"
 #include "dspbr/gltf/gltf_uri.h"
 #include "test_params_run.h"
+#include "test_files.h"
 
 using namespace dspbr;
 using Json = nlohmann::json;
@@ -31,11 +32,6 @@ fs::path fresh(const std::string& name) {
   return p;
 }
 
-void write(const fs::path& p, const std::string& text) {
-  fs::create_directories(p.parent_path());
-  std::ofstream(p, std::ios::binary) << text;
-}
-
 template <class F>
 std::string error_of(F f) {
   try {
@@ -45,7 +41,6 @@ std::string error_of(F f) {
   }
   return "(no error)";
 }
-
 
 // A minimal glTF 2.0 asset: one 24-byte buffer at `uri`, one view, one VEC3 float accessor of
 // `count` elements, one mesh using material 0.
