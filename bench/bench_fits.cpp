@@ -10,8 +10,8 @@
 
 #include "../fits/dspbr_fits.hpp"
 #include "../luts/dspbr_lookup.h"
-#include "dspbr/lut/albedo_slice.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/tables/albedo_slice.h"
+#include "dspbr/tables/lut_set.h"
 #include "dspbr/rng.h"
 
 namespace {
@@ -132,7 +132,7 @@ void BM_FitLutTableLookup(benchmark::State& state) {
 BENCHMARK(BM_FitLutTableLookup)->Arg(0)->Arg(1);
 
 // The lookup a lobe makes per evaluation: E_m(mu) of a slice cut at roughness 0.5 when the lobe is
-// built (lut/albedo_slice.h), published or renderer layout.
+// built (tables/albedo_slice.h), published or renderer layout.
 void BM_SliceLookup(benchmark::State& state) {
   const Inputs& in = inputs();
   const dspbr::AlbedoSlice slice =

@@ -1,4 +1,4 @@
-// libFuzzer target: table files of both layouts (lut/lut_set.h, lut/lut_io.h), read as
+// libFuzzer target: table files of both layouts (tables/lut_set.h, lutgen/lut_io.h), read as
 // `dspbr validate --luts` reads them; every table read is looked up once at its domain's centre
 // and corners (an index outside the values would be reported by AddressSanitizer).
 #include <cstddef>
@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
-#include "dspbr/lut/lut_io.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/lutgen/lut_io.h"
+#include "dspbr/tables/lut_set.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "dspbr/bsdf/bsdf.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/tables/lut_set.h"
 #include "light_space_albedo.h"
 
 namespace dspbr::test {

@@ -17,7 +17,8 @@ step "install into $work/stage"
 mv "$work/stage" "$work/moved"
 prefix="$work/moved"
 dspbr="$prefix/bin/dspbr"
-for f in bin/dspbr lib/libdspbr.a lib/cmake/dspbr/dspbrConfig.cmake lib/cmake/dspbr/dspbrConfigVersion.cmake \
+for f in bin/dspbr lib/libdspbr_core.a lib/libdspbr_lutgen.a lib/libdspbr_formats.a lib/libdspbr_validate.a \
+         lib/libdspbr_fit.a lib/cmake/dspbr/dspbr_coreTargets.cmake lib/cmake/dspbr/dspbrConfig.cmake lib/cmake/dspbr/dspbrConfigVersion.cmake \
          lib/cmake/dspbr/dspbrTargets.cmake lib/pkgconfig/dspbr.pc include/dspbr/bsdf/material_bsdf.h \
          include/dspbr/version.h include/dspbr/luts/pbrlut.hpp include/dspbr/luts/dspbr_lookup.h \
          include/dspbr/luts/dspbr_lookup.glsl include/dspbr/luts/dspbr_lookup.hlsl \
@@ -78,6 +79,27 @@ step "examples/ against the moved prefix (CMake package)"
 "$cmake" -S "$src/examples" -B ex -DCMAKE_PREFIX_PATH="$prefix" > ex-configure.log
 "$cmake" --build ex -j2 > ex-build.log
 ./ex/bsdf_example
+./ex/core_renderer > /dev/null
+
+step "COMPONENTS core alone from the moved prefix: only dspbr::core defined, no Ceres/OpenImageIO/TBB/glog linked"
+"$cmake" -S "$src/examples" -B ex-core -DCMAKE_PREFIX_PATH="$prefix" -DDSPBR_COMPONENTS=core > ex-core-configure.log
+"$cmake" --build ex-core -j2 > ex-core-build.log
+[ -x ex-core/core_renderer ] && [ ! -e ex-core/bsdf_example ] || { echo "COMPONENTS core built the wrong programs"; exit 1; }
+bash "$src/tests/core_links_alone.sh" ex-core/core_renderer > /dev/null
+
+step "each component on its own from the moved prefix; an unknown one is refused"
+for c in core lutgen formats validate fit; do
+  mkdir -p "comp-$c"
+  printf 'cmake_minimum_required(VERSION 3.20)\nproject(c LANGUAGES CXX)\nfind_package(dspbr CONFIG REQUIRED COMPONENTS %s)\nif(NOT TARGET dspbr::%s)\n  message(FATAL_ERROR "no dspbr::%s")\nendif()\n' \
+    "$c" "$c" "$c" > "comp-$c/CMakeLists.txt"
+  "$cmake" -S "comp-$c" -B "comp-$c/b" -DCMAKE_PREFIX_PATH="$prefix" > "comp-$c.log" || { cat "comp-$c.log"; exit 1; }
+done
+mkdir -p comp-bad
+printf 'cmake_minimum_required(VERSION 3.20)\nproject(c LANGUAGES CXX)\nfind_package(dspbr CONFIG REQUIRED COMPONENTS shaders)\n' > comp-bad/CMakeLists.txt
+if "$cmake" -S comp-bad -B comp-bad/b -DCMAKE_PREFIX_PATH="$prefix" > comp-bad.log 2>&1; then
+  echo "an unknown component was accepted"; exit 1
+fi
+grep -q "unknown dspbr component 'shaders'" comp-bad.log || { cat comp-bad.log; exit 1; }
 
 step "examples/bsdf_example.cpp through dspbr.pc"
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"

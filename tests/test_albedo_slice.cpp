@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "dspbr/lut/albedo_slice.h"
+#include "dspbr/tables/albedo_slice.h"
 #include "dspbr/rng.h"
 
 using namespace dspbr;
@@ -31,7 +31,7 @@ TEST(AlbedoSlice, EqualsTheFullLookups) {
   }
 }
 
-// The E_m parts at two cosines side by side (the packed warp of lut/warped_table.h) are bit for bit
+// The E_m parts at two cosines side by side (the packed warp of tables/warped_table.h) are bit for bit
 // the scalar e_m_part of each, over the domain and outside it (clamped), in both layouts.
 TEST(AlbedoSlice, PairedEmPartsEqualSingleOnes) {
   for (const LutSet* luts : {&LutSet::builtin(), &LutSet::published()}) {

@@ -53,7 +53,7 @@ AlbedoFitParams albedo_params(const json& d) {
   return p;
 }
 
-// Exact albedos by deterministic quadrature (independent of lut/albedo.h and of the
+// Exact albedos by deterministic quadrature (independent of lutgen/albedo.h and of the
 // validate/lut_reference.h quadrature the fits were made against).
 double exact_ggx_E(double mu, double r) { return lutref::ggx_albedo_quad(mu, r, 1.0, 32, 16); }
 double exact_ggx_E5(double mu, double r) { return lutref::ggx_albedo_quad(mu, r, 0.0, 32, 16); }

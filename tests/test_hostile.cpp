@@ -12,8 +12,8 @@
 
 #include "dspbr/io/read_file.h"
 #include "dspbr/limits.h"
-#include "dspbr/lut/lut_io.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/lutgen/lut_io.h"
+#include "dspbr/tables/lut_set.h"
 #include "dspbr/params/param_defs.h"
 #include "test_params_run.h"
 

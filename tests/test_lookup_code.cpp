@@ -1,5 +1,5 @@
-// The generated lookup code (luts/dspbr_lookup.h, .glsl, .hlsl; lut/lookup_codegen.h):
-//  - the C header against the library's double-precision lookups (lut/renderer_luts.h) at random
+// The generated lookup code (luts/dspbr_lookup.h, .glsl, .hlsl; lutgen/lookup_codegen.h):
+//  - the C header against the library's double-precision lookups (tables/renderer_luts.h) at random
 //    points: within float rounding;
 //  - the GLSL and HLSL files executed as C++ against GLM (their function bodies and constant
 //    tables, compiled here with GLM's clamp/min/max/pow/exp/log/sqrt) against the C header.
@@ -15,9 +15,9 @@
 #include "../luts/dspbr_lookup.h"
 #include "../luts/dspbr_glass_lookup.h"
 #include "dspbr/bsdf/material_bsdf.h"
-#include "dspbr/lut/lut_set.h"
-#include "dspbr/lut/renderer_io.h"
-#include "dspbr/lut/renderer_luts.h"
+#include "dspbr/tables/lut_set.h"
+#include "dspbr/lutgen/renderer_io.h"
+#include "dspbr/tables/renderer_luts.h"
 
 // Constant tables as C++ arrays (the shader files let the includer define these).
 #define DSPBR_TABLE(name, n) const float name[n] = {

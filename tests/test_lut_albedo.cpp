@@ -1,4 +1,4 @@
-// The LUT integrators (src/dspbr/lut/albedo.h, qmc.h) against independent Gauss-Legendre
+// The LUT integrators (src/dspbr/lutgen/albedo.h, qmc.h) against independent Gauss-Legendre
 // quadrature of the defining integrals (tests/test_lut_reference.h), limits and identities.
 #include <gtest/gtest.h>
 
@@ -7,9 +7,9 @@
 #include <tuple>
 
 #include "dspbr/constants.h"
-#include "dspbr/lut/albedo.h"
-#include "dspbr/lut/lut_set.h"
-#include "dspbr/lut/qmc.h"
+#include "dspbr/lutgen/albedo.h"
+#include "dspbr/tables/lut_set.h"
+#include "dspbr/lutgen/qmc.h"
 #include "test_lut_reference.h"
 
 using namespace dspbr;

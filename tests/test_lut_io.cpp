@@ -13,9 +13,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "dspbr/lut/generate.h"
-#include "dspbr/lut/lut_io.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/lutgen/generate.h"
+#include "dspbr/lutgen/lut_io.h"
+#include "dspbr/tables/lut_set.h"
 #include "dspbr/progress.h"
 #include "dspbr/scene/scene_analysis.h"
 

@@ -1,4 +1,4 @@
-// The deterministic table integrator (lut/microfacet_quadrature.h, Integrator::Quad, the
+// The deterministic table integrator (lutgen/microfacet_quadrature.h, Integrator::Quad, the
 // default of every table) against independent numbers: a light-domain / half-vector Gauss-Legendre
 // reference with a convergence check (tests/test_lut_reference.h), the same quadrature at a
 // 10^4 times tighter target (its stated error must bound the true one), and QMC at 2^22 samples.
@@ -9,9 +9,9 @@
 #include <cmath>
 
 #include "dspbr/fresnel.h"
-#include "dspbr/lut/albedo.h"
-#include "dspbr/lut/lut_io.h"
-#include "dspbr/lut/microfacet_quadrature.h"
+#include "dspbr/lutgen/albedo.h"
+#include "dspbr/lutgen/lut_io.h"
+#include "dspbr/lutgen/microfacet_quadrature.h"
 #include "test_lut_reference.h"
 
 using namespace dspbr;

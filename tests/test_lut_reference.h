@@ -1,6 +1,6 @@
 // Independent reference values for the LUT, glass and fit tests: deterministic composite
 // Gauss-Legendre quadrature of the defining integrals (no sampling, no code shared with
-// src/dspbr/lut/ or src/dspbr/validate/): over the GGX half vector in its slope parametrisation
+// src/dspbr/lutgen/ or src/dspbr/validate/): over the GGX half vector in its slope parametrisation
 // (sharp lobes), and over the light direction by the tests' one light-space rule
 // (light_space_albedo.h) for rough GGX lobes and the sheen.
 #pragma once

@@ -1,4 +1,4 @@
-// The table registry (lut/table_registry.h): it is what the generator, the readers, the CLI and
+// The table registry (tables/table_registry.h): it is what the generator, the readers, the CLI and
 // the scene analysis use, and no other source compares a table name as a string.
 #include <gtest/gtest.h>
 
@@ -10,11 +10,11 @@
 
 #include "dspbr/io/read_file.h"
 #include "dspbr/limits.h"
-#include "dspbr/lut/generate.h"
-#include "dspbr/lut/lut_io.h"
-#include "dspbr/lut/renderer_io.h"
-#include "dspbr/lut/renderer_luts.h"
-#include "dspbr/lut/table_registry.h"
+#include "dspbr/lutgen/generate.h"
+#include "dspbr/lutgen/lut_io.h"
+#include "dspbr/lutgen/renderer_io.h"
+#include "dspbr/tables/renderer_luts.h"
+#include "dspbr/tables/table_registry.h"
 #include "test_params_run.h"
 
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-// Renderer layout (lut/renderer_luts.h): warps and Catmull-Rom against closed forms, and the
+// Renderer layout (tables/renderer_luts.h): warps and Catmull-Rom against closed forms, and the
 // committed default set's lookups against independent quadrature (validate/lut_reference.h,
 // deterministic Gauss-Legendre over the microfacet normal, no sampling, not the generator) on
 // random points of the whole domain that are not table samples; the white furnace of a white
@@ -11,9 +11,9 @@
 #include <random>
 
 #include "dspbr/fresnel.h"
-#include "dspbr/lut/renderer_generate.h"
-#include "dspbr/lut/renderer_io.h"
-#include "dspbr/lut/renderer_luts.h"
+#include "dspbr/lutgen/renderer_generate.h"
+#include "dspbr/lutgen/renderer_io.h"
+#include "dspbr/tables/renderer_luts.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/validate/lut_reference.h"
 

@@ -10,7 +10,7 @@
 #include "dspbr/bsdf/flakes.h"
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/frame.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/tables/lut_set.h"
 #include "dspbr/rng.h"
 #include "dspbr/validate/chi2.h"
 

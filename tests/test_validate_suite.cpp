@@ -8,7 +8,7 @@
 #include <tbb/global_control.h>
 
 #include "dspbr/bsdf/material_bsdf.h"
-#include "dspbr/lut/generate.h"
+#include "dspbr/lutgen/generate.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/validate/furnace.h"
 #include "dspbr/validate/lut_reference.h"

@@ -15,11 +15,11 @@
 #include "provenance.h"
 #include "dspbr/io/atomic_file.h"
 #include "dspbr/io/output_folder.h"
-#include "dspbr/lut/generate.h"
-#include "dspbr/lut/lookup_codegen.h"
-#include "dspbr/lut/lut_io.h"
-#include "dspbr/lut/renderer_generate.h"
-#include "dspbr/lut/renderer_io.h"
+#include "dspbr/lutgen/generate.h"
+#include "dspbr/lutgen/lookup_codegen.h"
+#include "dspbr/lutgen/lut_io.h"
+#include "dspbr/lutgen/renderer_generate.h"
+#include "dspbr/lutgen/renderer_io.h"
 #include "dspbr/scene/scene_analysis.h"
 #include "dspbr/validate/integrator_study.h"
 #include "dspbr/validate/lookup_study.h"
@@ -151,7 +151,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// The renderer layout (lut/renderer_luts.h): JSON, images, and the generated lookup code.
+// The renderer layout (tables/renderer_luts.h): JSON, images, and the generated lookup code.
 void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& formats, const std::string& dir) {
   const auto t0 = std::chrono::steady_clock::now();
   const RendererLuts luts = generate_renderer_luts(opt, a.renderer_scale);

@@ -19,7 +19,7 @@
 #include "interrupt_cleanup.h"
 #include "dspbr/limits.h"
 #include "dspbr/io/read_file.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/tables/lut_set.h"
 #include "dspbr/validate/catalog.h"
 #include "dspbr/validate/provenance.h"
 #include "dspbr/validate/suite.h"

@@ -8,6 +8,13 @@
 
 namespace dspbr {
 
+// The two sheen models: Charlie D_b with the spec's Lambda fit (Main) or the alternative
+// visibility of [NP13] (Ash).
+enum class SheenModel { Main, Ash };
+// Smallest alpha_b the BSDF and the tables use; smaller values are clamped up to it (D_b is
+// undefined at 0).
+constexpr double kMinAlphaB = 1e-3;
+
 // Charlie distribution D_b(h) = (2 + 1/alpha_b) sin^(1/alpha_b)(theta_h) / (2 pi), zero below
 // the surface. Requires alpha_b > 0.
 double charlie_d(double cos_theta_h, double alpha_b);

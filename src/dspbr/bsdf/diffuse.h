@@ -9,7 +9,7 @@
 // Sampling: cosine-weighted, upper hemisphere with probability 1 - l, lower with probability l.
 #pragma once
 #include "dspbr/bsdf/lobe.h"
-#include "dspbr/lut/albedo_slice.h"
+#include "dspbr/tables/albedo_slice.h"
 
 namespace dspbr {
 

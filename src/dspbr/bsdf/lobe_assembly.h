@@ -13,8 +13,8 @@
 #include <cstdint>
 
 #include "dspbr/bsdf/lobe_mixture.h"
-#include "dspbr/lut/albedo.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/sheen.h"
+#include "dspbr/tables/lut_set.h"
 #include "dspbr/material.h"
 
 namespace dspbr {

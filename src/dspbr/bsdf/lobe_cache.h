@@ -1,5 +1,5 @@
 // Per-call memo of the table values that several lobes of one mixture read at the same cosine:
-// the E_m part of the core's table slices (lut/albedo_slice.h), read at v.n and l.n by both the
+// the E_m part of the core's table slices (tables/albedo_slice.h), read at v.n and l.n by both the
 // multiple-scattering lobe and the diffuse base (one warp and one E_m lookup per direction instead
 // of two; the first of them computes both directions' parts side by side, albedos). LobeMixture
 // makes one per eval / selection on the stack; a lobe evaluated alone uses an empty one, so the
@@ -8,7 +8,7 @@
 #pragma once
 #include <algorithm>
 
-#include "dspbr/lut/albedo_slice.h"
+#include "dspbr/tables/albedo_slice.h"
 
 namespace dspbr {
 

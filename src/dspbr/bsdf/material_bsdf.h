@@ -26,7 +26,7 @@
 #include "dspbr/bsdf/lobe_assembly.h"
 #include "dspbr/bsdf/two_sided.h"
 #include "dspbr/frame.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/tables/lut_set.h"
 #include "dspbr/material.h"
 
 namespace dspbr {

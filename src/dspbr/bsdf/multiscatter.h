@@ -8,7 +8,7 @@
 
 #include "dspbr/bsdf/lobe.h"
 #include "dspbr/bsdf/lobe_cache.h"
-#include "dspbr/lut/albedo_slice.h"
+#include "dspbr/tables/albedo_slice.h"
 
 namespace dspbr {
 

@@ -1,13 +1,13 @@
 // Sheen lobe M_b(v, l, h_r; r_b) rho_b (spec "Sheen"; Conty Estevez & Kulla 2017): Charlie D_b with
 // the spec's Lambda fit (SheenModel::Main) or the alternative visibility of [NP13]
-// (SheenModel::Ash). alpha_b = r_b^2, clamped up to kMinAlphaB (lut/albedo.h) because D_b is
+// (SheenModel::Ash). alpha_b = r_b^2, clamped up to kMinAlphaB (sheen.h) because D_b is
 // undefined at alpha_b = 0 (the same clamp as the Sheen_E tables).
 // Also the albedo-scaling factor of ShinyCore, min(1 - rho_hat E_b(v.n), 1 - rho_hat E_b(l.n)).
 // Sampling: uniform hemisphere (robust at every alpha_b; D_b concentrates near grazing normals).
 #pragma once
 #include "dspbr/bsdf/lobe.h"
-#include "dspbr/lut/albedo.h"
-#include "dspbr/lut/albedo_slice.h"
+#include "dspbr/sheen.h"
+#include "dspbr/tables/albedo_slice.h"
 
 namespace dspbr {
 

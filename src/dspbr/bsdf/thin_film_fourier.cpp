@@ -9,7 +9,7 @@
 
 #include "dspbr/bsdf/thin_film.h"
 #include "dspbr/bsdf/thin_film_optics.h"
-#include "dspbr/lut/warped_table.h"
+#include "dspbr/tables/warped_table.h"
 
 namespace dspbr {
 

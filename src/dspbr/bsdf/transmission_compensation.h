@@ -11,7 +11,7 @@
 #include <optional>
 
 #include "dspbr/bsdf/lobe.h"
-#include "dspbr/lut/albedo_slice.h"
+#include "dspbr/tables/albedo_slice.h"
 
 namespace dspbr {
 

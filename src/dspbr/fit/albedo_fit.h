@@ -1,6 +1,6 @@
 // Fits of the LUT-free albedo forms (albedo_forms.h) to independent deterministic quadrature of
 // the albedo integrals (validate/lut_reference.h, Gauss-Legendre over the half vector; not the
-// table integrators of lut/albedo.h), minimax by Lawson reweighting, over the whole domain
+// table integrators of lutgen/albedo.h), minimax by Lawson reweighting, over the whole domain
 // (cos theta down to mu_min, roughness from 0, alpha_b from 1/256). The averages are fitted to the
 // cosine averages of the fitted directional albedos (consistent families), and the report gives
 // the errors on fresh grids (not the fit points) and the white furnaces of a white metal

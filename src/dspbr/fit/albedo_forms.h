@@ -19,7 +19,7 @@
 //
 // Base_E needs no 3D fit: Schlick's F(v.h; f0, 1) = f0 + (1 - f0)(1 - v.h)^5 is affine in f0, so
 // Integral M_r F mu_l dl = f0 E_m + (1 - f0) E_5 with E_5(mu; r) = Integral M_r (1 - v.h)^5 mu_l dl,
-// and the multiple-scattering part integrates in closed form to F_ms (1 - E_m) (lut/albedo.h).
+// and the multiple-scattering part integrates in closed form to F_ms (1 - E_m) (lutgen/albedo.h).
 // Only E_5 (2D, E_5 = S_E5(r; mu, u)) and E_5,avg (1D) are fitted in addition to E_m and E_m,avg.
 //
 // P(x, y) = sum_{i, j = 0..6} a_ij x^i y^j (tensor-product polynomial, 49 coefficients);

@@ -73,7 +73,7 @@ double sheen_albedo_quadrature(double mu_v, double alpha_b, const LambdaModel& l
   // mu_l: 24 panels graded geometrically towards 0 (the Charlie peak sits at grazing half vectors),
   // phi in [0, pi] (symmetric), 32 uniform panels; 8-point Gauss-Legendre on each.
   static const QuadratureRule rule = gauss_legendre(8);
-  const double mu = std::clamp(mu_v, 1e-6, 1.0);  // mu = 0: albedo limit, as lut/albedo.h (kMinCos)
+  const double mu = std::clamp(mu_v, 1e-6, 1.0);  // mu = 0: albedo limit, as lutgen/albedo.h (kMinCos)
   const Vec3 v = view_dir(mu);
   const double lam_v = lambda(mu, alpha_b);
   std::vector<double> mu_nodes, mu_weights;

@@ -41,8 +41,8 @@ using LambdaModel = std::function<double(double mu, double alpha_b)>;
 
 // Sheen albedo E_b(mu_v; alpha_b) = Integral D_b G_b / (4 mu_v mu_l) mu_l dl (spec "Sheen BRDF")
 // with G_b built from the given Lambda, by deterministic composite Gauss-Legendre quadrature in
-// (mu_l, phi) (lut/albedo.h integrates only the spec's Lambda; this one takes any Lambda).
-// Accuracy ~1e-5 for alpha_b >= 1/256 (checked against lut/albedo.h in the tests).
+// (mu_l, phi) (lutgen/albedo.h integrates only the spec's Lambda; this one takes any Lambda).
+// Accuracy ~1e-5 for alpha_b >= 1/256 (checked against lutgen/albedo.h in the tests).
 double sheen_albedo_quadrature(double mu_v, double alpha_b, const LambdaModel& lambda);
 
 // Error report (JSON) of the models on a fresh grid, per alpha_b band: relative error of Lambda,

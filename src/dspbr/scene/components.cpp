@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "dspbr/lut/table_registry.h"
+#include "dspbr/tables/table_registry.h"
 #include "dspbr/params/material_params.h"
 
 namespace dspbr {

@@ -16,7 +16,7 @@ namespace dspbr {
 // activity is monotone in each parameter, so the union over the 2^k corners of that box is exact.
 uint32_t active_components(const Material& m, const std::vector<std::string>& scaled_by_texture);
 
-// LUT tables (canonical names and order, lut/generate.h) the active components need; with
+// LUT tables (canonical names and order, lutgen/generate.h) the active components need; with
 // transmission_compensation (beyond DSPBR 2025x, docs/bsdf.md) a volumetric transparent
 // component also needs the four Glass tables (thin-walled glass needs only GGX_E / GGX_E_avg).
 std::vector<std::string> tables_for_components(uint32_t mask, bool transmission_compensation = false);

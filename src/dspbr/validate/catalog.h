@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "dspbr/bsdf/bsdf.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/tables/lut_set.h"
 
 namespace dspbr::validate {
 

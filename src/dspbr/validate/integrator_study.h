@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "dspbr/lut/generate.h"
+#include "dspbr/lutgen/generate.h"
 
 namespace dspbr::validate {
 

@@ -10,8 +10,8 @@
 
 #include "../../../fits/dspbr_fits.hpp"
 #include "dspbr/fresnel.h"
-#include "dspbr/lut/microfacet_quadrature.h"
-#include "dspbr/lut/table_registry.h"
+#include "dspbr/lutgen/microfacet_quadrature.h"
+#include "dspbr/tables/table_registry.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/validate/lut_reference.h"
 
@@ -262,7 +262,7 @@ std::string lookup_study_markdown(const LookupStudy& s) {
       "Lookup error at {} random off-grid points of the whole domain (cos theta >= 1e-3, roughness >= 0.01, "
       "alpha_b >= 1/256; half log-uniform towards those ends), against independent quadrature; relative where "
       "the exact value exceeds 1. Glass rows (beyond DSPBR 2025x): ior = (2 + u) / (2 - u), u uniform (ior 1..3), "
-      "exact values from the rough-glass quadrature (lut/microfacet_quadrature.h) at target error 1e-6.\n\n| table | layout | stored values | max error | RMS error |\n|---|---|---:|---:|---:|\n",
+      "exact values from the rough-glass quadrature (lutgen/microfacet_quadrature.h) at target error 1e-6.\n\n| table | layout | stored values | max error | RMS error |\n|---|---|---:|---:|---:|\n",
       s.points);
   for (const auto& r : s.errors)
     o += fmt::format("| {} | {} | {} | {:.2e} | {:.2e} |\n", r.table, r.layout, r.values ? std::to_string(r.values) : "-",

@@ -1,5 +1,5 @@
 // Independent high-precision values of the quantities stored in the energy-compensation tables,
-// for checking the generated LUTs. The table generator (lut/albedo.h) integrates over the light
+// for checking the generated LUTs. The table generator (lutgen/albedo.h) integrates over the light
 // direction by (quasi-)Monte Carlo; these functions use a different route: deterministic
 // composite Gauss-Legendre quadrature over the microfacet normal h, with the reflected
 // l = 2 (v.h) h - v, so that

@@ -17,7 +17,7 @@
 #include "dspbr/frame.h"
 #include "dspbr/io/atomic_file.h"
 #include "dspbr/io/json_values.h"
-#include "dspbr/lut/table_registry.h"
+#include "dspbr/tables/table_registry.h"
 #include "dspbr/progress.h"
 #include "dspbr/validate/furnace_image.h"
 #include "dspbr/validate/integrator_study.h"

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/tables/lut_set.h"
 #include "dspbr/validate/catalog.h"
 #include "dspbr/validate/chi2.h"
 #include "dspbr/validate/furnace.h"

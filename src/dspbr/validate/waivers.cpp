@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "dspbr/lut/table_registry.h"
+#include "dspbr/tables/table_registry.h"
 
 namespace dspbr::validate {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/tables/lut_set.h"
 
 namespace dspbr::validate {
 

@@ -1,4 +1,4 @@
-#include "dspbr/lut/albedo_slice.h"
+#include "dspbr/tables/albedo_slice.h"
 
 #include <algorithm>
 #include <cmath>

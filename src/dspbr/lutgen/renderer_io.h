@@ -9,25 +9,16 @@
 //    (DFG-style IBL: specular = f0 (A - B) + f90 B), B = the main sheen's albedo at alpha_b = r^2,
 //    sampled from the renderer lookups.
 #pragma once
-#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <string_view>
 
-#include "dspbr/lut/generate.h"
-#include "dspbr/lut/renderer_luts.h"
+#include "dspbr/lutgen/generate.h"
+#include "dspbr/tables/table_files.h"
+#include "dspbr/tables/renderer_luts.h"
 
 namespace dspbr {
 
 std::string renderer_json_text(const RendererLuts& luts, const LutOptions& opt, int scale);
-
-// Reads a dspbr_renderer_luts.json; checks format, table set, axis names, warps and sizes
-// (before allocating) and finite values. Throws std::runtime_error naming the file and the
-// problem.
-RendererLuts read_renderer_json(const std::string& path);
-// The same from the file's text, or from its parsed JSON; `name` stands for the file in the
-// messages.
-RendererLuts read_renderer_json_text(std::string_view text, const std::string& name);
-RendererLuts read_renderer_json_value(const nlohmann::json& j, const std::string& name);
 
 // Writes NAME.exr (float, or half) and NAME.png per table and the split-sum images into dir
 // (atomically); `command` is recorded as dspbr:command when not empty.

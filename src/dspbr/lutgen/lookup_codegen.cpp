@@ -1,6 +1,6 @@
-#include "dspbr/lut/lookup_codegen.h"
+#include "dspbr/lutgen/lookup_codegen.h"
 
-#include "dspbr/lut/table_registry.h"
+#include "dspbr/tables/table_registry.h"
 
 #include <fmt/format.h>
 
@@ -20,7 +20,7 @@ std::string flit(double v) {
   return s + "f";
 }
 
-// u^p as the warps evaluate it (warp_power, lut/warped_table.h): u, sqrt(u) for p = 1/2, else pow.
+// u^p as the warps evaluate it (warp_power, tables/warped_table.h): u, sqrt(u) for p = 1/2, else pow.
 std::string power_expr(const std::string& u, double p) {
   if (p == 1) return u;
   if (p == 0.5) return fmt::format("sqrt({})", u);
@@ -230,7 +230,7 @@ const char* kHelpers =
     "  return d > 0.0f ? mu / d : 1.0f;\n"
     "}\n";
 
-// The glass file's shared text: its ior warp (lut/warped_table.h GlassIor).
+// The glass file's shared text: its ior warp (tables/warped_table.h GlassIor).
 const char* kGlassHelpers =
     "// glass_ior warp: x = (x_F + ln(1 + x_F / (k mu^2)) / ln(1 + 1 / (k mu^2))) / 2, x_F = 2 sqrt(F_0),\n"
     "// mu clamped to 1e-6.\n"

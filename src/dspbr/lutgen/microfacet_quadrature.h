@@ -1,5 +1,5 @@
 // Deterministic quadrature of the directional albedos behind the energy-compensation tables
-// (lut/albedo.h, integrator Quad), over the microfacet normal h = (sin t cos p, sin t sin p, cos t)
+// (lutgen/albedo.h, integrator Quad), over the microfacet normal h = (sin t cos p, sin t sin p, cos t)
 // for v = (sqrt(1 - mu^2), 0, mu), with l = reflect(v, h) (dl = 4 (v.h) dh) or the refracted
 // direction (Walter et al. 2007's Jacobian; its eta factors cancel with the spec's eta_o^2):
 //
@@ -34,7 +34,7 @@ constexpr int kQuadMaxPanels = 200;
 QuadResult<2> ggx_moments_quadrature(double mu, double alpha, double tolerance);
 
 // E_g of the rough dielectric interface with eta_i on v's side, eta_o on the other, Schlick
-// F_0 = f0, alpha > 0 (lut/albedo.h glass_E); at eta_i = eta_o the limit eta -> 1+ of M_t.
+// F_0 = f0, alpha > 0 (lutgen/albedo.h glass_E); at eta_i = eta_o the limit eta -> 1+ of M_t.
 QuadResult<1> dielectric_albedo_quadrature(double mu, double alpha, double f0, double eta_i, double eta_o,
                                       double tolerance);
 

@@ -1,4 +1,4 @@
-#include "dspbr/lut/table_image.h"
+#include "dspbr/lutgen/table_image.h"
 
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>

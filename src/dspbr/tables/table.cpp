@@ -1,4 +1,4 @@
-#include "dspbr/lut/table.h"
+#include "dspbr/tables/table.h"
 
 #include <algorithm>
 #include <cmath>

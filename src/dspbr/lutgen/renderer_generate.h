@@ -1,11 +1,11 @@
-// Generates the renderer layout (lut/renderer_luts.h): the directional tables are integrated at
-// their samples with the integrators of lut/albedo.h (per-sample streams, so the result does not
+// Generates the renderer layout (tables/renderer_luts.h): the directional tables are integrated at
+// their samples with the integrators of lutgen/albedo.h (per-sample streams, so the result does not
 // depend on the thread count), rounded to float (what every file holds), and the averages are
 // then integrated from the float tables' own interpolants (Gauss-Legendre per grid cell in the
 // warped cos coordinate), so that they are the cosine averages of the lookups.
 #pragma once
-#include "dspbr/lut/generate.h"
-#include "dspbr/lut/renderer_luts.h"
+#include "dspbr/lutgen/generate.h"
+#include "dspbr/tables/renderer_luts.h"
 
 namespace dspbr {
 

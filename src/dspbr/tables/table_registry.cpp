@@ -1,4 +1,4 @@
-#include "dspbr/lut/table_registry.h"
+#include "dspbr/tables/table_registry.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -9,7 +9,7 @@ namespace dspbr {
 
 const std::vector<LutInfo>& lut_registry() {
   // Streams: the ids of earlier releases (kept: same seed, same values); published 6 is Base_E's
-  // own E_m,avg row (lut/generate.cpp).
+  // own E_m,avg row (lutgen/generate.cpp).
   static const std::vector<LutInfo> r{
       {Lut::GgxE, "GGX_E", kBothLayouts, true, false, false, false, {"roughness", "cos_theta"}, {32, 32}, 0, 16,
        "E_m(mu; r), GGX single-scattering albedo", "specular and coat energy compensation"},
@@ -66,5 +66,24 @@ std::vector<std::string> lut_names(unsigned layouts) {
 }
 
 std::string lut_names_list(unsigned layouts) { return fmt::format("{}", fmt::join(lut_names(layouts), ", ")); }
+
+const std::vector<std::string>& lut_table_names() {
+  static const std::vector<std::string> names = lut_names(kPublishedLayout);
+  return names;
+}
+
+bool is_lut_table_name(const std::string& name) { return find_lut(name, kPublishedLayout) != nullptr; }
+
+std::vector<std::string> lut_axis_names(const std::string& t) {
+  const LutInfo& info = published_lut(t);
+  return {info.axes.begin(), info.axes.end()};
+}
+
+bool is_glass_table(const std::string& t) {
+  const LutInfo* info = find_lut(t, kPublishedLayout);
+  return info != nullptr && info->glass;
+}
+
+std::vector<int> lut_default_size(const std::string& t) { return published_lut(t).size; }
 
 }  // namespace dspbr

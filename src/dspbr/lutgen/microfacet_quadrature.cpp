@@ -1,4 +1,4 @@
-#include "dspbr/lut/microfacet_quadrature.h"
+#include "dspbr/lutgen/microfacet_quadrature.h"
 
 #include <algorithm>
 #include <array>
@@ -70,7 +70,7 @@ struct GgxIntegrand {
   }
 };
 
-// E_g of the rough dielectric interface (lut/albedo.h glass_E).
+// E_g of the rough dielectric interface (lutgen/albedo.h glass_E).
 struct GlassIntegrand {
   static constexpr int K = 1, kThresholds = 4, kLayers = 6;
   double mu, sv, alpha, f0, eta_i, eta_o, eta;  // eta = eta_i / eta_o

@@ -1,4 +1,4 @@
-#include "dspbr/lut/renderer_luts.h"
+#include "dspbr/tables/renderer_luts.h"
 
 #include <algorithm>
 #include <cmath>

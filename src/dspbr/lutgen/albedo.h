@@ -1,6 +1,6 @@
 // Directional and average albedos of the DSPBR BRDF terms, by numerical integration: the exact
 // integrals behind the energy-compensation tables (spec "Energy Preservation", "Multiple-
-// Scattering GGX BRDFs", "Diffuse BRDF", "Sheen BRDF"). The table generator (lut/generate.h)
+// Scattering GGX BRDFs", "Diffuse BRDF", "Sheen BRDF"). The table generator (lutgen/generate.h)
 // calls these functions; fits and validation call them to get exact values at any point.
 //
 //   E_m(mu; r)         = Integral M_r(v, l) mu_l dl          M_r = D G2 / (4 mu_v mu_l), alpha = r^2
@@ -25,7 +25,7 @@
 //    estimator driven by Pcg32).
 //  - Quad: deterministic adaptive Gauss-Kronrod quadrature over the microfacet normal in
 //    coordinates that follow the lobe, the azimuth split where a term switches on or off
-//    (lut/microfacet_quadrature.h); the error is its embedded estimate, at most target_error
+//    (lutgen/microfacet_quadrature.h); the error is its embedded estimate, at most target_error
 //    (kQuadDefaultTolerance when 0). No replicates, no seed, no sample budget.
 // Qmc and Mc return the mean of the replicates and its standard error (spread of the replicates /
 // sqrt(R)). Streams: the random numbers of a call depend only on (settings.seed, stream), so a
@@ -39,6 +39,8 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "dspbr/sheen.h"  // SheenModel, kMinAlphaB
 
 namespace dspbr {
 
@@ -75,15 +77,11 @@ struct Estimate {
 
 // Grazing clamp of the view cosine (see above).
 constexpr double kMinCos = 1e-6;
-// Smallest sheen alpha_b integrated; smaller values are clamped up to it.
-constexpr double kMinAlphaB = 1e-3;
 // Grazing clamp of the view cosine for the sheen albedos. The spec's Lambda fit tends to a
 // finite value at mu -> 0 (the exact Charlie Lambda grows like 1/mu), so G_b does not vanish
 // there and the main sheen's albedo grows like ~4e-5 / mu below mu ~ 1e-3 and diverges at 0
 // (40 at mu = 1e-6, alpha_b = 1/2). Only endpoint grids (mu = 0 column) reach the clamp.
 constexpr double kMinCosSheen = 1e-3;
-
-enum class SheenModel { Main, Ash };  // Charlie D_b with the spec's Lambda fit, or [NP13] visibility
 
 // E_m(mu; r).
 Estimate ggx_E(double mu, double r, const IntegratorSettings& s, uint64_t stream = 0);

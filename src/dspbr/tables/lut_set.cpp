@@ -1,4 +1,4 @@
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/tables/lut_set.h"
 
 #include "dspbr/limits.h"
 
@@ -6,9 +6,8 @@
 #include <stdexcept>
 
 #include "dspbr/io/read_file.h"
-#include "dspbr/lut/generate.h"
-#include "dspbr/lut/lut_io.h"
-#include "dspbr/lut/renderer_io.h"
+#include "dspbr/tables/table_files.h"
+#include "dspbr/tables/table_registry.h"
 
 namespace dspbr {
 

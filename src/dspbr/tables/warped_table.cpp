@@ -1,4 +1,4 @@
-#include "dspbr/lut/warped_table.h"
+#include "dspbr/tables/warped_table.h"
 
 #include <fmt/format.h>
 

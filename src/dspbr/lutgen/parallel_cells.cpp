@@ -1,4 +1,4 @@
-#include "dspbr/lut/parallel_cells.h"
+#include "dspbr/lutgen/parallel_cells.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

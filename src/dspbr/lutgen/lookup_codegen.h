@@ -1,4 +1,4 @@
-// Generated lookup code for the renderer layout (lut/renderer_luts.h): the same functions in
+// Generated lookup code for the renderer layout (tables/renderer_luts.h): the same functions in
 // three dialects, written by `dspbr lut` next to the tables (docs/luts.md, "Using the tables in
 // your renderer"):
 //   dspbr_lookup.h     C99 / C++, tables embedded, only <math.h>
@@ -25,7 +25,7 @@
 #pragma once
 #include <string>
 
-#include "dspbr/lut/renderer_luts.h"
+#include "dspbr/tables/renderer_luts.h"
 
 namespace dspbr {
 

@@ -67,4 +67,23 @@ bool is_lut(const std::string& name, Lut id);
 std::vector<std::string> lut_names(unsigned layouts);
 std::string lut_names_list(unsigned layouts);
 
+
+// The published layout as name lists.
+// Canonical table names, in canonical order: GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E,
+// Sheen_ash_E (DSPBR 2025x), then the rough-glass tables beyond it (docs/luts.md, "Glass tables"):
+//   Glass_E         [ior_x][roughness][cos_theta]  E_g(mu; r, ior), v outside   (lutgen/albedo.h glass_E)
+//   Glass_inv_E     [ior_x][roughness][cos_theta]  E_g(mu; r, ior), v inside (eta_i = ior)
+//   Glass_E_avg     [ior_x][roughness]             2 Integral E_g mu dmu, outside
+//   Glass_inv_E_avg [ior_x][roughness]             the same, inside
+// on endpoint grids whatever the `grid` option (they reach ior = 1, r = 0 and cos = 0), with
+// ior_x = 2 (ior - 1) / (ior + 1) = 2 sqrt(F_0) in [0, 1] (ior 1 .. 3; above 3 a lookup clamps).
+// (These are the registry's published layout.)
+const std::vector<std::string>& lut_table_names();
+bool is_lut_table_name(const std::string& name);
+bool is_glass_table(const std::string& name);
+// The glass tables' IOR axis glass_ior_of_x / glass_x_of_ior: tables/warped_table.h.
+// Axis names (slowest -> fastest) and default sizes of a table.
+std::vector<std::string> lut_axis_names(const std::string& table);
+std::vector<int> lut_default_size(const std::string& table);
+
 }  // namespace dspbr

@@ -1,4 +1,4 @@
-#include "dspbr/lut/generate.h"
+#include "dspbr/lutgen/generate.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "dspbr/limits.h"
-#include "dspbr/lut/parallel_cells.h"
+#include "dspbr/lutgen/parallel_cells.h"
 
 namespace dspbr {
 
@@ -42,29 +42,11 @@ Table make_table(const std::string& name, const LutOptions& opt) {
 
 }  // namespace
 
-const std::vector<std::string>& lut_table_names() {
-  static const std::vector<std::string> names = lut_names(kPublishedLayout);
-  return names;
-}
-
-bool is_lut_table_name(const std::string& name) { return find_lut(name, kPublishedLayout) != nullptr; }
-
-std::vector<std::string> lut_axis_names(const std::string& t) {
-  const LutInfo& info = published_lut(t);
-  return {info.axes.begin(), info.axes.end()};
-}
-
-bool is_glass_table(const std::string& t) {
-  const LutInfo* info = find_lut(t, kPublishedLayout);
-  return info != nullptr && info->glass;
-}
-
 Integrator lut_default_integrator(const std::string& t) {
   (void)published_lut(t);  // refuses an unknown name
   return Integrator::Quad;
 }
 
-std::vector<int> lut_default_size(const std::string& t) { return published_lut(t).size; }
 
 int lut_default_samples(const std::string& t) {
   // Caps for the adaptive budget (docs/luts.md): only the hardest cells (grazing, smallest

@@ -1,4 +1,4 @@
-#include "dspbr/lut/albedo.h"
+#include "dspbr/lutgen/albedo.h"
 
 #include <algorithm>
 #include <array>
@@ -9,8 +9,8 @@
 #include "dspbr/frame.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
-#include "dspbr/lut/microfacet_quadrature.h"
-#include "dspbr/lut/qmc.h"
+#include "dspbr/lutgen/microfacet_quadrature.h"
+#include "dspbr/lutgen/qmc.h"
 #include "dspbr/rng.h"
 #include "dspbr/sheen.h"
 
@@ -21,7 +21,7 @@ namespace {
 
 // Replicate means of K integrals: `reps` holds one array of K means per replicate (Qmc, Mc), or
 // for the deterministic Quad integrator {values, errors}: the quadrature's K values and their
-// error estimates (lut/microfacet_quadrature.h).
+// error estimates (lutgen/microfacet_quadrature.h).
 template <int K>
 struct Means {
   std::vector<std::array<double, K>> reps;

@@ -1,4 +1,4 @@
-#include "dspbr/lut/lut_io.h"
+#include "dspbr/lutgen/lut_io.h"
 
 #include "dspbr/io/json_write.h"
 
@@ -18,7 +18,7 @@
 #include "dspbr/io/json_fields.h"
 #include "dspbr/io/read_file.h"
 #include "dspbr/limits.h"
-#include "dspbr/lut/table_image.h"
+#include "dspbr/lutgen/table_image.h"
 #include "dspbr/version.h"
 
 namespace dspbr {
@@ -265,74 +265,6 @@ std::string lut_json_text(const std::vector<Table>& tables, const LutOptions& op
   }
   j["tables"] = jt;
   return json_text(j, 1, "table file") + "\n";
-}
-
-std::vector<Table> read_lut_json(const std::string& path) {
-  return read_lut_json_value(read_json_file(path, "table file", limits::kTableFileBytes), path);
-}
-
-std::vector<Table> read_lut_json_text(std::string_view text, const std::string& name) {
-  return read_lut_json_value(parse_json(text, name, "table file"), name);
-}
-
-void require_table_file_version(const nlohmann::json& j) {
-  const auto v = j.find("version");
-  if (v == j.end() || !v->is_number_integer() || v->get<long long>() != kTableFileVersion)
-    throw std::runtime_error("\"version\" must be " + std::to_string(kTableFileVersion) +
-                             " (this build reads table files of that version)");
-}
-
-std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::string& path) {
-  namespace jf = json_fields;
-  try {
-    if (!j.is_object() || j.value("format", nlohmann::json()) != "dspbr_luts")
-      throw std::runtime_error("not a dspbr_luts file (missing \"format\": \"dspbr_luts\")");
-    require_table_file_version(j);
-    std::vector<Table> out;
-    const auto& jt = jf::object_member(j, "tables", "");
-    for (const auto& item : jt.items())
-      if (find_lut(item.key(), kPublishedLayout) == nullptr)
-        throw std::runtime_error("tables." + item.key() + ": unknown table (known: " + lut_names_list(kPublishedLayout) +
-                                 ")");
-    for (const std::string& name : lut_table_names()) {
-      if (!jt.contains(name)) continue;
-      const std::string where = "tables." + name;
-      const auto& e = jf::object_member(jt, name, "tables");
-      Table t;
-      t.name = name;
-      const auto& axes = jf::array_member(e, "axes", where);
-      if (axes.size() != lut_axis_names(name).size())
-        throw std::runtime_error(where + ".axes must hold " + std::to_string(lut_axis_names(name).size()) + " axes");
-      // Sizes within limits.h, so that their product (the number of values) cannot overflow.
-      size_t cells = 1;
-      for (size_t d = 0; d < axes.size(); ++d) {
-        const std::string at = jf::index_path(where + ".axes", d);
-        Axis a;
-        a.name = jf::string_member(axes[d], "name", at);
-        if (a.name != lut_axis_names(name)[d]) throw std::runtime_error(at + ".name must be " + lut_axis_names(name)[d]);
-        const std::string g = jf::string_member(axes[d], "grid", at);
-        if (g != "cell" && g != "endpoint") throw std::runtime_error(at + ".grid: unknown grid '" + g + "'");
-        a.kind = parse_grid_kind(g);
-        a.size = int(jf::integer_member(axes[d], "size", at, a.kind == GridKind::Endpoint ? 2 : 1, limits::kTableAxisSize));
-        a.lo = jf::number_member(axes[d], "lo", at);
-        a.hi = jf::number_member(axes[d], "hi", at);
-        if (!(a.lo < a.hi)) throw std::runtime_error(at + ": lo must be below hi");
-        cells *= size_t(a.size);
-        if (cells > limits::kTableCells)
-          throw std::runtime_error(where + ": more than " + std::to_string(limits::kTableCells) + " cells");
-        t.axes.push_back(a);
-      }
-      t.values = jf::numbers_member(e, "values", where, cells);
-      if (e.contains("errors")) t.errors = jf::numbers_member(e, "errors", where, cells);
-      out.push_back(std::move(t));
-    }
-    if (out.empty()) throw std::runtime_error("\"tables\" holds none of " + lut_names_list(kPublishedLayout));
-    return out;
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error("'" + path + "': " + e.what());
-  } catch (const std::runtime_error& e) {
-    throw std::runtime_error("'" + path + "': " + e.what());
-  }
 }
 
 std::vector<double> write_luts(const std::vector<Table>& tables, const LutOptions& opt, const std::string& dir,

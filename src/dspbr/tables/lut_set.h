@@ -1,15 +1,15 @@
 // The set of DSPBR energy-compensation tables the BSDF reads, in one of two layouts:
 //  - Published: GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E on the published
 //    cell-centred grids with clamp-to-edge multilinear lookups (what a renderer using the
-//    published files computes; lut/table.h);
-//  - Renderer: the warped, Catmull-Rom layout of lut/renderer_luts.h (accurate over the whole
+//    published files computes; tables/table.h);
+//  - Renderer: the warped, Catmull-Rom layout of tables/renderer_luts.h (accurate over the whole
 //    domain; the default of the reference BSDF).
 #pragma once
 #include <string>
 #include <string_view>
 
-#include "dspbr/lut/renderer_luts.h"
-#include "dspbr/lut/table.h"
+#include "dspbr/tables/renderer_luts.h"
+#include "dspbr/tables/table.h"
 
 namespace dspbr {
 
@@ -24,7 +24,7 @@ struct LutSet {
   Table base_e_avg;   // [f0][roughness]
   Table sheen_e;      // [alpha_b][cos_theta]
   Table sheen_ash_e;  // [alpha_b][cos_theta]
-  // Rough-glass tables beyond DSPBR 2025x (lut/generate.h; endpoint grids, ior_x = 2 sqrt(F_0));
+  // Rough-glass tables beyond DSPBR 2025x (lutgen/generate.h; endpoint grids, ior_x = 2 sqrt(F_0));
   // a renderer-layout set holds its own (RendererLuts::glass_*) when its file has them.
   Table glass_e, glass_inv_e;          // [ior_x][roughness][cos_theta]
   Table glass_e_avg, glass_inv_e_avg;  // [ior_x][roughness]
@@ -44,7 +44,7 @@ struct LutSet {
   double E_base_avg(double roughness, double f0) const;
   double E_sheen(double cos_theta, double alpha_b) const;
   double E_sheen_ash(double cos_theta, double alpha_b) const;
-  // E_g(mu; r, ior) of the rough dielectric interface (lut/albedo.h glass_E), v outside or inside,
+  // E_g(mu; r, ior) of the rough dielectric interface (lutgen/albedo.h glass_E), v outside or inside,
   // and its cosine average; false from has_glass() when the set holds no glass tables.
   bool has_glass() const;
   double E_glass(double cos_theta, double roughness, double ior, bool inside) const;

@@ -1,4 +1,4 @@
-#include "dspbr/lut/qmc.h"
+#include "dspbr/lutgen/qmc.h"
 
 #include "dspbr/rng.h"
 

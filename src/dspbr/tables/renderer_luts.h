@@ -37,8 +37,8 @@
 #include <cmath>
 #include <vector>
 
-#include "dspbr/lut/table_registry.h"
-#include "dspbr/lut/warped_table.h"
+#include "dspbr/tables/table_registry.h"
+#include "dspbr/tables/warped_table.h"
 
 namespace dspbr {
 

@@ -17,7 +17,7 @@
 #include <memory>
 
 #include "dspbr/cubic_spline.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/tables/lut_set.h"
 
 namespace dspbr {
 

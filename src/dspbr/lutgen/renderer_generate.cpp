@@ -1,12 +1,12 @@
-#include "dspbr/lut/renderer_generate.h"
+#include "dspbr/lutgen/renderer_generate.h"
 
 #include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "dspbr/lut/parallel_cells.h"
-#include "dspbr/lut/table_registry.h"
+#include "dspbr/lutgen/parallel_cells.h"
+#include "dspbr/tables/table_registry.h"
 #include "dspbr/quadrature.h"
 
 namespace dspbr {

@@ -1,6 +1,6 @@
 // The table generator behind `dspbr lut`: the six DSPBR energy-compensation tables (see
 // docs/luts.md for definitions, layout and conventions), integrated cell by cell with the
-// functions of lut/albedo.h, in parallel with TBB. Each cell draws its random numbers from
+// functions of lutgen/albedo.h, in parallel with TBB. Each cell draws its random numbers from
 // (settings.seed, stream = table id * 2^32 + cell index), so the result is bit-identical
 // whatever the thread count.
 #pragma once
@@ -11,38 +11,22 @@
 #include <string>
 #include <vector>
 
-#include "dspbr/lut/albedo.h"
-#include "dspbr/lut/warped_table.h"
-#include "dspbr/lut/table.h"
-#include "dspbr/lut/table_registry.h"
+#include "dspbr/lutgen/albedo.h"
+#include "dspbr/tables/warped_table.h"
+#include "dspbr/tables/table.h"
+#include "dspbr/tables/table_registry.h"
 
 namespace dspbr {
 
-// Canonical table names, in canonical order: GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E,
-// Sheen_ash_E (DSPBR 2025x), then the rough-glass tables beyond it (docs/luts.md, "Glass tables"):
-//   Glass_E         [ior_x][roughness][cos_theta]  E_g(mu; r, ior), v outside   (lut/albedo.h glass_E)
-//   Glass_inv_E     [ior_x][roughness][cos_theta]  E_g(mu; r, ior), v inside (eta_i = ior)
-//   Glass_E_avg     [ior_x][roughness]             2 Integral E_g mu dmu, outside
-//   Glass_inv_E_avg [ior_x][roughness]             the same, inside
-// on endpoint grids whatever the `grid` option (they reach ior = 1, r = 0 and cos = 0), with
-// ior_x = 2 (ior - 1) / (ior + 1) = 2 sqrt(F_0) in [0, 1] (ior 1 .. 3; above 3 a lookup clamps).
-// (The registry, lut/table_registry.h, declares them; these are its published layout.)
-const std::vector<std::string>& lut_table_names();
-bool is_lut_table_name(const std::string& name);
-bool is_glass_table(const std::string& name);
-// The glass tables' IOR axis glass_ior_of_x / glass_x_of_ior: lut/warped_table.h.
 // The integrator a table uses unless one is chosen (LutOptions::integrator): Quad for every
 // table (measured: docs/luts.md, "Speed").
 Integrator lut_default_integrator(const std::string& table);
 
-// Axis names (slowest -> fastest) and default sizes of a table.
-std::vector<std::string> lut_axis_names(const std::string& table);
-std::vector<int> lut_default_size(const std::string& table);
 // Default maximum samples per cell (all replicates); the averages integrate over one more
 // dimension and get more. With the default target error most cells stop far earlier.
 int lut_default_samples(const std::string& table);
 // Default adaptive target of Qmc and Mc: standard error 1e-5 per cell, a tenth of the 1e-4
-// accuracy goal (Quad: kQuadDefaultTolerance, lut/albedo.h).
+// accuracy goal (Quad: kQuadDefaultTolerance, lutgen/albedo.h).
 constexpr double kLutDefaultTargetError = 1e-5;
 // LutOptions::target_error: "the chosen integrator's default".
 constexpr double kLutIntegratorDefault = std::numeric_limits<double>::quiet_NaN();

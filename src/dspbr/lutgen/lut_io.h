@@ -6,13 +6,13 @@
 //    definitions under PBRLUT_IMPLEMENTATION, values printed with max_digits10 = 9 digits).
 //  - dspbr_luts.json: axes, values (double), per-cell standard errors, integrator settings.
 #pragma once
-#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "dspbr/lut/generate.h"
-#include "dspbr/lut/table.h"
+#include "dspbr/lutgen/generate.h"
+#include "dspbr/tables/table_files.h"
+#include "dspbr/tables/table.h"
 
 namespace dspbr {
 
@@ -43,19 +43,6 @@ std::vector<float> read_lut_exr(const std::string& path, int* width, int* height
 // The header text and the JSON text of a table set.
 std::string lut_header_text(const std::vector<Table>& tables, const LutOptions& opt);
 std::string lut_json_text(const std::vector<Table>& tables, const LutOptions& opt);
-
-// Reads the tables of a dspbr_luts.json (any subset of the six). Throws std::runtime_error
-// naming the file and the problem (file errors and malformed JSON: io/read_file.h).
-std::vector<Table> read_lut_json(const std::string& path);
-// The same from the file's text, or from its parsed JSON; `name` stands for the file in the
-// messages.
-std::vector<Table> read_lut_json_text(std::string_view text, const std::string& name);
-std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::string& name);
-
-// The version of both table file formats (dspbr_luts, dspbr_renderer_luts) this build writes and
-// reads; a reader refuses another (std::runtime_error naming the field).
-constexpr int kTableFileVersion = 1;
-void require_table_file_version(const nlohmann::json& j);
 
 // Writes every requested format into dir (created when missing). Returns the largest EXR
 // rounding error per table (same order as tables; 0 when no EXR was written).
