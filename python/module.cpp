@@ -21,9 +21,10 @@
 #include "dspbr/io/message.h"
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/limits.h"
-#include "dspbr/lut/generate.h"
-#include "dspbr/lut/lut_io.h"
-#include "dspbr/lut/lut_set.h"
+#include "dspbr/lutgen/generate.h"
+#include "dspbr/lutgen/lut_io.h"
+#include "dspbr/lutgen/renderer_generate.h"
+#include "dspbr/tables/lut_set.h"
 #include "dspbr/material.h"
 #include "dspbr/params/material_instance.h"
 #include "dspbr/params/material_params.h"
@@ -492,10 +493,39 @@ py::array_t<double> array_of(const std::vector<double>& values, const std::vecto
   return out;
 }
 
+// The stored values of a renderer-layout set, {name: array} (as lut.load reads its file).
+py::dict renderer_arrays(const RendererLuts& luts) {
+  py::dict d;
+  for (const char* name : luts.held_names()) {
+    const WarpedTable& t = *luts.table(name);
+    d[py::str(name)] = array_of(t.values, t.axes);
+  }
+  return d;
+}
+
 py::dict lut_generate(const py::object& tables, const py::object& size, const std::string& integrator,
                       const py::object& samples, double target_error, const py::object& randomizations,
                       const py::object& seed, const py::object& threads,
-                      const std::string& grid, bool errors) {
+                      const std::string& grid, bool errors, const std::string& layout) {
+  LutLayout lay{};
+  try {
+    lay = parse_lut_layout(layout);
+  } catch (const std::invalid_argument& e) {
+    fail(std::string("layout: ") + e.what());
+  }
+  if (lay == LutLayout::Renderer) {
+    // The renderer layout's grids are fixed (docs/luts.md): sizes, grid and errors do not apply.
+    if (!size.is_none()) fail("size: the renderer layout's grids are fixed (docs/luts.md, \"Renderer layout\")");
+    if (errors) fail("errors: the renderer layout returns its stored values only");
+    const LutOptions opt =
+        lut_options(tables, size, integrator, samples, target_error, randomizations, seed, threads, "cell");
+    RendererLuts luts;
+    {
+      py::gil_scoped_release release;
+      luts = generate_renderer_luts(opt);
+    }
+    return renderer_arrays(luts);
+  }
   const LutOptions opt =
       lut_options(tables, size, integrator, samples, target_error, randomizations, seed, threads, grid);
   std::vector<Table> out;
@@ -543,13 +573,9 @@ py::dict lut_load(const py::object& path_obj) {
   } catch (const std::exception& e) {
     fail(e.what());
   }
+  if (set.layout == LutLayout::Renderer) return renderer_arrays(set.renderer);
   py::dict d;
-  if (set.layout == LutLayout::Renderer) {
-    for (const char* name : set.renderer.held_names()) {
-      const WarpedTable& t = *set.renderer.table(name);
-      d[py::str(name)] = array_of(t.values, t.axes);
-    }
-  } else {
+  {
     for (const Table* t : {&set.ggx_e, &set.ggx_e_avg, &set.base_e, &set.base_e_avg, &set.sheen_e, &set.sheen_ash_e,
                            &set.glass_e, &set.glass_inv_e, &set.glass_e_avg, &set.glass_inv_e_avg})
       if (!t->values.empty()) d[py::str(t->name)] = array_of(t->values, t->axes);
@@ -578,20 +604,32 @@ py::object scene_analyze(const py::object& path_obj, bool parameters) {
 
 }  // namespace dspbr::python
 
+namespace dspbr::python {
+void bind_lookup(pybind11::module_& m);  // lookup_bindings.cpp
+}
+
 PYBIND11_MODULE(_dspbr, m) {
   using namespace dspbr;
   using namespace dspbr::python;
   namespace py = pybind11;
   m.doc() = "DSPBR 2025x reference toolchain: reference BSDF, energy-compensation tables, scene analysis";
+  // Signatures are written as the first line of each docstring, with the types a caller passes
+  // (numpy.typing.ArrayLike, dicts, paths) instead of pybind11's `object`; the type stubs
+  // (python/dspbr/_dspbr/*.pyi, scripts/make_stubs.sh) are generated from them. The signature
+  // lines leave out the keyword-only marker `*` (mypy 1.0's stubgen cannot parse it): the stubs
+  // accept positional use of the keyword-only arguments, which the module refuses at run time.
+  py::options options;
+  options.disable_function_signatures();
   m.attr("__version__") = version_string();
   m.attr("REFLECTION") = uint32_t(kLobeReflection);
   m.attr("TRANSMISSION") = uint32_t(kLobeTransmission);
   m.attr("DELTA") = uint32_t(kLobeDelta);
   m.attr("GLOSSY") = uint32_t(kLobeGlossy);
   m.attr("DIFFUSE") = uint32_t(kLobeDiffuse);
-  m.def("parameter_ids", &material_parameter_ids, "The 38 parameter ids of the generic material (uiOrder).");
+  m.def("parameter_ids", &material_parameter_ids,
+        "parameter_ids() -> list[str]\n\nThe 38 parameter ids of the generic material (uiOrder).");
   m.def("component_names", [] { return component_names(kAllComponents); },
-        "The component names a Bsdf(components=[...]) accepts.");
+        "component_names() -> list[str]\n\nThe component names a Bsdf(components=[...]) accepts.");
 
   py::class_<PyBsdf>(m, "Bsdf", R"doc(
 The DSPBR 2025x reference BSDF of one material (src/dspbr/bsdf/material_bsdf.h, docs/bsdf.md).
@@ -614,49 +652,67 @@ from the surface, normalized here; a (3,) argument broadcasts against an (N, 3) 
            py::arg("material") = py::none(), py::kw_only(), py::arg("components") = py::none(),
            py::arg("sheen") = "main", py::arg("tables") = "renderer", py::arg("position") = py::make_tuple(0, 0, 0),
            py::arg("object_normal") = py::make_tuple(0, 0, 1), py::arg("wavelength") = 0.0, py::arg("area") = 1.0,
-           py::arg("transmission_compensation") = false)
+           py::arg("transmission_compensation") = false,
+           "__init__(self, material: typing.Any = None, components: typing.Optional[list[str]] = None, "
+           "sheen: str = 'main', tables: str = 'renderer', position: numpy.typing.ArrayLike = (0, 0, 0), "
+           "object_normal: numpy.typing.ArrayLike = (0, 0, 1), wavelength: float = 0.0, area: float = 1.0, "
+           "transmission_compensation: bool = False) -> None\n\nSee the class.")
       .def("eval", &PyBsdf::eval, py::arg("v"), py::arg("l"),
-           "f(v, l) without the cosine: (N, 3) RGB for (N, 3) directions, (3,) for (3,).")
+           "eval(self, v: numpy.typing.ArrayLike, l: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]\n\n"
+           "f(v, l) without the cosine [1/sr]: (N, 3) RGB for (N, 3) directions, (3,) for (3,).")
       .def("pdf", &PyBsdf::pdf, py::arg("v"), py::arg("l"),
-           "Solid-angle density with which sample(v, .) gives l: (N,) (a float for (3,) arguments).")
+           "pdf(self, v: numpy.typing.ArrayLike, l: numpy.typing.ArrayLike) -> typing.Union[numpy.typing.NDArray[numpy.float64], float]\n\n"
+           "Solid-angle density [1/sr] with which sample(v, .) gives l: (N,) (a float for (3,) arguments).")
       .def("sample", &PyBsdf::sample, py::arg("v"), py::arg("u"),
+           "sample(self, v: numpy.typing.ArrayLike, u: numpy.typing.ArrayLike) -> dict[str, typing.Any]\n\n"
            "Samples l for v with uniform numbers u in [0, 1)^3 per row: dict of arrays l, weight (= f |cos| / pdf; "
            "for a delta lobe reflectance / probability), pdf, flags (REFLECTION | TRANSMISSION | DELTA | GLOSSY | "
            "DIFFUSE), valid; failed samples have valid False and zeros. For (3,) arguments: l and weight (3,), pdf, "
            "flags and valid scalars.")
-      .def("emission", &PyBsdf::emission, py::arg("v"), "Emitted radiance L_e(v), (N, 3) or (3,).")
+      .def("emission", &PyBsdf::emission, py::arg("v"), "emission(self, v: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]\n\n"
+           "Emitted radiance L_e(v) [W/(sr m^2), the material's units], (N, 3) or (3,).")
       .def("delta_probability", &PyBsdf::delta_probability, py::arg("v"),
+           "delta_probability(self, v: numpy.typing.ArrayLike) -> typing.Union[numpy.typing.NDArray[numpy.float64], float]\n\n"
            "Total probability of the delta lobes for v, (N,) or a float.")
-      .def_property_readonly("components", &PyBsdf::components, "The components included (names).")
-      .def_property_readonly("ior", &PyBsdf::ior, "The IOR used (ior, or eta(wavelength) with dispersion).")
-      .def_property_readonly("flags", &PyBsdf::flags, "Union of the lobe flags the BSDF can produce.")
+      .def_property_readonly("components", &PyBsdf::components, "(self) -> list[str]\n\nThe components included (names).")
+      .def_property_readonly("ior", &PyBsdf::ior, "(self) -> float\n\nThe IOR used (ior, or eta(wavelength) with dispersion).")
+      .def_property_readonly("flags", &PyBsdf::flags, "(self) -> int\n\nUnion of the lobe flags the BSDF can produce.")
       .def_property_readonly("material", &PyBsdf::material,
-                             "Every parameter of the material as validated, {id: value} (JSON spelling).")
-      .def("__repr__", &PyBsdf::repr);
+                             "(self) -> dict[str, typing.Any]\n\nEvery parameter of the material as validated, {id: value} (JSON spelling).")
+      .def("__repr__", &PyBsdf::repr, "__repr__(self) -> str");
 
   auto lut = m.def_submodule("lut", "Energy-compensation tables (docs/luts.md)");
-  lut.def("names", &lut_table_names, "Table names in canonical order.");
+  lut.def("names", &lut_table_names, "names() -> list[str]\n\nTable names in canonical order.");
   lut.def("generate", &lut_generate, py::arg("tables") = py::none(), py::arg("size") = py::none(), py::kw_only(),
           py::arg("integrator") = "", py::arg("samples") = 0, py::arg("target_error") = kLutIntegratorDefault,
           py::arg("randomizations") = 8, py::arg("seed") = py::int_(1), py::arg("threads") = 0,
-          py::arg("grid") = "cell", py::arg("errors") = false,
-          R"doc(
-Generates tables of the published layout as `dspbr lut` does with the same settings (bit-identical
+          py::arg("grid") = "cell", py::arg("errors") = false, py::arg("layout") = "published",
+          R"doc(generate(tables: typing.Optional[list[str]] = None, size: typing.Optional[dict[str, typing.Any]] = None, integrator: str = '', samples: int = 0, target_error: float = float('nan'), randomizations: int = 8, seed: int = 1, threads: int = 0, grid: str = 'cell', errors: bool = False, layout: str = 'published') -> dict[str, typing.Any]
+
+Generates tables (by default of the published layout) as `dspbr lut` does with the same settings (bit-identical
 values for the same seed, whatever the thread count). tables: list of names (default: all six);
 size: {name: int or tuple of ints, slowest axis first}; integrator "quad" | "qmc" | "mc" ("": quad, deterministic); samples (qmc/mc; 0: the
 table's default maximum); target_error (nan: the integrator's default, 1e-7 quad, 1e-5 qmc/mc;
 qmc/mc 0: fixed budget); randomizations; seed; threads (0: all
 cores); grid "cell" | "endpoint". Returns {name: array of the table's shape}, or with errors=True
 {name: {"values": array, "errors": per-cell standard errors}}.
+layout="renderer": the renderer layout as `dspbr lut --layout renderer` makes it (fixed warped grids;
+its glass tables when tables holds Glass_E): {name: stored values}, as lut.load returns its file
+(encodings and warps: docs/luts.md, "Renderer layout"); size, grid and errors do not apply.
 )doc");
   lut.def("axes", &lut_axes_of, py::arg("name"), py::arg("size") = py::none(), py::arg("grid") = "cell",
+          "axes(name: str, size: typing.Any = None, grid: str = 'cell') -> list[tuple[str, numpy.typing.NDArray[numpy.float64]]]\n\n"
           "The axes of a table, slowest first: list of (axis name, sample coordinates).");
   lut.def("load", &lut_load, py::arg("path"),
+          "load(path: typing.Union[str, os.PathLike[str]]) -> dict[str, numpy.typing.NDArray[numpy.float64]]\n\n"
           "Reads dspbr_luts.json (published layout: {name: values}) or dspbr_renderer_luts.json (renderer layout: "
           "{name: stored values}, encoded as the file says).");
 
+  bind_lookup(m);
+
   auto scene = m.def_submodule("scene", "glTF scenes and material instances (docs/gltf_mapping.md)");
   scene.def("analyze", &scene_analyze, py::arg("path"), py::kw_only(), py::arg("parameters") = false,
+            "analyze(path: typing.Union[str, os.PathLike[str]], parameters: bool = False) -> dict[str, typing.Any]\n\n"
             "Per material the active components and the tables needed: the dict `dspbr scene analyze --json` prints "
             "(with parameters=True also each material's DSPBR parameters).");
 }

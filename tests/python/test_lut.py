@@ -104,3 +104,17 @@ def test_bad_threads_seed_and_files(tmp_path):
     bad.write_text("{")
     with pytest.raises(ValueError, match="bad.json"):
         dspbr.lut.load(bad)
+
+
+def test_generate_renderer_layout_equals_the_committed_file():
+    # The renderer layout from Python is the CLI's (the committed file was written by `dspbr lut`):
+    # same stored values, bit for bit, for the tables without glass.
+    made = dspbr.lut.generate(["GGX_E"], layout="renderer")
+    committed = dspbr.lut.load(os.path.join(SOURCE_DIR, "luts", "dspbr_renderer_luts.json"))
+    assert set(made) == {"GGX_E", "GGX_beta", "GGX_E_avg", "GGX_B_avg", "Sheen_E", "Sheen_ash_E"}
+    for name, values in made.items():
+        assert np.array_equal(values, committed[name]), name
+    with pytest.raises(ValueError, match="layout: "):
+        dspbr.lut.generate(["GGX_E"], layout="gpu")
+    with pytest.raises(ValueError, match="size: the renderer layout's grids are fixed"):
+        dspbr.lut.generate(["GGX_E"], {"GGX_E": (4, 4)}, layout="renderer")
