@@ -11,6 +11,7 @@ PKGS=(build-essential cmake pkg-config
       python3-numpy python3-matplotlib python3-jinja2 python3-openimageio
       python3-dev pybind11-dev python3-pybind11 python3-pytest
       python3-venv python3-pip python3-setuptools python3-wheel mypy  # pip install . (pyproject.toml), stubs
+      mesa-vulkan-drivers libvulkan-dev  # lavapipe: the shader tests on a Vulkan driver (tests/vulkan.cmake)
       clang libclang-rt-14-dev)  # libFuzzer + sanitizers (fuzz/, CTest fuzz_short)
 missing=()
 for p in "${PKGS[@]}"; do
