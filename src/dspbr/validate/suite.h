@@ -47,6 +47,7 @@ struct SuiteSettings {
   // own standard error is reported but never widens it (a noisy table must not validate itself).
   double lut_tol = 2e-3;           // published layout (absolute; relative where the value exceeds 1)
   double renderer_lut_tol = 1e-4;  // renderer layout, the value its lookups return at a sample
+  double renderer_avg_lut_tol = 1e-3;  // renderer layout, averages (of the directional lookups)
   // Pictures
   int image_res = 0;
   std::size_t image_spp = 0;
