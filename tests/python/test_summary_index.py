@@ -1,7 +1,7 @@
 # The committed index of the full validation report (docs/validation/README.md) is written by
 # scripts/report/summary_index.py: here from a quick run, its banner, run record and verdict table
-# must be those of the report, its figures copied, and figures of an earlier index removed. Every
-# figure the docs show must exist.
+# must be those of the report, its figures copied, and figures of an earlier index removed. The
+# committed index must be the one of a full run, and every figure the docs show must exist.
 import glob
 import json
 import os
@@ -36,6 +36,12 @@ def test_index_of_a_quick_report(tmp_path):
     for name in re.findall(r"!\[[^\]]*\]\(([^)]+)\)", text):
         assert (dest / name).is_file(), name
     assert subprocess.run([sys.executable, SCRIPT, str(tmp_path / "none"), str(dest)]).returncode == 2
+
+
+def test_committed_index_is_a_full_run():
+    text = open(os.path.join(SOURCE_DIR, "docs", "validation", "README.md"), encoding="utf-8").read()
+    assert "# Validation report index (full run)" in text
+    assert "**FULL run." in text
 
 
 def test_every_figure_the_docs_show_exists():
