@@ -36,6 +36,11 @@ def test_index_of_a_quick_report(tmp_path):
     for name in re.findall(r"!\[[^\]]*\]\(([^)]+)\)", text):
         assert (dest / name).is_file(), name
     assert subprocess.run([sys.executable, SCRIPT, str(tmp_path / "none"), str(dest)]).returncode == 2
+    # docs/validation.md states the quick run's furnace settings: those of the run.
+    doc = open(os.path.join(SOURCE_DIR, "docs", "validation.md"), encoding="utf-8").read()
+    e = rep["energy"]
+    assert re.search(rf"^\| BSDF samples \| {e['samples']} \|", doc, flags=re.M), e["samples"]
+    assert re.search(rf"^\| eval directions \| 2 × {int((e['eval_directions'] // 2) ** 0.5)}² \|", doc, flags=re.M)
 
 
 def test_committed_index_is_a_full_run():
