@@ -37,10 +37,11 @@ struct Furnace {
   EnergyVerdict verdict;
 };
 
-Furnace furnace(const Bsdf& b, const Vec3& v, const EnergyTolerances& tol = {}) {
+Furnace furnace(const Bsdf& b, const Vec3& v, const EnergyTolerances& tol = {}, int strata = 200,
+                std::size_t samples = 40000) {
   Furnace f;
-  f.eval = albedo_eval(b, v, 200, 7, 1);
-  f.sampled = albedo_sampled(b, v, 40000, 7, 2);
+  f.eval = albedo_eval(b, v, strata, 7, 1);
+  f.sampled = albedo_sampled(b, v, samples, 7, 2);
   f.verdict = judge_energy(f.eval, f.sampled, tol);
   return f;
 }
@@ -56,7 +57,7 @@ TEST(ValidateFurnace, LambertAlbedoMatchesClosedForm) {
     EXPECT_NEAR(f.eval.value.r, 0.8, 4 * f.eval.std_error.r + 1e-12) << c;
     // Cosine sampling of a Lambert lobe has weight exactly rho: zero variance.
     EXPECT_NEAR(f.sampled.total.value.r, 0.8, 1e-12) << c;
-    EXPECT_TRUE(f.verdict.conserving && f.verdict.estimators_agree);
+    EXPECT_TRUE(f.verdict.conserving() && f.verdict.estimators_agree());
   }
 }
 
@@ -70,7 +71,7 @@ TEST(ValidateFurnace, GgxAlbedoMatchesQuadrature) {
   EXPECT_NEAR(f.eval.value.r, ref, 4 * f.eval.std_error.r);
   EXPECT_NEAR(f.sampled.total.value.r, ref, 4 * f.sampled.total.std_error.r);
   EXPECT_LT(ref, 1.0);
-  EXPECT_TRUE(f.verdict.conserving && f.verdict.estimators_agree);
+  EXPECT_TRUE(f.verdict.conserving() && f.verdict.estimators_agree());
 }
 
 TEST(ValidateFurnace, DeltaLobeCountedOnlyBySampling) {
@@ -78,32 +79,83 @@ TEST(ValidateFurnace, DeltaLobeCountedOnlyBySampling) {
   const Furnace f = furnace(MirrorPlusLambert(0.3, 0.4, 0.7), dir(0.8));
   EXPECT_NEAR(f.sampled.total.value.r, 1.0, 4 * f.sampled.total.std_error.r + 1e-12);
   EXPECT_NEAR(f.eval.value.r, 0.7, 4 * f.eval.std_error.r + 1e-12);
-  EXPECT_TRUE(f.verdict.preserving && f.verdict.conserving && f.verdict.estimators_agree);
+  EXPECT_TRUE(f.verdict.preserving() && f.verdict.conserving() && f.verdict.estimators_agree());
 }
 
 TEST(ValidateFurnace, EnergyGainingLobeFailsConservation) {
   const Furnace f = furnace(LambertLobe(1.05), dir(0.7));
-  EXPECT_FALSE(f.verdict.conserving);
+  EXPECT_FALSE(f.verdict.conserving());
+}
+
+TEST(ValidateFurnace, EnergyGainingLobeFailsWithPowerAndIsNotJudgedWithout) {
+  // Mirror 0.35 (chosen with probability 0.5) + Lambert 0.7: E = 1.05, beyond 1 + 0.01. The
+  // lobe choice makes every estimate of the mirror part noisy (weights 0.7 or 0).
+  const MirrorPlusLambert gain(0.35, 0.5, 0.7);
+  const Furnace many = furnace(gain, dir(0.8));
+  EXPECT_EQ(many.verdict.conservation.decision, Decision::Fail);
+  EXPECT_NEAR(many.verdict.conservation.value, 1.05, many.verdict.conservation.band);
+  // 16 samples: the band is far wider than the tolerance. The check could not have failed, so it
+  // must not pass: NOT JUDGED, with the band and the tolerance in the reason.
+  const Furnace few = furnace(gain, dir(0.8), {}, 2, 16);
+  const BoundVerdict& c = few.verdict.conservation;
+  EXPECT_EQ(c.decision, Decision::NotJudged);
+  EXPECT_GT(c.band, 0.01 * 10);
+  EXPECT_EQ(c.tolerance, 0.01);
+  EXPECT_NE(c.reason().find("wider than the tolerance 0.01"), std::string::npos) << c.reason();
+  // The same budget on a lobe without variance (Lambert, cosine sampling: weight exactly rho)
+  // has a zero band, so it is judged: pass at 1, fail at 1.05.
+  EXPECT_EQ(furnace(LambertLobe(1.0), dir(0.8), {}, 2, 16).verdict.conservation.decision, Decision::Pass);
+  EXPECT_EQ(furnace(LambertLobe(1.05), dir(0.8), {}, 2, 16).verdict.conservation.decision, Decision::Fail);
+}
+
+TEST(ValidateFurnace, PassOnlyWhereTheBandLiesWithinTheTolerance) {
+  // A correct mixture (mirror 0.3 + Lambert 0.7, E = 1): PASS with enough samples, where the
+  // band of the narrower estimator is within the tolerance; NOT JUDGED with 16 samples.
+  const MirrorPlusLambert one(0.3, 0.5, 0.7);
+  const Furnace many = furnace(one, dir(0.8));
+  for (const BoundVerdict* b : {&many.verdict.conservation, &many.verdict.preservation}) {
+    EXPECT_EQ(b->decision, Decision::Pass);
+    EXPECT_LE(b->band, b->tolerance);
+  }
+  const Furnace few = furnace(one, dir(0.8), {}, 2, 16);
+  EXPECT_EQ(few.verdict.conservation.decision, Decision::NotJudged);
+  EXPECT_EQ(few.verdict.preservation.decision, Decision::NotJudged);
+  // Synthetic estimates: E = 1 +- 0.1 (one standard error) by both estimators: band 0.4.
+  AlbedoEstimate e;
+  e.value = Rgb(1.0);
+  e.std_error = Rgb(0.1);
+  SampledAlbedo s;
+  s.total = s.non_delta = e;
+  s.delta.value = Rgb(0.0);
+  const EnergyVerdict v = judge_energy(e, s, EnergyTolerances{});
+  EXPECT_EQ(v.conservation.decision, Decision::NotJudged);
+  EXPECT_NEAR(v.conservation.band, 0.4, 1e-12);
+  EXPECT_EQ(v.conservation.reason(), "band ±0.4 wider than the tolerance 0.01");
+  EXPECT_EQ(v.agreement.decision, Decision::NotJudged);  // 4 hypot(0.1, 0.1) > 0.02
+  // A gain of 2 bands is detected whatever the width.
+  e.value = Rgb(1.0 + 0.01 + 0.8);
+  s.total = e;
+  EXPECT_EQ(judge_energy(e, s, EnergyTolerances{}).conservation.decision, Decision::Fail);
 }
 
 TEST(ValidateFurnace, LossyLobeFailsPreservationButConserves) {
   const Furnace f = furnace(LambertLobe(0.9), dir(0.7));
-  EXPECT_FALSE(f.verdict.preserving);
-  EXPECT_TRUE(f.verdict.conserving);
-  EXPECT_TRUE(furnace(LambertLobe(1.0), dir(0.7)).verdict.preserving);
+  EXPECT_FALSE(f.verdict.preserving());
+  EXPECT_TRUE(f.verdict.conserving());
+  EXPECT_TRUE(furnace(LambertLobe(1.0), dir(0.7)).verdict.preserving());
 }
 
 TEST(ValidateFurnace, WrongSampleWeightMakesEstimatorsDisagree) {
   const Furnace ok = furnace(GgxReflectionLobe(0.3), dir(0.5));
-  EXPECT_TRUE(ok.verdict.estimators_agree);
+  EXPECT_TRUE(ok.verdict.estimators_agree());
   const Furnace bad = furnace(WeightScaledGgx(0.3, 1.1), dir(0.5));
-  EXPECT_FALSE(bad.verdict.estimators_agree);
+  EXPECT_FALSE(bad.verdict.estimators_agree());
 }
 
 TEST(ValidateFurnace, SamplerMissingPartOfTheLobeMakesEstimatorsDisagree) {
   // The leaky sampler wastes 20% of its samples with zero weight: it under-counts the albedo.
   const Furnace bad = furnace(LeakyLambert(1.0, 0.2), dir(0.5));
-  EXPECT_FALSE(bad.verdict.estimators_agree);
+  EXPECT_FALSE(bad.verdict.estimators_agree());
 }
 
 // ---------------------------------------------------------------- reciprocity

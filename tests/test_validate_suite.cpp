@@ -143,12 +143,12 @@ int table_failures(const SuiteResult& r) {
 }  // namespace
 
 // Broken double of the table check: a plain-MC GGX_E whose noise is as large as its values (5.6
-// at the first cell, where the albedo is below 1). On the quick run's cells (the corners) its own
-// standard errors are so large that an allowance widened by them ("2e-3 + 4 se") passes every
-// cell; the fixed allowance must fail it. The same layout integrated by QMC passes.
+// at the first cell, where the albedo is below 1). On the corner cells its own standard errors are
+// so large that an allowance widened by them ("2e-3 + 4 se") passes every cell; the fixed allowance
+// must fail it. The same layout integrated by QMC passes.
 TEST(ValidateSuite, TableCheckFailsANoisyTableWhateverItsOwnErrorEstimate) {
   SuiteSettings s = tiny_settings();
-  ASSERT_EQ(s.lut_cells_per_axis, 2);  // the quick run's spread: indices 0 and 7 of each axis
+  s.lut_cells_per_axis = 2;  // the corners: indices 0 and 7 of each axis
   const LutSet noisy = ggx_e_only(Integrator::Mc);
   const SuiteResult bad = run_suite(Catalog{}, &noisy, s, ::testing::TempDir() + "/validate_suite_t1");
   EXPECT_EQ(table_failures(bad), 1);
@@ -243,4 +243,85 @@ TEST(ValidateSuite, SheenLayeringLossMatchesTheSpecFormula) {
   EXPECT_LT(predicted, 0.95);  // a real loss, not noise
   // Tolerance: 4 sigma + 5e-3 for the table interpolation of E_b inside the BSDF.
   EXPECT_NEAR(e.total.value.g, predicted, 4 * e.total.std_error.g + 5e-3);
+}
+
+namespace {
+const nlohmann::json* checked_table(const SuiteResult& r, Lut id) {
+  for (const auto& t : r.report["tables"]["tables"])
+    if (t["name"] == lut_name(id)) return &t;
+  return nullptr;
+}
+}  // namespace
+
+// The table check covers every table the BSDF cases read: with the built-in renderer set, each
+// table of the registry's renderer layout (GGX_beta, GGX_B_avg and the four glass tables
+// included), the values its lookups return at its samples against the reference quadrature, and
+// they pass; a renderer table scaled by 0.95 fails.
+TEST(ValidateSuite, TableCheckCoversEveryRendererTable) {
+  const SuiteSettings s = tiny_settings();
+  const LutSet& ren = LutSet::builtin();
+  ASSERT_EQ(ren.layout, LutLayout::Renderer);
+  const SuiteResult r = run_suite(Catalog{}, &ren, s, ::testing::TempDir() + "/validate_suite_t3");
+  EXPECT_EQ(table_failures(r), 0);
+  EXPECT_EQ(r.report["tables"]["layout"], "renderer");
+  for (const LutInfo& info : lut_registry()) {
+    if ((info.layouts & kRendererLayout) == 0) continue;
+    const nlohmann::json* t = checked_table(r, info.id);
+    ASSERT_NE(t, nullptr) << info.name;
+    EXPECT_EQ((*t)["verdict"], "PASS") << info.name << ": " << (*t)["max_abs_error"];
+    EXPECT_GT((*t)["nodes"].get<int>(), 0) << info.name;
+    EXPECT_LE((*t)["max_abs_error"].get<double>(), (*t)["tolerance"].get<double>()) << info.name;
+    EXPECT_EQ((*t)["tolerance"].get<double>(), info.average ? s.renderer_avg_lut_tol : s.renderer_lut_tol) << info.name;
+  }
+  LutSet broken = ren;
+  for (double& v : broken.renderer.table(Lut::GgxBAvg).values) v *= 0.95;
+  const SuiteResult b = run_suite(Catalog{}, &broken, s, ::testing::TempDir() + "/validate_suite_t4");
+  EXPECT_EQ(table_failures(b), 1);
+  EXPECT_EQ((*checked_table(b, Lut::GgxBAvg))["verdict"], "FAIL");
+}
+
+// A case whose furnace band is wider than the tolerance (mirror 0.3 chosen with probability 0.5
+// + Lambert 0.7, E = 1, 256 samples: band about 4 x 0.35 / 16) is NOT JUDGED, not PASS: counted
+// in the summary and the banner, with band and tolerance in its row. The zero-variance Lambert
+// beside it is judged (PASS).
+TEST(ValidateSuite, WideFurnaceBandIsNotJudgedAndCounted) {
+  Catalog cat;
+  for (const auto& [name, bsdf] : std::vector<std::pair<std::string, std::shared_ptr<const Bsdf>>>{
+           {"noisy mixture", std::make_shared<MirrorPlusLambert>(0.3, 0.5, 0.7)},
+           {"lambert", std::make_shared<LambertLobe>(1.0)}}) {
+    BsdfCase c;
+    c.name = name;
+    c.component = "test";
+    c.bsdf = bsdf;
+    c.claim = EnergyClaim::Preserving;
+    cat.cases.push_back(c);
+  }
+  SuiteSettings s = tiny_settings();
+  s.furnace_samples = 256;
+  s.furnace_cos = {0.8};
+  const SuiteResult r = run_suite(cat, nullptr, s, ::testing::TempDir() + "/validate_suite_nj");
+  EXPECT_EQ(r.failed_checks, 0);
+  int nj_conservation = -1;
+  for (const auto& row : r.report["summary"])
+    if (row["check"] == "furnace: conservation (E <= 1 + tol)") {
+      nj_conservation = row["not_judged"];
+      EXPECT_EQ(row["passed"], 1);
+    }
+  EXPECT_EQ(nj_conservation, 1);
+  const auto& rows = r.report["energy"]["rows"];
+  ASSERT_EQ(rows.size(), 2u);
+  const auto& noisy = rows[0]["judged"]["conservation"];
+  EXPECT_EQ(noisy["status"], "NOT JUDGED");
+  EXPECT_GT(noisy["band"].get<double>(), noisy["tolerance"].get<double>());
+  EXPECT_NE(noisy["reason"].get<std::string>().find("wider than the tolerance"), std::string::npos);
+  const auto& lambert = rows[1]["judged"]["conservation"];
+  EXPECT_EQ(lambert["status"], "PASS");
+  EXPECT_LE(lambert["band"].get<double>(), lambert["tolerance"].get<double>());
+  // Only the judged case has an albedo range the report may attribute to the BSDF.
+  EXPECT_FALSE(r.report["energy"]["cases"][0].contains("judged_min"));
+  EXPECT_TRUE(r.report["energy"]["cases"][1].contains("judged_min"));
+  const std::string banner = r.report["banner"];
+  EXPECT_EQ(banner.rfind("QUICK run", 0), 0u) << banner;
+  EXPECT_NE(banner.find("NOT JUDGED"), std::string::npos) << banner;
+  EXPECT_NE(banner.find("furnace: conservation (E <= 1 + tol) (1 of 2)"), std::string::npos) << banner;
 }

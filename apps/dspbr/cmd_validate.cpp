@@ -76,9 +76,9 @@ void run_validate(const ValidateArgs& a) {
   s.seed = a.seed;
   s.command_line = validate::process_command_line();
 
-  // The tables: the BSDF cases read --luts FILE (either layout) or the built-in set of --tables;
-  // the table check compares published-layout tables (--luts FILE of that layout, else the
-  // committed luts/dspbr_luts.json) with the independent reference.
+  // The tables: the BSDF cases read --luts FILE (either layout) or the built-in set of --tables
+  // (default: the renderer layout); the table check compares every table of that set with the
+  // reference quadrature.
   const LutSet* checked = nullptr;
   const LutSet* bsdf_tables = nullptr;
   LutSet loaded;
@@ -95,9 +95,8 @@ void run_validate(const ValidateArgs& a) {
       if (!missing.empty())
         throw UsageError(fmt::format("--luts: {}: incomplete table file: missing or empty {}", a.luts,
                                      fmt::join(missing, ", ")));
-      checked = &loaded;
     }
-    bsdf_tables = &loaded;
+    bsdf_tables = checked = &loaded;
   } else {
     LutLayout layout;
     try {
@@ -106,9 +105,8 @@ void run_validate(const ValidateArgs& a) {
       throw UsageError(std::string("--tables: ") + e.what());
     }
     try {
-      bsdf_tables = &LutSet::of_layout(layout);
+      bsdf_tables = checked = &LutSet::of_layout(layout);
       s.table_file = validate::table_text_settings(LutSet::builtin_text(layout), LutSet::builtin_name(layout));
-      checked = &LutSet::published();
     } catch (const std::exception& e) {
       std::fprintf(stderr, "dspbr validate: tables skipped: %s\n", e.what());
     }
@@ -144,9 +142,17 @@ void run_validate(const ValidateArgs& a) {
   std::printf("validation (%s run, seed %llu): report in %s/%s\n", a.quick ? "quick" : "full",
               static_cast<unsigned long long>(a.seed), a.out.c_str(), a.html ? "index.html" : "data/report.json");
   std::printf("  %-58s %5s %5s %7s %11s\n", "check", "PASS", "FAIL", "WAIVED", "NOT JUDGED");
-  for (const auto& c : r.report["summary"])
+  int not_judged = 0, total = 0;
+  for (const auto& c : r.report["summary"]) {
     std::printf("  %-58s %5d %5d %7d %11d\n", c["check"].get<std::string>().c_str(), c["passed"].get<int>(),
                 c["failed"].get<int>(), c["waived"].get<int>(), c["not_judged"].get<int>());
+    not_judged += c["not_judged"].get<int>();
+    total += c["total"].get<int>();
+  }
+  std::printf("  %s\n", validate::banner(r.report).c_str());
+  if (not_judged > 0)
+    std::printf("  NOT JUDGED %d of %d verdicts: measured, but the check could not have failed there (reasons in the "
+                "report)\n", not_judged, total);
   const auto& skipped = r.report["skipped"];
   std::size_t shown = 0;
   for (const auto& sk : skipped) {
@@ -156,8 +162,6 @@ void run_validate(const ValidateArgs& a) {
     ++shown;
   }
   if (skipped.size() > shown) std::printf("  skipped: %zu rejected random materials\n", skipped.size() - shown);
-  if (a.quick)
-    std::printf("  quick run: fewer cases, directions and samples than the full run (see the report's settings)\n");
   for (const auto& w : r.report["waivers"])
     if (w["used"].get<int>() > 0)
       std::printf("  WAIVED %d x %s (%s): %s\n", w["used"].get<int>(), w["id"].get<std::string>().c_str(),
@@ -184,7 +188,7 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "Seed of every random stream (same seed -> same report)")
       ->capture_default_str()
       ->transform(non_negative_integer());
-  cmd->add_option("--luts", args->luts, "Table file (dspbr_luts.json or dspbr_renderer_luts.json) the BSDF cases read; a published-layout file is also checked against the reference")
+  cmd->add_option("--luts", args->luts, "Table file (dspbr_luts.json or dspbr_renderer_luts.json) the BSDF cases read instead of the built-in set of --tables; every table the cases read is checked against the reference quadrature")
       ->check(CLI::ExistingFile);
   cmd->add_option("--tables", args->tables,
                   "Energy tables of the BSDF cases: renderer (default) or published (shows the published layout's "

@@ -166,6 +166,9 @@ def furnace_plots(rep, figs):
                        "eval_se_b", "invalid_fraction", "agreement", "conservation", "preservation"], csv_rows)
         f["component"] = comp
         f["cases"] = cs
+        # Every (case, view) row with the band and tolerance each verdict used.
+        f["rows"] = [{"case": c["case"], "cos": r["cos"], "judged": r.get("judged", {})}
+                     for c in cs for r in sorted(rows_by_case[c["case"]], key=lambda r: -r["cos"])]
         out.append(f)
     return out
 
@@ -314,12 +317,14 @@ def lut_plots(rep, figs):
     out = []
     for t in tab["tables"]:
         axes = t["axes"]
-        vals = np.array(t["values"], dtype=float)
         shape = [a["size"] for a in axes]
-        vals = vals.reshape(shape)
-        name = t["name"]
-        unit = f"{TABLE_UNIT.get(name, name)} (albedo, no unit)"
-        if len(shape) == 1:
+        name = t.get("label", t["name"])
+        unit = f"{TABLE_UNIT.get(t['name'], t['name'])} (albedo, no unit)"
+        pic = None
+        if "values" not in t:  # renderer layout (warped axes): only the check's nodes are plotted
+            pass
+        elif len(shape) == 1:
+            vals = np.array(t["values"], dtype=float).reshape(shape)
             fig, ax = plt.subplots(figsize=(4.5, 3), layout="constrained")
             x = [axis_coord(axes[0], i) for i in range(shape[0])]
             ax.plot(x, vals, "o-", ms=3)
@@ -327,6 +332,7 @@ def lut_plots(rep, figs):
             ax.set_ylabel(unit)
             ax.grid(alpha=0.3)
         else:
+            vals = np.array(t["values"], dtype=float).reshape(shape)
             idx = [None] if len(shape) == 2 else sorted(set(np.linspace(0, shape[0] - 1, 4).astype(int).tolist()))
             slices = [vals] if len(shape) == 2 else [vals[i] for i in idx]
             titles = [""] if len(shape) == 2 else [f"{AXIS_WORDS.get(axes[0]['name'], axes[0]['name'])} = "
@@ -346,8 +352,10 @@ def lut_plots(rep, figs):
             axs[0, 0].set_ylabel(AXIS_WORDS.get(ya["name"], ya["name"]), fontsize=8)
             cb = fig.colorbar(im, ax=axs[0].tolist())
             cb.set_label(f"{unit}; values {lo:.3g} … {hi:.3g}", fontsize=8)
-        fig.suptitle(name, fontsize=9)
-        pic = figs.save(fig, f"lut_{slug(name)}", ["flat_index", "value"], [[i, v] for i, v in enumerate(vals.ravel())])
+        if "values" in t:
+            fig.suptitle(name, fontsize=9)
+            pic = figs.save(fig, f"lut_{slug(name)}", ["flat_index", "value"],
+                            [[i, v] for i, v in enumerate(vals.ravel())])
         # Error against the independent reference, with the table's own error estimate beside it.
         cells = t["cells"]
         fig, ax = plt.subplots(figsize=(5.2, 3.6), layout="constrained")
@@ -355,7 +363,7 @@ def lut_plots(rep, figs):
         h1, = ax.semilogy(np.maximum([c["abs_error"] for c in cells], floor), "o", ms=3)
         h2, = ax.semilogy(np.maximum([c["table_se"] for c in cells], floor), ".", ms=3, color="0.6")
         h3, = ax.semilogy([c["allowed"] for c in cells], "r_")
-        ax.set_ylabel("absolute error (albedo)", fontsize=8)
+        ax.set_ylabel("|error| (albedo; relative above 1)", fontsize=8)
         ax.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
         ax.tick_params(labelsize=7)
         ax.set_xlabel(f"checked cell (row of the errors CSV); max |table − reference| {t['max_abs_error']:.2e}",
@@ -368,7 +376,9 @@ def lut_plots(rep, figs):
                            c["abs_error"], c["allowed"]] for c in cells])
         out.append({"name": name, "picture": pic, "error": errf, "max_abs_error": t["max_abs_error"],
                     "max_table_se": t.get("max_table_se", 0.0), "verdict": t.get("verdict", ""),
-                    "cells": len(cells), "size": "×".join(str(s) for s in shape)})
+                    "cells": len(cells), "size": "×".join(str(s) for s in shape), "layout": t.get("layout", ""),
+                    "stores": t.get("stores", ""), "reference": t.get("reference", ""),
+                    "tolerance": t.get("tolerance", tab.get("tolerance"))})
     return out
 
 
@@ -409,7 +419,9 @@ def convergence_plot(rep, figs):
 
 def energy_statement(rep):
     """Where DSPBR itself (the spec's formulas, not our code) loses or gains energy: one row per
-    spec statement (the note), with the cases it covers and their measured range."""
+    spec statement (the note), with the cases it covers and their range measured with power (the
+    views whose conservation band lies within its tolerance); cases without such a view are
+    listed apart, never as a property of the spec."""
     groups = {}
     for c in rep["energy"]["cases"]:
         if c["claim"] == "preserving" and c.get("preservation") == "PASS" and c.get("conservation") == "PASS":
@@ -417,8 +429,12 @@ def energy_statement(rep):
         if c["component"] in ("sheen", "clearcoat") and "lobe" in c["case"]:
             continue  # single lobes on their own are not materials
         g = groups.setdefault(c["note"], {"note": c["note"], "claim": CLAIM_WORDS.get(c["claim"], c["claim"]),
-                                          "cases": []})
-        g["cases"].append({"case": c["case"], "min": c["min"], "max": c["max"]})
+                                          "cases": [], "unmeasured": []})
+        if c.get("judged_views", 0) > 0:
+            g["cases"].append({"case": c["case"], "min": c["judged_min"], "max": c["judged_max"],
+                               "views": c["judged_views"], "of": c["views"]})
+        else:
+            g["unmeasured"].append(c["case"])
     return list(groups.values())
 
 

@@ -53,4 +53,9 @@ def test_every_readme_command_runs(command, tmp_path):
         assert any((out / "renderer").iterdir())
     if sub == "validate":
         assert (tmp_path / "my_report" / "index.html").is_file()
-        assert re.search(r"furnace: conservation \(E <= 1 \+ tol\) +\d+ +0 +\d+ +\d+", p.stdout), p.stdout
+        # The counts and the banner the README quotes, as printed.
+        quoted = re.search(r"`furnace: conservation\s+\(E <= 1 \+ tol\)((?:\s+\d+){4})`", README)
+        counts = quoted.group(1).split()
+        assert re.search(r"furnace: conservation \(E <= 1 \+ tol\) +" + " +".join(counts) + r"\n", p.stdout), p.stdout
+        banner = re.search(r"a banner that begins `([^`]*)`", README).group(1)
+        assert "\n  " + banner in p.stdout, p.stdout

@@ -9,6 +9,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "dspbr/bsdf/bsdf.h"
 
@@ -27,6 +28,7 @@ AlbedoEstimate albedo_eval(const Bsdf& bsdf, const Vec3& v, int strata, uint64_t
 struct SampledAlbedo {
   AlbedoEstimate total;      // all valid samples (delta included)
   AlbedoEstimate non_delta;  // samples without kLobeDelta only (estimates the same integral as albedo_eval)
+  AlbedoEstimate delta;      // samples with kLobeDelta only (total = non_delta + delta)
   std::size_t invalid = 0;   // samples with valid = false
 };
 
@@ -34,21 +36,54 @@ struct SampledAlbedo {
 // sqrt(n) x sqrt(n) grid in (u.y, u.z) and u.x (lobe choice) independent uniform.
 SampledAlbedo albedo_sampled(const Bsdf& bsdf, const Vec3& v, std::size_t n, uint64_t seed, uint64_t stream);
 
-// Verdicts of the white-furnace check at one direction. A verdict fails only when the deviation
-// is beyond the tolerance by more than `sigmas` standard errors (so noise alone does not fail it).
+// Verdicts of the white-furnace check at one direction. Two estimates of the whole integral:
+// the sampled one (sampled.total) and the combined one (albedo_eval + sampled.delta: the eval
+// estimator for the non-delta part, which is exact where the BSDF has no delta lobe). A bound
+// (conservation E <= 1 + tol, preservation E >= 1 - tol)
+//  - fails where either estimate lies beyond it by more than `sigmas` standard errors (so noise
+//    alone does not fail it);
+//  - passes only where the band +-sigmas standard errors of the narrower estimate lies within the
+//    tolerance (band <= tol): a violation of the tolerance by its own size would then have
+//    failed it;
+//  - is not judged otherwise (the band is wider than the tolerance: the check has no power).
+// The agreement of the two estimators on the non-delta integral is judged the same way, with the
+// tolerance agreement_abs + agreement_band_max: fails beyond sigmas noise + agreement_abs, not
+// judged where sigmas noise exceeds agreement_band_max.
 struct EnergyTolerances {
   double conservation = 0.01;   // E <= 1 + conservation
   double preservation = 0.02;   // E >= 1 - preservation (only where the spec claims preservation)
   double sigmas = 4.0;
   double agreement_abs = 2e-3;  // |E_eval - E_sampled,non-delta| allowed on top of the noise
+  double agreement_band_max = 0.02;  // widest sigmas-noise band with which the agreement is judged
+};
+
+enum class Decision { Pass, Fail, NotJudged };
+
+// One judged bound (or the agreement) at one direction: the estimate and band the decision used
+// (worst channel), the tolerance, and the estimator's name.
+struct BoundVerdict {
+  Decision decision = Decision::Pass;
+  double value = 0;      // estimate (agreement: |difference|)
+  double band = 0;       // sigmas standard errors of it
+  double tolerance = 0;  // the bound's tolerance (the band must not exceed it)
+  const char* estimator = "";  // "sampled" or "eval + sampled delta" (agreement: "eval vs sampled non-delta")
+  // "band +-0.43 wider than the tolerance 0.01" for Decision::NotJudged, else empty.
+  std::string reason() const;
 };
 
 struct EnergyVerdict {
-  bool conserving = true, preserving = true, estimators_agree = true;
+  BoundVerdict conservation, preservation, agreement;
   double albedo_max = 0, albedo_min = 0;  // over channels, sampled estimator (delta included)
   double disagreement = 0;                // max over channels |E_eval - E_sampled,non-delta| / noise-aware bound
+  // Convenience: the bound did not fail (PASS or NOT JUDGED).
+  bool conserving() const { return conservation.decision != Decision::Fail; }
+  bool preserving() const { return preservation.decision != Decision::Fail; }
+  bool estimators_agree() const { return agreement.decision != Decision::Fail; }
 };
 
-EnergyVerdict judge_energy(const AlbedoEstimate& eval, const SampledAlbedo& sampled, const EnergyTolerances& tol);
+// eval_reliable = false: the eval estimator is not used for the bounds (grazing views, where its
+// sample variance underestimates its error); the agreement is computed all the same.
+EnergyVerdict judge_energy(const AlbedoEstimate& eval, const SampledAlbedo& sampled, const EnergyTolerances& tol,
+                           bool eval_reliable = true);
 
 }  // namespace dspbr::validate

@@ -56,11 +56,7 @@ LookupErrorRow measure(const std::string& table, const std::string& layout, size
 size_t published_values(const LutSet& s, const std::string& t) { return s.published_table(published_lut(t).id).size(); }
 
 // E_g by the deterministic microfacet-domain quadrature at a tenth of the tables' target error.
-double exact_glass(double mu, double r, double ior, bool inside) {
-  return dielectric_albedo_quadrature(std::max(mu, 1e-6), std::max(r * r, 1e-12), f0_from_ior(1.0, ior),
-                                      inside ? ior : 1.0, inside ? 1.0 : ior, 1e-6)
-      .value[0];
-}
+double exact_glass(double mu, double r, double ior, bool inside) { return glass_albedo_ref(mu, r, ior, inside).value; }
 
 // Glass_E / Glass_inv_E at the study points (ior = (2 + f0) / (2 - f0): the published axis' ior_x
 // uniform, ior 1..3), and the furnace of the rough interface compensated by its own lookups.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
+#include <string>
 #include <mutex>
 #include <tuple>
 #include <vector>
@@ -11,6 +13,7 @@
 #include "dspbr/frame.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
+#include "dspbr/lut/microfacet_quadrature.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/sheen.h"
 
@@ -209,6 +212,55 @@ RefValue base_albedo_avg_ref(double roughness, double f0, const RefQuadrature& q
 
 RefValue sheen_albedo_ref(double mu, double alpha_b, bool alternative, const RefQuadrature& q) {
   return with_error([&](int p) { return sheen_h_integral(mu, alpha_b, alternative, p); }, q.panels);
+}
+
+RefValue ggx_fresnel_albedo_avg_ref(double roughness, double f0, const RefQuadrature& q) {
+  return with_error(
+      [&](int p) { return average([&](double m, int pp) { return ggx_h_integral(m, roughness, f0, pp); }, p); },
+      q.panels);
+}
+
+namespace {
+constexpr double kGlassTolerance = 1e-6;
+}  // namespace
+
+RefValue glass_albedo_ref(double mu, double roughness, double ior, bool inside) {
+  const QuadResult<1> r =
+      dielectric_albedo_quadrature(std::max(mu, 1e-6), std::max(roughness * roughness, 1e-12), f0_from_ior(1.0, ior),
+                                   inside ? ior : 1.0, inside ? 1.0 : ior, kGlassTolerance);
+  return {r.value[0], r.error};
+}
+
+RefValue glass_albedo_avg_ref(double roughness, double ior, bool inside) {
+  const double alpha = std::max(roughness * roughness, 1e-12), f0 = f0_from_ior(1.0, ior);
+  // Inside, total internal reflection begins at the critical cosine: a kink of E_g.
+  std::vector<double> breaks;
+  if (inside && ior > 1) breaks.push_back(std::sqrt(1.0 - 1.0 / (ior * ior)));
+  const QuadResult<1> r = cosine_average_quadrature<1>(
+      [&](double mu, double tol) {
+        return dielectric_albedo_quadrature(std::max(mu, 1e-6), alpha, f0, inside ? ior : 1.0, inside ? 1.0 : ior, tol);
+      },
+      breaks, kGlassTolerance);
+  return {r.value[0], r.error};
+}
+
+RefValue table_quantity_ref(Lut id, const TablePoint& p, const RefQuadrature& q) {
+  const double mu = std::max(p.mu, 1e-6), ab = std::max(p.alpha_b, 1e-3), r = p.roughness;
+  switch (id) {
+    case Lut::GgxE: return ggx_albedo_ref(mu, r, q);
+    case Lut::GgxBeta: return ggx_fresnel_albedo_ref(mu, r, 0.0, q);
+    case Lut::GgxEAvg: return ggx_albedo_avg_ref(r, q);
+    case Lut::GgxBAvg: return ggx_fresnel_albedo_avg_ref(r, 0.0, q);
+    case Lut::BaseE: return base_albedo_ref(mu, r, p.f0, q);
+    case Lut::BaseEAvg: return base_albedo_avg_ref(r, p.f0, q);
+    case Lut::SheenE: return sheen_albedo_ref(mu, ab, false, q);
+    case Lut::SheenAshE: return sheen_albedo_ref(mu, ab, true, q);
+    case Lut::GlassE: return glass_albedo_ref(mu, r, p.ior, false);
+    case Lut::GlassInvE: return glass_albedo_ref(mu, r, p.ior, true);
+    case Lut::GlassEAvg: return glass_albedo_avg_ref(r, p.ior, false);
+    case Lut::GlassInvEAvg: return glass_albedo_avg_ref(r, p.ior, true);
+  }
+  throw std::invalid_argument(std::string("no reference for table '") + lut_name(id) + "'");
 }
 
 }  // namespace dspbr::validate

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cmath>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <limits>
 #include <map>
 #include <tbb/global_control.h>
@@ -51,6 +52,10 @@ int rank(Status s) {
   }
 }
 
+const char* kNoPowerReason =
+    "the band (±sigmas standard errors of the narrower estimator) is wider than the tolerance: the check could not "
+    "have failed a violation of the tolerance (band and tolerance per row in the furnace tables)";
+
 // Verdict bookkeeping: per check name, counts of each status; a line for every verdict that is not
 // PASS; failed verdicts matched against the waivers (waivers.h).
 struct Verdicts {
@@ -86,6 +91,13 @@ struct Verdicts {
     failures.push_back(check + ": " + what);
     listed.push_back({{"check", check}, {"what", what}, {"status", status_word(Status::Fail)}});
     return Status::Fail;
+  }
+  // A furnace bound at one direction (furnace.h): PASS, FAIL (waivers apply) or NOT JUDGED with
+  // the reason its band gives.
+  Status judge(const std::string& check, const BoundVerdict& b, const std::string& name, double cos,
+               const std::string& detail) {
+    if (b.decision == Decision::NotJudged) return not_judged(check, name, cos, detail, kNoPowerReason);
+    return add(check, b.decision == Decision::Pass, name, cos, detail);
   }
   // A verdict the run does not judge (the numbers are still reported), with the reason.
   Status not_judged(const std::string& check, const std::string& name, double cos, const std::string& detail,
@@ -127,12 +139,24 @@ json run_energy(const Catalog& cat, const SuiteSettings& s, Verdicts& verdicts) 
     if (bc.preservation_tol >= 0) tol.preservation = bc.preservation_tol;
     out[i].eval = albedo_eval(*bc.bsdf, v, s.furnace_strata, s.seed, 2 * i);
     out[i].sampled = albedo_sampled(*bc.bsdf, v, s.furnace_samples, s.seed, 2 * i + 1);
-    out[i].verdict = judge_energy(out[i].eval, out[i].sampled, tol);
+    // Below |cos| = 0.1 the cosine-weighted eval estimator cannot resolve glossy peaks pressed
+    // against the horizon with the run's direction budget (its sample variance then
+    // underestimates its error): only the sampled estimator judges the bounds there.
+    out[i].verdict = judge_energy(out[i].eval, out[i].sampled, tol, std::abs(items[i].cos) >= 0.1);
     progress.add();
   });
   progress.finish();
   json rows = json::array();
   std::vector<json> per_case(cat.cases.size());
+  auto bound_json = [](const BoundVerdict& b, Status st) {
+    json j = {{"status", status_word(st)}, {"value", b.value}, {"band", b.band}, {"tolerance", b.tolerance},
+              {"estimator", b.estimator}};
+    if (b.decision == Decision::NotJudged) j["reason"] = b.reason();
+    return j;
+  };
+  auto bound_detail = [](const char* what, const BoundVerdict& b) {
+    return fmt::format("{} {:.5f} ± {:.2g} ({}; tolerance {:g})", what, b.value, b.band, b.estimator, b.tolerance);
+  };
   for (std::size_t i = 0; i < items.size(); ++i) {
     const BsdfCase& bc = cat.cases[items[i].c];
     const Out& o = out[i];
@@ -142,39 +166,48 @@ json run_energy(const Catalog& cat, const SuiteSettings& s, Verdicts& verdicts) 
                     {"sampled", rgb_json(o.sampled.total.value)}, {"sampled_se", rgb_json(o.sampled.total.std_error)},
                     {"non_delta", rgb_json(o.sampled.non_delta.value)},
                     {"non_delta_se", rgb_json(o.sampled.non_delta.std_error)},
-                    {"invalid_fraction", n > 0 ? double(o.sampled.invalid) / n : 0.0},
-                    {"conserving", o.verdict.conserving}, {"preserving", o.verdict.preserving},
-                    {"estimators_agree", o.verdict.estimators_agree}});
+                    {"delta", rgb_json(o.sampled.delta.value)}, {"delta_se", rgb_json(o.sampled.delta.std_error)},
+                    {"invalid_fraction", n > 0 ? double(o.sampled.invalid) / n : 0.0}});
     json& pc = per_case[items[i].c];
     const double lo = o.verdict.albedo_min, hi = o.verdict.albedo_max;
-    if (pc.is_null()) pc = {{"min", lo}, {"max", hi}};
+    if (pc.is_null()) pc = {{"min", lo}, {"max", hi}, {"views", 0}, {"judged_views", 0}};
     pc["min"] = std::min(pc["min"].get<double>(), lo);
     pc["max"] = std::max(pc["max"].get<double>(), hi);
+    pc["views"] = pc["views"].get<int>() + 1;
     const double x = items[i].cos;
-    // Below |cos| = 0.1 the cosine-weighted eval estimator cannot resolve glossy peaks pressed
-    // against the horizon with the run's direction budget (its sample variance then underestimates
-    // its error): the comparison is reported there but not judged.
-    const std::string agree_detail = fmt::format("eval {:.5f} vs sampled (non-delta) {:.5f}",
-                                                 o.eval.value.max_component(), o.sampled.non_delta.value.max_component());
-    const Status agree =
-        std::abs(x) >= 0.1
-            ? verdicts.add("furnace: estimators agree", o.verdict.estimators_agree, bc.name, x, agree_detail)
-            : verdicts.not_judged("furnace: estimators agree", bc.name, x, agree_detail, kGrazingReason);
-    const Status cons = verdicts.add("furnace: conservation (E <= 1 + tol)", o.verdict.conserving, bc.name, x,
-                                     fmt::format("albedo {:.5f}", hi));
+    const std::string agree_detail = fmt::format("eval {:.5f} vs sampled (non-delta) {:.5f}: {}",
+                                                 o.eval.value.max_component(), o.sampled.non_delta.value.max_component(),
+                                                 bound_detail("|difference|", o.verdict.agreement));
+    const char* agree_check = "furnace: estimators agree";
+    const Status agree = std::abs(x) >= 0.1 ? verdicts.judge(agree_check, o.verdict.agreement, bc.name, x, agree_detail)
+                                            : verdicts.not_judged(agree_check, bc.name, x, agree_detail, kGrazingReason);
+    const Status cons = verdicts.judge("furnace: conservation (E <= 1 + tol)", o.verdict.conservation, bc.name, x,
+                                       bound_detail("albedo", o.verdict.conservation));
     json vj = {{"agreement", status_word(agree)}, {"conservation", status_word(cons)}};
-    if (bc.claim == EnergyClaim::Preserving)
-      vj["preservation"] = status_word(verdicts.add("furnace: preservation where claimed (E >= 1 - tol)",
-                                                    o.verdict.preserving, bc.name, x, fmt::format("albedo {:.5f}", lo)));
-    rows.back()["verdicts"] = vj;
-    // Per case: the worst status of each check over its view directions, and the unjudged count.
-    for (const auto& [k, st] : {std::pair<std::string, Status>{"agreement", agree}, {"conservation", cons}}) {
-      if (!pc.contains(k) || rank(st) > rank(status_from(pc[k]))) pc[k] = status_word(st);
+    json judged = {{"agreement", bound_json(o.verdict.agreement, agree)},
+                   {"conservation", bound_json(o.verdict.conservation, cons)}};
+    if (agree == Status::NotJudged && std::abs(x) < 0.1) judged["agreement"]["reason"] = kGrazingReason;
+    if (bc.claim == EnergyClaim::Preserving) {
+      const Status pres = verdicts.judge("furnace: preservation where claimed (E >= 1 - tol)", o.verdict.preservation,
+                                         bc.name, x, bound_detail("albedo", o.verdict.preservation));
+      vj["preservation"] = status_word(pres);
+      judged["preservation"] = bound_json(o.verdict.preservation, pres);
     }
-    if (vj.contains("preservation") &&
-        (!pc.contains("preservation") || rank(status_from(vj["preservation"])) > rank(status_from(pc["preservation"]))))
-      pc["preservation"] = vj["preservation"];
-    if (agree == Status::NotJudged) pc["agreement_not_judged"] = pc.value("agreement_not_judged", 0) + 1;
+    rows.back()["verdicts"] = vj;
+    rows.back()["judged"] = judged;
+    // The albedo range measured with power (the conservation band within its tolerance, hence
+    // the preservation band too): the only values the report attributes to DSPBR itself.
+    if (o.verdict.conservation.decision != Decision::NotJudged) {
+      const double jlo = o.verdict.preservation.value, jhi = o.verdict.conservation.value;
+      pc["judged_views"] = pc["judged_views"].get<int>() + 1;
+      pc["judged_min"] = pc.contains("judged_min") ? std::min(pc["judged_min"].get<double>(), jlo) : jlo;
+      pc["judged_max"] = pc.contains("judged_max") ? std::max(pc["judged_max"].get<double>(), jhi) : jhi;
+    }
+    // Per case: the worst status of each check over its view directions, and the unjudged counts.
+    for (const auto& [k, word] : vj.items()) {
+      if (!pc.contains(k) || rank(status_from(word)) > rank(status_from(pc[k]))) pc[k] = word;
+      if (word == status_word(Status::NotJudged)) pc[k + "_not_judged"] = pc.value(k + "_not_judged", 0) + 1;
+    }
   }
   json cases = json::array();
   for (std::size_t c = 0; c < cat.cases.size(); ++c) {
@@ -190,7 +223,8 @@ json run_energy(const Catalog& cat, const SuiteSettings& s, Verdicts& verdicts) 
     cases.push_back(j);
   }
   return {{"tolerances", {{"conservation", s.energy.conservation}, {"preservation", s.energy.preservation},
-                          {"sigmas", s.energy.sigmas}, {"agreement_abs", s.energy.agreement_abs}}},
+                          {"sigmas", s.energy.sigmas}, {"agreement_abs", s.energy.agreement_abs},
+                          {"agreement_band_max", s.energy.agreement_band_max}}},
           {"eval_directions", 2 * s.furnace_strata * s.furnace_strata},
           {"samples", s.furnace_samples}, {"cos", s.furnace_cos}, {"rows", rows}, {"cases", cases}};
 }
@@ -368,77 +402,203 @@ std::vector<int> spread(int n, int k) {
   return out;
 }
 
-// The table's own clamps (docs/luts.md): mu >= 1e-6, alpha_b >= 1e-3.
-RefValue table_reference(const std::string& name, const std::vector<double>& x, const RefQuadrature& q) {
-  auto mu = [](double m) { return std::max(m, 1e-6); };
-  auto ab = [](double a) { return std::max(a, 1e-3); };
-  switch (published_lut(name).id) {
-    case Lut::GgxE: return ggx_albedo_ref(mu(x[1]), x[0], q);
-    case Lut::GgxEAvg: return ggx_albedo_avg_ref(x[0], q);
-    case Lut::BaseE: return base_albedo_ref(mu(x[2]), x[1], x[0], q);
-    case Lut::BaseEAvg: return base_albedo_avg_ref(x[1], x[0], q);
-    case Lut::SheenE: return sheen_albedo_ref(mu(x[1]), ab(x[0]), false, q);
-    case Lut::SheenAshE: return sheen_albedo_ref(mu(x[1]), ab(x[0]), true, q);
-    default: break;
+// One checked node of a table: its indices, its point in physical coordinates, the value the
+// BSDF reads there (decoded) and the table's own standard error (0 when not stored).
+struct TableNode {
+  std::vector<int> index;
+  std::vector<double> x;  // the axes' physical coordinates, slowest first
+  TablePoint point;
+  double value = 0, se = 0;
+};
+
+// Cells: a spread of indices per axis, all combinations.
+std::vector<std::vector<int>> spread_cells(const std::vector<int>& sizes, int per_axis) {
+  std::vector<std::vector<int>> cells{{}};
+  for (int n : sizes) {
+    std::vector<std::vector<int>> next;
+    for (const auto& c : cells)
+      for (int i : spread(n, per_axis)) {
+        auto d = c;
+        d.push_back(i);
+        next.push_back(d);
+      }
+    cells = next;
   }
-  throw std::invalid_argument("no reference for table '" + name + "'");
+  return cells;
 }
 
+// Sets the coordinate of axis `name` in p (the published and renderer axis names).
+void set_coord(TablePoint& p, const std::string& name, double v) {
+  if (name == "roughness") p.roughness = v;
+  else if (name == "cos_theta") p.mu = v;
+  else if (name == "alpha_b") p.alpha_b = v;
+  else if (name == "f0") p.f0 = v;
+  else if (name == "ior") p.ior = v;
+  else if (name == "ior_x") p.ior = glass_ior_of_x(v);
+  else throw std::invalid_argument("table axis '" + name + "' has no physical coordinate");
+}
+
+// Nodes of a published-layout table: the stored values at cell centres (or endpoints).
+std::vector<TableNode> published_nodes(const Table& t, int per_axis) {
+  std::vector<int> sizes;
+  for (const Axis& a : t.axes) sizes.push_back(a.size);
+  std::vector<TableNode> out;
+  for (const auto& idx : spread_cells(sizes, per_axis)) {
+    TableNode n;
+    n.index = idx;
+    for (std::size_t a = 0; a < t.axes.size(); ++a) {
+      n.x.push_back(t.axes[a].coord(idx[a]));
+      set_coord(n.point, t.axes[a].name, n.x.back());
+    }
+    const std::size_t off = t.offset(idx);
+    n.value = t.values[off];
+    n.se = t.errors.empty() ? 0.0 : t.errors[off];
+    out.push_back(n);
+  }
+  return out;
+}
+
+// Nodes of a renderer-layout table: the decoded quantity its lookups return at the sample
+// positions (grid coordinates i / (N - 1); the warps of the cos and ior axes depend on the
+// roughness and the cosine, so those are placed first).
+std::vector<TableNode> renderer_nodes(const RendererLuts& R, Lut id, int per_axis) {
+  const WarpedTable& t = R.table(id);
+  std::vector<int> sizes;
+  for (const WarpedAxis& a : t.axes) sizes.push_back(a.size);
+  auto axis_of = [&](const char* name) {
+    for (std::size_t a = 0; a < t.axes.size(); ++a)
+      if (t.axes[a].name == name) return int(a);
+    return -1;
+  };
+  std::vector<TableNode> out;
+  for (const auto& idx : spread_cells(sizes, per_axis)) {
+    TableNode n;
+    n.index = idx;
+    n.x.assign(t.axes.size(), 0.0);
+    auto grid = [&](int a) { return double(idx[std::size_t(a)]) / (t.axes[std::size_t(a)].size - 1); };
+    auto place = [&](int a, double aux) {
+      if (a < 0) return;
+      n.x[std::size_t(a)] = t.axes[std::size_t(a)].warp.from_grid(grid(a), aux);
+      set_coord(n.point, t.axes[std::size_t(a)].name, n.x[std::size_t(a)]);
+    };
+    place(axis_of("roughness"), 0.0);
+    place(axis_of("alpha_b"), 0.0);
+    place(axis_of("cos_theta"), n.point.roughness * n.point.roughness);
+    place(axis_of("ior"), n.point.mu);
+    place(axis_of("ior_x"), 0.0);
+    const TablePoint& p = n.point;
+    const bool inside = lut_info(id).inside;
+    switch (id) {
+      case Lut::GgxE: n.value = R.E_m(p.mu, p.roughness); break;
+      case Lut::GgxBeta: n.value = R.B(p.mu, p.roughness); break;
+      case Lut::GgxEAvg: n.value = R.E_m_avg(p.roughness); break;
+      case Lut::GgxBAvg: n.value = R.B_avg(p.roughness); break;
+      case Lut::SheenE: n.value = R.E_sheen(p.mu, p.alpha_b); break;
+      case Lut::SheenAshE: n.value = R.E_sheen_ash(p.mu, p.alpha_b); break;
+      case Lut::GlassE:
+      case Lut::GlassInvE: n.value = R.E_glass(p.mu, p.roughness, p.ior, inside); break;
+      case Lut::GlassEAvg:
+      case Lut::GlassInvEAvg: n.value = R.E_glass_avg(p.roughness, p.ior, inside); break;
+      default: throw std::invalid_argument(std::string("no renderer table '") + lut_name(id) + "'");
+    }
+    // GGX_beta's stored error is that of beta; the others' that of the quantity.
+    std::size_t off = 0;  // row-major, fastest axis contiguous
+    for (std::size_t a = 0; a < idx.size(); ++a) off = off * std::size_t(t.axes[a].size) + std::size_t(idx[a]);
+    n.se = t.errors.empty() || id == Lut::GgxBeta ? 0.0 : t.errors[off];
+    out.push_back(n);
+  }
+  return out;
+}
+
+// The table check: every table of the set the BSDF cases read (its layout's tables in registry
+// order, the glass tables when the set holds them), each node's value against the reference
+// (lut_reference.h) with the table's tolerance. Nodes at roughness 0 hold limits (r -> 0 at fixed
+// mu / alpha in the renderer layout) and are not checked.
 json run_luts(const LutSet* luts, const SuiteSettings& s, Verdicts& verdicts) {
   if (!luts) return {{"available", false}};
-  const Table* tables[] = {&luts->ggx_e, &luts->ggx_e_avg, &luts->base_e, &luts->base_e_avg, &luts->sheen_e,
-                           &luts->sheen_ash_e};
+  const bool renderer = luts->layout == LutLayout::Renderer;
+  const unsigned layout = renderer ? kRendererLayout : kPublishedLayout;
   json arr = json::array();
-  for (const Table* t : tables) {
-    if (t->values.empty()) continue;  // run_suite's caller refuses incomplete sets (missing_tables)
-    // Cells: a spread of indices per axis, all combinations.
-    std::vector<std::vector<int>> cells{{}};
-    for (const Axis& a : t->axes) {
-      std::vector<std::vector<int>> next;
-      for (const auto& c : cells)
-        for (int i : spread(a.size, s.lut_cells_per_axis)) {
-          auto d = c;
-          d.push_back(i);
-          next.push_back(d);
-        }
-      cells = next;
+  for (const LutInfo& info : lut_registry()) {
+    if ((info.layouts & layout) == 0) continue;
+    std::vector<TableNode> nodes;
+    json axes = json::array();
+    json values;
+    if (renderer) {
+      if (info.glass && !luts->renderer.has_glass()) continue;
+      const WarpedTable& t = luts->renderer.table(info.id);
+      nodes = renderer_nodes(luts->renderer, info.id, s.lut_cells_per_axis);
+      for (const WarpedAxis& a : t.axes)
+        axes.push_back({{"name", a.name}, {"size", a.size}, {"warp", a.warp.describe()}, {"kind", "warped"}});
+    } else {
+      const Table& t = luts->published_table(info.id);
+      if (t.values.empty()) continue;  // run_suite's caller refuses incomplete sets (missing_tables); glass optional
+      nodes = published_nodes(t, s.lut_cells_per_axis);
+      for (const Axis& a : t.axes)
+        axes.push_back({{"name", a.name}, {"size", a.size}, {"lo", a.lo}, {"hi", a.hi},
+                        {"kind", a.kind == GridKind::CellCentred ? "cell_centred" : "endpoint"}});
+      values = t.values;
     }
-    std::vector<RefValue> refs(cells.size());
-    Progress progress("tables: " + t->name, cells.size(), s.progress && Progress::stderr_is_terminal());
-    tbb::parallel_for(std::size_t(0), cells.size(), [&](std::size_t k) {
-      std::vector<double> x;
-      for (std::size_t a = 0; a < t->axes.size(); ++a) x.push_back(t->axes[a].coord(cells[k][a]));
-      refs[k] = table_reference(t->name, x, s.lut_quadrature);
+    const bool has_r = std::any_of(info.axes.begin(), info.axes.end(), [](const char* a) { return std::string(a) == "roughness"; });
+    nodes.erase(std::remove_if(nodes.begin(), nodes.end(),
+                               [&](const TableNode& n) { return has_r && n.point.roughness <= 0.0; }),
+                nodes.end());
+    std::vector<RefValue> refs(nodes.size());
+    const std::string label = fmt::format("{} ({})", info.name, renderer ? "renderer" : "published");
+    // Renderer averages are cosine averages of the directional lookups (renderer_luts.h), so they
+    // carry the directional tables' interpolation error: a tolerance of their own.
+    const double tol = !renderer ? s.lut_tol : info.average ? s.renderer_avg_lut_tol : s.renderer_lut_tol;
+    Progress progress("tables: " + label, nodes.size(), s.progress && Progress::stderr_is_terminal());
+    tbb::parallel_for(std::size_t(0), nodes.size(), [&](std::size_t k) {
+      // Power: the reference's own error must stay below half the tolerance, or the allowance
+      // (tolerance + reference error) would let a table error beyond the tolerance pass. Doubling
+      // the panels up to 3 times (the glass references have a fixed target, 1e-6).
+      RefQuadrature q = s.lut_quadrature;
+      refs[k] = table_quantity_ref(info.id, nodes[k].point, q);
+      for (int more = 0; more < 3 && refs[k].error > 0.5 * tol && !info.glass; ++more) {
+        q.panels *= 2;
+        refs[k] = table_quantity_ref(info.id, nodes[k].point, q);
+      }
       progress.add();
     });
     progress.finish();
     json jc = json::array();
-    double max_err = 0, max_se = 0;
+    double max_err = 0, max_se = 0, max_ref_err = 0;
     bool ok = true;
-    for (std::size_t k = 0; k < cells.size(); ++k) {
-      std::vector<double> x;
-      for (std::size_t a = 0; a < t->axes.size(); ++a) x.push_back(t->axes[a].coord(cells[k][a]));
-      const std::size_t off = t->offset(cells[k]);
-      const double tv = t->values[off], se = t->errors.empty() ? 0.0 : t->errors[off];
-      const double err = std::abs(tv - refs[k].value);
-      const double allowed = s.lut_tol + refs[k].error;  // fixed: the table's own se never widens it
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      const TableNode& n = nodes[k];
+      // Relative where the exact value exceeds 1 (the main sheen's E_b at grazing), as --bench-lookups.
+      const double err = std::abs(n.value - refs[k].value) / std::max(1.0, std::abs(refs[k].value));
+      const double allowed = tol + refs[k].error;  // fixed: the table's own se never widens it
       max_err = std::max(max_err, err);
-      max_se = std::max(max_se, se);
+      max_se = std::max(max_se, n.se);
+      max_ref_err = std::max(max_ref_err, refs[k].error);
       if (!(err <= allowed)) ok = false;
-      jc.push_back({{"index", cells[k]}, {"x", x}, {"table", tv}, {"table_se", se}, {"reference", refs[k].value},
+      jc.push_back({{"index", n.index}, {"x", n.x}, {"table", n.value}, {"table_se", n.se}, {"reference", refs[k].value},
                     {"reference_err", refs[k].error}, {"abs_error", err}, {"allowed", allowed}});
     }
-    const Status st = verdicts.add("tables: LUT vs independent reference", ok, t->name, kNoView,
-                                   fmt::format("max |error| {:.3g} (allowed {:.3g}; table's own max standard error {:.3g})",
-                                               max_err, s.lut_tol, max_se));
-    json axes = json::array();
-    for (const Axis& a : t->axes)
-      axes.push_back({{"name", a.name}, {"size", a.size}, {"lo", a.lo}, {"hi", a.hi},
-                      {"kind", a.kind == GridKind::CellCentred ? "cell_centred" : "endpoint"}});
-    arr.push_back({{"name", t->name}, {"axes", axes}, {"values", t->values}, {"cells", jc}, {"max_abs_error", max_err},
-                   {"max_table_se", max_se}, {"passed", ok}, {"verdict", status_word(st)}});
+    const char* check = "tables: LUT vs independent reference";
+    const std::string detail = fmt::format(
+        "max |error| {:.3g} over {} nodes (tolerance {:.3g}; reference's max error {:.2g}; table's own max standard "
+        "error {:.3g})",
+        max_err, nodes.size(), tol, max_ref_err, max_se);
+    // A pass needs a reference good to the tolerance (else a table error beyond it could pass).
+    const Status st = ok && max_ref_err > tol
+                          ? verdicts.not_judged(check, label, kNoView, detail,
+                                                "the reference's own error exceeds the tolerance at some sample")
+                          : verdicts.add(check, ok, label, kNoView, detail);
+    json j = {{"name", info.name}, {"layout", renderer ? "renderer" : "published"}, {"label", label},
+              {"stores", info.stores}, {"reference", info.glass ? "generator quadrature (lut/microfacet_quadrature.h), 1e-6"
+                                                                : "independent quadrature over h (validate/lut_reference.h)"},
+              {"axes", axes}, {"cells", jc}, {"nodes", nodes.size()}, {"max_abs_error", max_err},
+              {"max_table_se", max_se}, {"max_reference_err", max_ref_err}, {"tolerance", tol}, {"passed", ok},
+              {"verdict", status_word(st)}};
+    if (!values.is_null()) j["values"] = values;
+    arr.push_back(j);
   }
-  return {{"available", true}, {"tolerance", s.lut_tol}, {"panels", s.lut_quadrature.panels}, {"tables", arr}};
+  return {{"available", true}, {"layout", renderer ? "renderer" : "published"}, {"tolerance", s.lut_tol},
+          {"renderer_tolerance", s.renderer_lut_tol},
+          {"renderer_average_tolerance", s.renderer_avg_lut_tol}, {"panels", s.lut_quadrature.panels}, {"tables", arr}};
 }
 
 // ---------------------------------------------------------------- pictures
@@ -541,6 +701,31 @@ const char* status_word(Status s) {
   }
 }
 
+std::string banner(const json& rep) {
+  int failed = 0, waived = 0, not_judged = 0, total = 0;
+  std::vector<std::string> unjudged;
+  for (const json& c : rep.at("summary")) {
+    failed += c.at("failed").get<int>();
+    waived += c.at("waived").get<int>();
+    total += c.at("total").get<int>();
+    const int nj = c.at("not_judged").get<int>();
+    not_judged += nj;
+    if (nj > 0) unjudged.push_back(fmt::format("{} ({} of {})", c.at("check").get<std::string>(), nj, c.at("total").get<int>()));
+  }
+  const std::string verdict =
+      failed > 0 ? fmt::format("FAIL: {} verdict(s) failed", failed)
+                 : fmt::format("PASS: no unwaived failure{}", waived > 0 ? fmt::format(" ({} waived)", waived) : "");
+  const std::string nj = fmt::format("{} of {} verdicts NOT JUDGED (the check could not have failed there)", not_judged, total);
+  if (rep.at("mode") != "quick") return fmt::format("FULL run. {}; {}.", verdict, nj);
+  const json& e = rep.at("energy");
+  return fmt::format(
+      "QUICK run, not the full validation. {}; {}. It cannot judge: {}; nor the cases, view directions and table "
+      "cells only the full run has (white furnace at cos {} with {} samples; dspbr validate --out DIR for the full "
+      "run).",
+      verdict, nj, unjudged.empty() ? std::string("-") : fmt::format("{}", fmt::join(unjudged, "; ")),
+      fmt::join(e.at("cos").get<std::vector<double>>(), ", "), e.at("samples").get<std::size_t>());
+}
+
 std::vector<std::string> missing_tables(const LutSet& l) {
   std::vector<std::string> out;
   for (const LutInfo& info : lut_registry()) {
@@ -557,7 +742,10 @@ SuiteSettings SuiteSettings::defaults(bool quick) {
   if (quick) {
     s.furnace_cos = {1.0, 0.5, 0.1, 0.02};  // 0.02: grazing view (table artefacts show there)
     s.furnace_strata = 40;
-    s.furnace_samples = 4096;
+    // Power: the sampled estimator's band (4 standard errors) within the conservation tolerance
+    // 0.01 for the glossy and transparent cases away from grazing views (measured: 4096 samples
+    // left 76 of 128 quick conservation verdicts NOT JUDGED).
+    s.furnace_samples = 65536;
     s.reciprocity_pairs = 2000;
     s.chi2.samples = 50000;
     s.chi2.theta_bins = 20;
@@ -565,7 +753,7 @@ SuiteSettings SuiteSettings::defaults(bool quick) {
     s.chi2_cos = {0.6};
     s.chi2_cos_below = {-0.6};
     s.stability.random_directions = 200;
-    s.lut_cells_per_axis = 2;
+    s.lut_cells_per_axis = 3;  // ends and middle: the roughness-0 samples (limits) are not checked
     s.lut_quadrature.panels = 12;
     s.image_res = 24;
     s.image_spp = 16;
@@ -574,7 +762,7 @@ SuiteSettings SuiteSettings::defaults(bool quick) {
   } else {
     s.furnace_cos = {1.0, 0.8, 0.5, 0.3, 0.1, 0.02};
     s.furnace_strata = 96;
-    s.furnace_samples = 32768;
+    s.furnace_samples = 262144;
     s.reciprocity_pairs = 20000;
     s.chi2.samples = 1000000;
     s.chi2.theta_bins = 64;
@@ -583,7 +771,9 @@ SuiteSettings SuiteSettings::defaults(bool quick) {
     s.chi2_cos_below = {-0.3};  // from inside, beyond the critical angle of eta 1.5 (TIR)
     s.stability.random_directions = 300;
     s.lut_cells_per_axis = 5;
-    s.lut_quadrature.panels = 24;
+    // 48 panels: at 24 the reference of GGX_E at r = 0.26, cos 0.0046 was off by 3e-4 (its
+    // half-panel error estimate 2e-4), more than the renderer tables' tolerance.
+    s.lut_quadrature.panels = 48;
     s.image_res = 64;
     s.image_spp = 256;
     s.convergence_samples = {16, 64, 256, 1024, 4096, 16384, 65536};
@@ -650,6 +840,7 @@ SuiteResult run_suite(const Catalog& cat, const LutSet* luts, const SuiteSetting
     failed += c.failed;
   }
   report["summary"] = summary;
+  report["banner"] = banner(report);
   report["failures"] = verdicts.failures;
   report["verdicts_not_passed"] = verdicts.listed;
   json waivers = json::array();

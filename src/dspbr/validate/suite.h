@@ -45,7 +45,9 @@ struct SuiteSettings {
   RefQuadrature lut_quadrature;
   // |table - reference| allowed on top of the reference's own error estimate. Fixed: the table's
   // own standard error is reported but never widens it (a noisy table must not validate itself).
-  double lut_tol = 2e-3;
+  double lut_tol = 2e-3;           // published layout (absolute; relative where the value exceeds 1)
+  double renderer_lut_tol = 1e-4;  // renderer layout, the value its lookups return at a sample
+  double renderer_avg_lut_tol = 1e-3;  // renderer layout, averages (of the directional lookups)
   // Pictures
   int image_res = 0;
   std::size_t image_spp = 0;
@@ -71,6 +73,11 @@ struct SuiteResult {
   std::vector<std::string> failures;  // one line per unwaived failed verdict
   std::vector<std::string> waived;    // one line per waived failed verdict (with the waiver's id)
 };
+
+// The report's banner, one line (also report["banner"], shown by the HTML report and the CLI):
+// the run's kind (a quick run says QUICK and what it cannot judge), its verdict and the number of
+// verdicts NOT JUDGED, from report["mode"], ["summary"] and ["energy"].
+std::string banner(const nlohmann::json& report);
 
 // The tables of `luts` that are missing or empty (canonical names); a set used for validation must
 // have none.
