@@ -5,6 +5,7 @@
     dspbr.lut.generate(tables=None, size=None, **settings) -> {name: array}
     dspbr.lut.load(path) -> {name: array}
     dspbr.scene.analyze(path) -> dict (as `dspbr scene analyze --json`)
+    dspbr.conformance.run(vectors, my_eval) -> results (docs/conformance.md; `import dspbr.conformance`)
 
 Bad input raises ValueError with the one-line message the `dspbr` command prints.
 """

@@ -159,12 +159,13 @@ OJson vectors_document(const std::vector<Vector>& vectors, const OJson& provenan
 
 std::string vectors_csv(const std::vector<Vector>& vectors) {
   std::string out =
-      "id,group,components,material,v_x,v_y,v_z,l_x,l_y,l_z,f_cos_r,f_cos_g,f_cos_b,tol_abs,tol_rel,pdf,pdf_tol_abs,"
+      "id,group,components,material,options,v_x,v_y,v_z,l_x,l_y,l_z,f_cos_r,f_cos_g,f_cos_b,tol_abs,tol_rel,pdf,pdf_tol_abs,"
       "pdf_tol_rel,albedo_r,albedo_g,albedo_b,albedo_tol_abs,albedo_tol_rel\n";
   for (const Vector& v : vectors) {
     std::string comps;
     for (const std::string& c : v.components) comps += (comps.empty() ? "" : ";") + c;
-    std::string line = csv_field(v.id) + "," + csv_field(v.group) + "," + csv_field(comps) + "," + csv_field(v.material.dump());
+    std::string line = csv_field(v.id) + "," + csv_field(v.group) + "," + csv_field(comps) + "," + csv_field(v.material.dump()) + "," +
+                       csv_field(v.options.is_null() ? std::string() : v.options.dump());
     for (double x : {v.v.x, v.v.y, v.v.z, v.l.x, v.l.y, v.l.z, v.f_cos.r, v.f_cos.g, v.f_cos.b, v.tolerance.abs,
                      v.tolerance.rel, v.pdf, v.pdf_tolerance.abs, v.pdf_tolerance.rel})
       line += "," + number(x);

@@ -15,7 +15,7 @@ nlohmann::ordered_json vector_json(const Vector& v);
 nlohmann::ordered_json vectors_document(const std::vector<Vector>& vectors, const nlohmann::ordered_json& provenance);
 
 // One line per vector: id,group,components (';'-separated),material (instance JSON, CSV-quoted),
-// v_x,v_y,v_z,l_x,l_y,l_z,f_cos_r,f_cos_g,f_cos_b,tol_abs,tol_rel,pdf,pdf_tol_abs,pdf_tol_rel,
+// options (JSON, CSV-quoted; empty for the defaults),v_x,v_y,v_z,l_x,l_y,l_z,f_cos_r,f_cos_g,f_cos_b,tol_abs,tol_rel,pdf,pdf_tol_abs,pdf_tol_rel,
 // albedo_r,albedo_g,albedo_b,albedo_tol_abs,albedo_tol_rel (empty without an albedo). Numbers
 // written to round trip (%.17g). Delta lobes, emission and glTF materials are in the JSON only.
 std::string vectors_csv(const std::vector<Vector>& vectors);
