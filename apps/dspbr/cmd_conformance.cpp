@@ -2,6 +2,7 @@
 // (docs/conformance.md).
 //   dspbr conformance generate --out DIR [--seed N] [--scenes FOLDER]   DIR/vectors.json, DIR/vectors.csv
 //   dspbr conformance check VECTORS RESULTS --out REPORT                 REPORT/report.json, index.html, plots/
+//   dspbr conformance reference VECTORS --tables SET --out RESULTS.json  the reference's results with other tables
 // check exits 0 when every vector passes, 1 when one fails, 2 on bad input (one line naming the
 // file and the record).
 #include <cstdio>
@@ -16,9 +17,11 @@
 #include "provenance.h"
 #include "report_script.h"
 #include "dspbr/conformance/checker.h"
+#include "dspbr/conformance/demo_tables.h"
 #include "dspbr/conformance/results.h"
 #include "dspbr/conformance/vector_file.h"
 #include "dspbr/conformance/vector_set.h"
+#include "dspbr/io/atomic_file.h"
 #include "dspbr/io/json_write.h"
 #include "dspbr/lut/lut_set.h"
 #include "dspbr/validate/provenance.h"
@@ -33,6 +36,10 @@ struct GenerateArgs {
   std::string out;
   conformance::GenerateSettings settings;
   int threads = 0;
+};
+
+struct ReferenceArgs {
+  std::string vectors, out, tables = "renderer";
 };
 
 struct CheckArgs {
@@ -130,6 +137,31 @@ void run_check(const CheckArgs& a) {
                              " conformance vectors fail (details in " + a.out + ")");
 }
 
+// The results of the reference BSDF reading another table set (f cos and pdf; the quantities that
+// do not depend on the tables are left out): the demonstrations' implementations.
+void run_reference(const ReferenceArgs& a) {
+  conformance::DemoTables tables;
+  try {
+    tables = conformance::parse_demo_tables(a.tables);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--tables: ") + e.what());
+  }
+  std::vector<conformance::Vector> vectors;
+  try {
+    vectors = conformance::read_vectors(a.vectors);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(e.what());
+  }
+  const LutSet& luts = conformance::demo_table_set(tables);
+  OJson results = OJson::array();
+  for (const conformance::Vector& v : vectors) {
+    const conformance::Evaluation e = conformance::evaluate(v, luts);
+    results.push_back(OJson{{"id", v.id}, {"f_cos", {e.f_cos.r, e.f_cos.g, e.f_cos.b}}, {"pdf", e.pdf}});
+  }
+  write_text_atomically(a.out, json_text(OJson{{"results", results}}, -1, a.out) + "\n");
+  std::printf("%zu results of the reference with the %s tables -> %s\n", vectors.size(), a.tables.c_str(), a.out.c_str());
+}
+
 }  // namespace
 
 void add_conformance_command(CLI::App& app) {
@@ -167,6 +199,17 @@ void add_conformance_command(CLI::App& app) {
   chk->add_option("--python", c->python, "Python interpreter with numpy, matplotlib and jinja2")->capture_default_str();
   chk->add_flag("--no-html", [c](int64_t) { c->html = false; }, "Write only report.json");
   chk->callback([c] { run_check(*c); });
+
+  auto r = std::make_shared<ReferenceArgs>();
+  auto* ref = cmd->add_subcommand(
+      "reference", "Write the results of the reference BSDF reading another table set (the demonstrations of "
+                   "docs/conformance.md): f_cos and pdf of every vector");
+  ref->add_option("VECTORS", r->vectors, "vectors.json written by `dspbr conformance generate`")->required();
+  ref->add_option("--tables", r->tables,
+                  "renderer (the reference), published, fits (fits/dspbr_fits.hpp) or uncompensated")
+      ->capture_default_str();
+  ref->add_option("--out", r->out, "Results file (JSON)")->required();
+  ref->callback([r] { run_reference(*r); });
 }
 
 }  // namespace dspbr::cli
