@@ -6,6 +6,7 @@
 #include <tbb/global_control.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -150,6 +151,44 @@ TEST(Conformance, DeltaLobesOfSmoothGlassAreFresnel) {
   FAIL() << "no smooth glass vector";
 }
 
+TEST(Conformance, DeltaLobesAndEmissionAreJudgedWhenSupplied) {
+  const auto& vs = small_set();
+  std::vector<Result> rs = reference_results(vs);
+  std::size_t with_delta = 0, with_emission = 0;
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    rs[i].delta = vs[i].delta;
+    rs[i].emission = vs[i].emission;
+    with_delta += vs[i].delta.empty() ? 0 : 1;
+    with_emission += vs[i].emission ? 1 : 0;
+  }
+  ASSERT_GT(with_delta, 0u);
+  ASSERT_GT(with_emission, 0u);
+  EXPECT_TRUE(check_results(vs, rs).passed());
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    if (vs[i].delta.size() < 2) continue;
+    // The lobes in the other order still match by direction; one lobe 5% off, or left out, fails.
+    std::vector<Result> swapped = rs;
+    std::reverse(swapped[i].delta->begin(), swapped[i].delta->end());
+    EXPECT_TRUE(check_results(vs, swapped).passed()) << vs[i].id;
+    std::vector<Result> off = rs;
+    (*off[i].delta)[0].value = (*off[i].delta)[0].value * 1.05;
+    const Check c = check_results(vs, off);
+    EXPECT_EQ(c.failed, 1u) << vs[i].id;
+    EXPECT_GT(*c.verdicts[i].ratio[int(Quantity::Delta)], 1) << vs[i].id;
+    std::vector<Result> missing = rs;
+    missing[i].delta->pop_back();
+    EXPECT_FALSE(check_results(vs, missing).passed()) << vs[i].id;
+    break;
+  }
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    if (!vs[i].emission) continue;
+    std::vector<Result> off = rs;
+    off[i].emission = *vs[i].emission * 1.05;
+    EXPECT_GT(*check_results(vs, off).verdicts[i].ratio[int(Quantity::Emission)], 1) << vs[i].id;
+    break;
+  }
+}
+
 TEST(Conformance, ResultsCsvWithPdfAndAlbedo) {
   const auto rs = parse_results("id,f_cos_r,f_cos_g,f_cos_b,pdf,albedo_r,albedo_g,albedo_b\r\na,1,2,3,4,0.5,0.6,0.7\n\"b,c\",1e-3,0,0,1,1,1,1\n",
                                 "r.csv");
@@ -199,6 +238,15 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
   EXPECT_EQ(fail.status, 1) << fail.output;
   const auto report = nlohmann::ordered_json::parse(read_all(dir / "rep2" / "report.json"));
   for (const auto& [name, verdict] : group_verdicts(report)) EXPECT_EQ(verdict, name == "clearcoat" ? "FAIL" : "PASS");
+
+  // A vector file of another version: exit 2 naming it.
+  std::string doc = read_all(vectors);
+  doc.replace(doc.find("\"version\": 1"), 12, "\"version\": 7");
+  write(dir / "v7.json", doc);
+  const ToolRun v7 = run_dspbr("conformance check '" + (dir / "v7.json").string() + "' '" + (dir / "ok.csv").string() +
+                               "' --no-html --out '" + (dir / "never").string() + "'");
+  EXPECT_EQ(v7.status, 2) << v7.output;
+  EXPECT_NE(v7.output.find("v7.json: version 7 is not supported"), std::string::npos) << v7.output;
 
   // Malformed: exit 2, one line naming the file and the record; no report folder.
   const std::string first = vs[0].id, second = vs[1].id;
