@@ -34,6 +34,8 @@ using OJson = nlohmann::ordered_json;
 
 struct GenerateArgs {
   std::string out;
+  std::string scenes;  // "": the validation scenes next to the binary
+  bool no_scenes = false;
   conformance::GenerateSettings settings;
   int threads = 0;
 };
@@ -70,11 +72,21 @@ void run_generate(const GenerateArgs& a) {
   std::unique_ptr<tbb::global_control> threads;
   if (a.threads > 0)
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(a.threads));
+  conformance::GenerateSettings settings = a.settings;
+  std::string scenes_name = a.scenes;  // as recorded: the folder as given, or the built-in scenes' name
+  if (a.no_scenes) {
+    scenes_name = "none";
+  } else if (a.scenes.empty()) {
+    settings.scenes_dir = shared_path("scenes/sphere", "; --scenes FOLDER names the scenes, --no-scenes leaves them out");
+    scenes_name = "validation scenes (share/dspbr/scenes/sphere)";
+  } else {
+    settings.scenes_dir = a.scenes;
+  }
   OutputFolder out = open_output_folder(a.out);
   const InterruptCleanup cleanup(out);
   std::vector<conformance::Vector> vectors;
   try {
-    vectors = conformance::generate_vectors(a.settings);
+    vectors = conformance::generate_vectors(settings);
   } catch (const std::runtime_error& e) {
     throw UsageError(std::string("--scenes: ") + e.what());
   }
@@ -84,7 +96,7 @@ void run_generate(const GenerateArgs& a) {
       {"dspbr_version", validate::project_version()},
       {"command", reproducible_command()},
       {"settings", {{"seed", a.settings.seed}, {"directions", a.settings.directions},
-                    {"scenes", a.settings.scenes_dir}, {"albedo", a.settings.albedo}}},
+                    {"scenes", scenes_name}, {"albedo", a.settings.albedo}}},
       {"reference", {{"tables", LutSet::builtin_name(LutLayout::Renderer)}, {"options", "defaults but a vector's options"},
                      {"table_error", conformance::kTableError}, {"float_relative", conformance::kFloatRelative},
                      {"float_absolute", conformance::kFloatAbsolute},
@@ -177,8 +189,10 @@ void add_conformance_command(CLI::App& app) {
   gen->add_option("--directions", g->settings.directions, "Pairs of directions per material")
       ->capture_default_str()
       ->transform(decimal_integer(1, 1000, "a number of direction pairs"));
-  gen->add_option("--scenes", g->settings.scenes_dir,
-                  "Folder of .gltf scenes whose materials join the set (e.g. data/dspbr/scenes/sphere)");
+  gen->add_option("--scenes", g->scenes,
+                  "Folder of .gltf scenes whose materials join the set (default: the validation scenes, "
+                  "data/dspbr/scenes/sphere, installed with dspbr)");
+  gen->add_flag("--no-scenes", g->no_scenes, "Only the built-in materials (no scene materials)");
   gen->add_flag("--no-albedo", [g](int64_t) { g->settings.albedo = false; },
                 "Leave out the directional albedos (a quadrature per material: most of the time)");
   gen->add_option("--threads", g->threads, "Worker threads (0: all cores); the vectors do not depend on it")

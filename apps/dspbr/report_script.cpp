@@ -14,19 +14,22 @@ std::string shell_quote(const std::string& s) {
   return q + "'";
 }
 
-std::string report_script(const std::string& name) {
+std::string shared_path(const std::string& relative, const std::string& hint) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (ec) throw std::runtime_error("cannot locate the dspbr executable (/proc/self/exe): " + ec.message());
   std::string tried;
-  for (const fs::path& dir : {exe.parent_path().parent_path() / "share/dspbr/report",
-                              exe.parent_path() / "share/dspbr/report"}) {
-    const fs::path script = dir / name;
-    if (fs::is_regular_file(script, ec)) return script.string();
-    tried += (tried.empty() ? "" : ", ") + script.string();
+  for (const fs::path& dir : {exe.parent_path().parent_path() / "share/dspbr", exe.parent_path() / "share/dspbr"}) {
+    const fs::path p = dir / relative;
+    if (fs::exists(p, ec)) return p.string();
+    tried += (tried.empty() ? "" : ", ") + p.string();
   }
-  throw std::runtime_error("report script not found (looked for " + tried + "); --no-html writes only the data");
+  throw std::runtime_error(relative + " not found (looked for " + tried + ")" + hint);
+}
+
+std::string report_script(const std::string& name) {
+  return shared_path("report/" + name, "; --no-html writes only the data");
 }
 
 void run_report_script(const std::string& python, const std::string& script, const std::string& folder,
