@@ -248,6 +248,18 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
   EXPECT_EQ(v7.status, 2) << v7.output;
   EXPECT_NE(v7.output.find("v7.json: version 7 is not supported"), std::string::npos) << v7.output;
 
+  // `reference` with a vector whose material is out of range: exit 2 naming the file and the vector.
+  write(dir / "badv.json",
+        R"({"format": "dspbr-conformance", "version": 1, "provenance": {}, "vectors": [{"id": "a", "group": "g",
+        "components": [], "material": {"material": "generic", "values": {"roughness": 7}}, "v": [0, 0, 1],
+        "l": [0, 0, 1], "f_cos": [0, 0, 0], "tolerance": {"abs": 0, "rel": 0}, "pdf": 0,
+        "pdf_tolerance": {"abs": 0, "rel": 0}}]})");
+  const ToolRun bad_ref = run_dspbr("conformance reference '" + (dir / "badv.json").string() + "' --out '" +
+                                    (dir / "never.json").string() + "'");
+  EXPECT_EQ(bad_ref.status, 2) << bad_ref.output;
+  EXPECT_NE(bad_ref.output.find("badv.json: vector 'a': parameter 'roughness'"), std::string::npos) << bad_ref.output;
+  EXPECT_FALSE(fs::exists(dir / "never.json"));
+
   // Malformed: exit 2, one line naming the file and the record; no report folder.
   const std::string first = vs[0].id, second = vs[1].id;
   struct Case {

@@ -167,7 +167,12 @@ void run_reference(const ReferenceArgs& a) {
   const LutSet& luts = conformance::demo_table_set(tables);
   OJson results = OJson::array();
   for (const conformance::Vector& v : vectors) {
-    const conformance::Evaluation e = conformance::evaluate(v, luts);
+    conformance::Evaluation e;
+    try {
+      e = conformance::evaluate(v, luts);
+    } catch (const std::exception& ex) {  // an invalid instance or options
+      throw UsageError(a.vectors + ": vector '" + v.id + "': " + ex.what());
+    }
     results.push_back(OJson{{"id", v.id}, {"f_cos", {e.f_cos.r, e.f_cos.g, e.f_cos.b}}, {"pdf", e.pdf}});
   }
   write_text_atomically(a.out, json_text(OJson{{"results", results}}, -1, a.out) + "\n");
