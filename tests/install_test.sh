@@ -25,7 +25,8 @@ for f in bin/dspbr lib/libdspbr.a lib/cmake/dspbr/dspbrConfig.cmake lib/cmake/ds
          include/dspbr/luts/dspbr_glass_lookup.hlsl include/dspbr/fits/dspbr_fits.hpp \
          share/dspbr/data/params-2025x.json share/dspbr/data/LICENSE.txt share/dspbr/data/gltf_ext/schema \
          share/dspbr/luts/dspbr_renderer_luts.json share/dspbr/report/make_report.py \
-         share/dspbr/report/templates/index.html.j2; do
+         share/dspbr/report/templates/index.html.j2 share/dspbr/report/conformance_report.py \
+         share/dspbr/scenes/sphere/00-metal-roughness-0.05.gltf include/dspbr/conformance/vector_set.h; do
   [ -e "$prefix/$f" ] || { echo "missing in the install: $f"; exit 1; }
 done
 # Nothing installed may name the source or the build tree (the binary, the CMake files, the .pc).
@@ -78,6 +79,14 @@ step "examples/ against the moved prefix (CMake package)"
 "$cmake" -S "$src/examples" -B ex -DCMAKE_PREFIX_PATH="$prefix" > ex-configure.log
 "$cmake" --build ex -j2 > ex-build.log
 ./ex/bsdf_example
+
+step "conformance kit from the moved prefix: generate (the installed scenes), the C harness, check (HTML)"
+"$dspbr" conformance generate --directions 2 --no-albedo --out C > conformance.log
+grep -q '"scenes":"validation scenes' C/vectors.json || { echo "the vectors lack the installed scenes"; exit 1; }
+./ex/conformance_harness C/vectors.csv C/results.csv >> conformance.log
+"$dspbr" conformance check C/vectors.json C/results.csv --out CR >> conformance.log ||
+  { cat conformance.log; exit 1; }
+[ -s CR/index.html ] || { echo "conformance check wrote no CR/index.html"; exit 1; }
 
 step "examples/bsdf_example.cpp through dspbr.pc"
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
