@@ -4,7 +4,7 @@
 #include <functional>
 #include <stdexcept>
 
-#include "dspbr_fits.hpp"  // fits/ (a private include folder of the library)
+#include "../../../fits/dspbr_fits.hpp"  // the LUT-free fits a renderer includes
 
 namespace dspbr::conformance {
 

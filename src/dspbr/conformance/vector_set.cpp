@@ -421,8 +421,10 @@ BsdfOptions vector_options(const Vector& v) {
   BsdfOptions o;
   if (v.options.is_null()) return o;
   if (!v.options.is_object()) throw std::runtime_error("options must be an object");
-  for (const auto& [key, value] : v.options.items()) {
-    auto vec = [&]() {
+  for (auto it = v.options.begin(); it != v.options.end(); ++it) {
+    const std::string& key = it.key();
+    const nlohmann::ordered_json& value = it.value();
+    auto vec = [&key, &value]() {
       if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
           !value[2].is_number())
         throw std::runtime_error("options." + key + " must be 3 numbers");
