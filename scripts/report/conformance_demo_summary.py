@@ -42,8 +42,10 @@ def summary(demo):
         with open(os.path.join(demo, "report-" + name, "report.json"), encoding="utf-8") as f:
             rep = json.load(f)
         s = rep["summary"]
+        q = rep["quantities"]
         lines += [f"**{title}** (`dspbr conformance reference --tables {name}`): {rep['verdict']}, "
-                  f"{s['failed']} of {s['vectors']} vectors fail.", ""]
+                  f"{s['failed']} of {s['vectors']} vectors fail (f cos: {q['f_cos']['failed']}, "
+                  f"pdf: {q['pdf']['failed']}; the pdf reads the tables through the lobe selection).", ""]
         lines += ["| group | failing vectors | worst error / tolerance | largest relative error of f cos | worst vector |",
                   "|---|---:|---:|---:|---|"]
         rel = {}
