@@ -18,7 +18,7 @@ mv "$work/stage" "$work/moved"
 prefix="$work/moved"
 dspbr="$prefix/bin/dspbr"
 for f in bin/dspbr lib/libdspbr_core.a lib/libdspbr_lutgen.a lib/libdspbr_formats.a lib/libdspbr_validate.a \
-         lib/libdspbr_fit.a lib/cmake/dspbr/dspbr_coreTargets.cmake lib/cmake/dspbr/dspbrConfig.cmake lib/cmake/dspbr/dspbrConfigVersion.cmake \
+         lib/libdspbr_fit.a lib/libdspbr_conformance.a lib/cmake/dspbr/dspbr_coreTargets.cmake lib/cmake/dspbr/dspbrConfig.cmake lib/cmake/dspbr/dspbrConfigVersion.cmake \
          lib/cmake/dspbr/dspbrTargets.cmake lib/pkgconfig/dspbr.pc include/dspbr/bsdf/material_bsdf.h \
          include/dspbr/version.h include/dspbr/luts/pbrlut.hpp include/dspbr/luts/dspbr_lookup.h \
          include/dspbr/luts/dspbr_lookup.glsl include/dspbr/luts/dspbr_lookup.hlsl \
@@ -26,7 +26,8 @@ for f in bin/dspbr lib/libdspbr_core.a lib/libdspbr_lutgen.a lib/libdspbr_format
          include/dspbr/luts/dspbr_glass_lookup.hlsl include/dspbr/fits/dspbr_fits.hpp \
          share/dspbr/data/params-2025x.json share/dspbr/data/LICENSE.txt share/dspbr/data/gltf_ext/schema \
          share/dspbr/luts/dspbr_renderer_luts.json share/dspbr/report/make_report.py \
-         share/dspbr/report/templates/index.html.j2; do
+         share/dspbr/report/templates/index.html.j2 share/dspbr/report/conformance_report.py \
+         share/dspbr/scenes/sphere/00-metal-roughness-0.05.gltf include/dspbr/conformance/vector_set.h; do
   [ -e "$prefix/$f" ] || { echo "missing in the install: $f"; exit 1; }
 done
 # Nothing installed may name the source or the build tree (the binary, the CMake files, the .pc).
@@ -88,7 +89,7 @@ step "COMPONENTS core alone from the moved prefix: only dspbr::core defined, no 
 bash "$src/tests/core_links_alone.sh" ex-core/core_renderer > /dev/null
 
 step "each component on its own from the moved prefix; an unknown one is refused"
-for c in core lutgen formats validate fit; do
+for c in core lutgen formats validate fit conformance; do
   mkdir -p "comp-$c"
   printf 'cmake_minimum_required(VERSION 3.20)\nproject(c LANGUAGES CXX)\nfind_package(dspbr CONFIG REQUIRED COMPONENTS %s)\nif(NOT TARGET dspbr::%s)\n  message(FATAL_ERROR "no dspbr::%s")\nendif()\n' \
     "$c" "$c" "$c" > "comp-$c/CMakeLists.txt"
@@ -100,6 +101,14 @@ if "$cmake" -S comp-bad -B comp-bad/b -DCMAKE_PREFIX_PATH="$prefix" > comp-bad.l
   echo "an unknown component was accepted"; exit 1
 fi
 grep -q "unknown dspbr component 'shaders'" comp-bad.log || { cat comp-bad.log; exit 1; }
+
+step "conformance kit from the moved prefix: generate (the installed scenes), the C harness, check (HTML)"
+"$dspbr" conformance generate --directions 2 --no-albedo --out C > conformance.log
+grep -q '"scenes":"validation scenes' C/vectors.json || { echo "the vectors lack the installed scenes"; exit 1; }
+./ex/conformance_harness C/vectors.csv C/results.csv >> conformance.log
+"$dspbr" conformance check C/vectors.json C/results.csv --out CR >> conformance.log ||
+  { cat conformance.log; exit 1; }
+[ -s CR/index.html ] || { echo "conformance check wrote no CR/index.html"; exit 1; }
 
 step "examples/bsdf_example.cpp through dspbr.pc"
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"

@@ -5,11 +5,8 @@
 // Writes DIR/data/report.json and DIR/images/ (C++), then DIR/index.html and DIR/plots/ through
 // scripts/report/make_report.py (matplotlib + jinja2), found relative to the running binary
 // (installed in <prefix>/share/dspbr/report; the build copies it next to build/dspbr).
-#include <sys/wait.h>
-
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <fmt/format.h>
 #include <memory>
 #include <string>
@@ -17,6 +14,7 @@
 
 #include "commands.h"
 #include "interrupt_cleanup.h"
+#include "report_script.h"
 #include "dspbr/limits.h"
 #include "dspbr/io/read_file.h"
 #include "dspbr/tables/lut_set.h"
@@ -42,32 +40,8 @@ struct ValidateArgs {
   int threads = 0;  // 0: all cores
 };
 
-// Single-quote a string for /bin/sh.
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// scripts/report/ as installed next to the running binary: <prefix>/share/dspbr/report beside
-// <prefix>/bin/dspbr, or the copy the build makes in share/dspbr/report of the binary's folder.
-std::string report_script() {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) throw std::runtime_error("cannot locate the dspbr executable (/proc/self/exe): " + ec.message());
-  std::string tried;
-  for (const fs::path& dir : {exe.parent_path().parent_path() / "share/dspbr/report",
-                              exe.parent_path() / "share/dspbr/report"}) {
-    const fs::path script = dir / "make_report.py";
-    if (fs::is_regular_file(script, ec)) return script.string();
-    tried += (tried.empty() ? "" : ", ") + script.string();
-  }
-  throw std::runtime_error("report script not found (looked for " + tried + "); --no-html writes only the data");
-}
-
 void run_validate(const ValidateArgs& a) {
-  const std::string script = a.html ? report_script() : std::string();
+  const std::string script = a.html ? report_script("make_report.py") : std::string();
   std::unique_ptr<tbb::global_control> threads;
   if (a.threads > 0)
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(a.threads));
@@ -129,12 +103,7 @@ void run_validate(const ValidateArgs& a) {
   const validate::SuiteResult r = validate::run_suite(cat, checked, s, out.staging());
 
   if (a.html) {
-    const std::string cmd = shell_quote(a.python) + " " + shell_quote(script) + " " + shell_quote(out.staging());
-    const int st = std::system(cmd.c_str());
-    const int rc = (st != -1 && WIFEXITED(st)) ? WEXITSTATUS(st) : -1;
-    if (rc != 0)
-      throw std::runtime_error(fmt::format("the report script failed (exit status {}): {} (nothing was written to {})",
-                                           rc, cmd, a.out));
+    run_report_script(a.python, script, out.staging(), a.out);
   }
   out.commit();
 

@@ -52,5 +52,6 @@ void add_validate_command(CLI::App& app);  // cmd_validate.cpp (validation repor
 void add_fit_command(CLI::App& app);       // cmd_fit.cpp      (Ceres fits)
 void add_params_command(CLI::App& app);    // cmd_params.cpp   (parameter JSON, instances)
 void add_scene_command(CLI::App& app);     // cmd_scene.cpp    (glTF scenes)
+void add_conformance_command(CLI::App& app);  // cmd_conformance.cpp (conformance vectors, checker)
 
 }  // namespace dspbr::cli

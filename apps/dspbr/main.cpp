@@ -90,6 +90,7 @@ int main(int argc, char** argv) {
   dspbr::cli::add_fit_command(app);
   dspbr::cli::add_params_command(app);
   dspbr::cli::add_scene_command(app);
+  dspbr::cli::add_conformance_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

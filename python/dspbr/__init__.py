@@ -7,6 +7,7 @@
     dspbr.scene.analyze(path) -> dict (as `dspbr scene analyze --json`)
     dspbr.lookup.ggx_E(cos_theta, roughness), ... -> float32 arrays: the functions of the generated
         luts/dspbr_lookup.h and dspbr_glass_lookup.h, vectorised (what a renderer including them computes)
+    dspbr.conformance.run(vectors, my_eval) -> results (docs/conformance.md; `import dspbr.conformance`)
 
 Bad input raises ValueError with the one-line message the `dspbr` command prints.
 """

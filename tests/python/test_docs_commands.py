@@ -58,6 +58,18 @@ SMALL = {
 }
 
 
+# Commands that read what the docs' preceding lines made (docs/conformance.md: generate, then the
+# C harness build/example_conformance, then check): those lines are run first in the same folder,
+# generate with fewer directions (seconds).
+HARNESS = os.path.join(os.path.dirname(os.path.abspath(dspbr_exe())), "example_conformance")
+BEFORE = {
+    f"dspbr conformance check {d}/vectors.json {d}/results.csv --out {out}": [
+        [dspbr_exe(), "conformance", "generate", "--directions", "2", "--no-albedo", "--out", d],
+        [HARNESS, f"{d}/vectors.csv", f"{d}/results.csv"]]
+    for d, out in [("conformance", "conformance-report"), ("conformance-harness", "conformance-harness/report")]
+}
+
+
 def expand(command):
     """The runs of a documented line: placeholders replaced, `[--opt]` without and with."""
     optional = re.findall(r"\[(--[^\]]*)\]", command)
@@ -89,5 +101,7 @@ def test_every_docs_command_runs(doc, command, run, tmp_path):
     args = shlex.split(run) + shlex.split(small or "")  # the documented options always run
     args = [str(tmp_path / "out") if a in ("DIR", "luts", "report") else a for a in args]
     args = [str(tmp_path / a) if a.endswith(".csv") else a for a in args]
+    for before in BEFORE.get(command, []):
+        subprocess.run(before, cwd=tmp_path, check=True, capture_output=True, timeout=600)
     p = subprocess.run([dspbr_exe(), *args[1:]], cwd=tmp_path, capture_output=True, text=True, timeout=600)
     assert p.returncode == 0, (doc, command, args, p.stderr[-2000:])

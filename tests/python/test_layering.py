@@ -23,6 +23,7 @@ ALLOWED = {
     "scene": CORE + ["params", "gltf", "scene"],
     "validate": CORE + ["lutgen", "validate"],
     "fit": CORE + ["lutgen", "validate", "fit"],
+    "conformance": CORE + ["params", "gltf", "scene", "conformance"],
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+"dspbr/(?:([a-z_]+)/)?[a-z_0-9]+\.h"', re.M)
 

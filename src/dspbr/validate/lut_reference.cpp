@@ -13,7 +13,7 @@
 #include "dspbr/frame.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
-#include "dspbr/lut/microfacet_quadrature.h"
+#include "dspbr/lutgen/microfacet_quadrature.h"
 #include "dspbr/quadrature.h"
 #include "dspbr/sheen.h"
 

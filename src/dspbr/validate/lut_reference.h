@@ -14,11 +14,11 @@
 // difference to the same rule with half the panels.
 //
 // The rough-glass tables (beyond DSPBR 2025x) have no second route here: their reference is the
-// table generator's deterministic quadrature (lut/microfacet_quadrature.h) at target error 1e-6,
+// table generator's deterministic quadrature (lutgen/microfacet_quadrature.h) at target error 1e-6,
 // which checks the stored values and the layout's lookups, not the quadrature itself.
 #pragma once
 
-#include "dspbr/lut/table_registry.h"
+#include "dspbr/tables/table_registry.h"
 
 namespace dspbr::validate {
 

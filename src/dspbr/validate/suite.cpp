@@ -588,7 +588,7 @@ json run_luts(const LutSet* luts, const SuiteSettings& s, Verdicts& verdicts) {
                                                 "the reference's own error exceeds the tolerance at some sample")
                           : verdicts.add(check, ok, label, kNoView, detail);
     json j = {{"name", info.name}, {"layout", renderer ? "renderer" : "published"}, {"label", label},
-              {"stores", info.stores}, {"reference", info.glass ? "generator quadrature (lut/microfacet_quadrature.h), 1e-6"
+              {"stores", info.stores}, {"reference", info.glass ? "generator quadrature (lutgen/microfacet_quadrature.h), 1e-6"
                                                                 : "independent quadrature over h (validate/lut_reference.h)"},
               {"axes", axes}, {"cells", jc}, {"nodes", nodes.size()}, {"max_abs_error", max_err},
               {"max_table_se", max_se}, {"max_reference_err", max_ref_err}, {"tolerance", tol}, {"passed", ok},

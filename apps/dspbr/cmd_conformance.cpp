@@ -1,0 +1,234 @@
+// `dspbr conformance`: test vectors for implementers of DSPBR and the checker of their results
+// (docs/conformance.md).
+//   dspbr conformance generate --out DIR [--seed N] [--scenes FOLDER]   DIR/vectors.json, DIR/vectors.csv
+//   dspbr conformance check VECTORS RESULTS --out REPORT                 REPORT/report.json, index.html, plots/
+//   dspbr conformance reference VECTORS --tables SET --out RESULTS.json  the reference's results with other tables
+// check exits 0 when every vector passes, 1 when one fails, 2 on bad input (one line naming the
+// file and the record).
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <tbb/global_control.h>
+
+#include "commands.h"
+#include "interrupt_cleanup.h"
+#include "provenance.h"
+#include "report_script.h"
+#include "dspbr/conformance/checker.h"
+#include "dspbr/conformance/demo_tables.h"
+#include "dspbr/conformance/results.h"
+#include "dspbr/conformance/vector_file.h"
+#include "dspbr/conformance/vector_set.h"
+#include "dspbr/io/atomic_file.h"
+#include "dspbr/io/json_write.h"
+#include "dspbr/tables/lut_set.h"
+#include "dspbr/validate/provenance.h"
+
+namespace dspbr::cli {
+
+namespace {
+
+using OJson = nlohmann::ordered_json;
+
+struct GenerateArgs {
+  std::string out;
+  std::string scenes;  // "": the validation scenes next to the binary
+  bool no_scenes = false;
+  conformance::GenerateSettings settings;
+  int threads = 0;
+};
+
+struct ReferenceArgs {
+  std::string vectors, out, tables = "renderer";
+};
+
+struct CheckArgs {
+  std::string vectors, results, out;
+  std::string python = "/usr/bin/python3";
+  bool html = true;
+};
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream f(path, std::ios::binary);
+  f << text;
+  f.close();
+  if (!f) throw std::runtime_error("cannot write " + path);
+}
+
+// vectors.json with one vector per line (diff-friendly, still strict JSON).
+std::string vectors_text(const OJson& doc) {
+  if (const auto p = non_finite_path(doc))
+    throw std::runtime_error("vectors.json: the value at " + *p + " is not finite; nothing written");
+  std::string s = "{\"format\": " + doc["format"].dump() + ", \"version\": " + doc["version"].dump() +
+                  ",\n \"provenance\": " + doc["provenance"].dump() + ",\n \"vectors\": [\n";
+  const OJson& vs = doc["vectors"];
+  for (std::size_t i = 0; i < vs.size(); ++i) s += "  " + vs[i].dump() + (i + 1 < vs.size() ? ",\n" : "\n");
+  return s + "]}\n";
+}
+
+void run_generate(const GenerateArgs& a) {
+  std::unique_ptr<tbb::global_control> threads;
+  if (a.threads > 0)
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(a.threads));
+  conformance::GenerateSettings settings = a.settings;
+  std::string scenes_name = a.scenes;  // as recorded: the folder as given, or the built-in scenes' name
+  if (a.no_scenes) {
+    scenes_name = "none";
+  } else if (a.scenes.empty()) {
+    settings.scenes_dir = shared_path("scenes/sphere", "; --scenes FOLDER names the scenes, --no-scenes leaves them out");
+    scenes_name = "validation scenes (share/dspbr/scenes/sphere)";
+  } else {
+    settings.scenes_dir = a.scenes;
+  }
+  OutputFolder out = open_output_folder(a.out);
+  const InterruptCleanup cleanup(out);
+  std::vector<conformance::Vector> vectors;
+  try {
+    vectors = conformance::generate_vectors(settings);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--scenes: ") + e.what());
+  }
+  // Provenance without the git hash, the --out folder or --threads: the same settings give the
+  // same bytes at any commit of the same version and with any thread count.
+  const OJson provenance{
+      {"dspbr_version", validate::project_version()},
+      {"command", reproducible_command()},
+      {"settings", {{"seed", a.settings.seed}, {"directions", a.settings.directions},
+                    {"scenes", scenes_name}, {"albedo", a.settings.albedo}}},
+      {"reference", {{"tables", LutSet::builtin_name(LutLayout::Renderer)}, {"options", "defaults but a vector's options"},
+                     {"table_error", conformance::kTableError}, {"float_relative", conformance::kFloatRelative},
+                     {"float_absolute", conformance::kFloatAbsolute},
+                     {"thin_film_relative", conformance::kThinFilmRelative},
+                     {"albedo_agreement", conformance::kAlbedoAgreement}}},
+      {"conventions", "docs/bsdf.md: local frame (normal +z), v and l away from the surface, f_cos = f(v, l) |l.z|"}};
+  write_text(out.staging() + "/vectors.json", vectors_text(conformance::vectors_document(vectors, provenance)));
+  write_text(out.staging() + "/vectors.csv", conformance::vectors_csv(vectors));
+  out.commit();
+  std::size_t delta = 0, albedo = 0;
+  for (const auto& v : vectors) delta += v.delta.empty() ? 0 : 1, albedo += v.albedo ? 1 : 0;
+  std::printf("%zu vectors (%zu with delta lobes, %zu with an albedo) -> %s/vectors.json, %s/vectors.csv\n",
+              vectors.size(), delta, albedo, a.out.c_str(), a.out.c_str());
+}
+
+void run_check(const CheckArgs& a) {
+  const std::string script = a.html ? report_script("conformance_report.py") : std::string();
+  std::vector<conformance::Vector> vectors;
+  std::vector<conformance::Result> results;
+  try {
+    vectors = conformance::read_vectors(a.vectors);
+    results = conformance::match_results(vectors, conformance::read_results(a.results), a.results, a.vectors);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(e.what());
+  }
+  const conformance::Check check = conformance::check_results(vectors, results);
+  OutputFolder out = open_output_folder(a.out);
+  const InterruptCleanup cleanup(out);
+  OJson provenance = output_provenance();
+  provenance["vectors"] = a.vectors;
+  provenance["results"] = a.results;
+  const OJson report = conformance::check_report(vectors, results, check, provenance);
+  write_text(out.staging() + "/report.json", json_text(report, 1, "report.json"));
+  if (a.html) run_report_script(a.python, script, out.staging(), a.out);
+  out.commit();
+
+  std::printf("conformance: %s, %zu of %zu vectors pass; report in %s/%s\n", check.passed() ? "PASS" : "FAIL",
+              vectors.size() - check.failed, vectors.size(), a.out.c_str(), a.html ? "index.html" : "report.json");
+  std::printf("  %-28s %7s %6s %6s %12s  %s\n", "group", "verdict", "PASS", "FAIL", "worst ratio", "worst vector");
+  for (const auto& g : report["groups"])
+    std::printf("  %-28s %7s %6d %6d %12.3g  %s\n", g["name"].get<std::string>().c_str(),
+                g["verdict"].get<std::string>().c_str(), g["passed"].get<int>(), g["failed"].get<int>(),
+                g["worst_ratio"].get<double>(), g["worst_id"].get<std::string>().c_str());
+  for (const auto& [name, q] : report["quantities"].items())
+    if (q["not_judged"].get<int>() > 0)
+      std::printf("  NOT JUDGED: %s of %d vectors (not in %s)\n", name.c_str(), q["not_judged"].get<int>(),
+                  a.results.c_str());
+  if (!check.passed())
+    throw std::runtime_error(std::to_string(check.failed) + " of " + std::to_string(vectors.size()) +
+                             " conformance vectors fail (details in " + a.out + ")");
+}
+
+// The results of the reference BSDF reading another table set (f cos and pdf; the quantities that
+// do not depend on the tables are left out): the demonstrations' implementations.
+void run_reference(const ReferenceArgs& a) {
+  conformance::DemoTables tables;
+  try {
+    tables = conformance::parse_demo_tables(a.tables);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--tables: ") + e.what());
+  }
+  std::vector<conformance::Vector> vectors;
+  try {
+    vectors = conformance::read_vectors(a.vectors);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(e.what());
+  }
+  const LutSet& luts = conformance::demo_table_set(tables);
+  OJson results = OJson::array();
+  for (const conformance::Vector& v : vectors) {
+    conformance::Evaluation e;
+    try {
+      e = conformance::evaluate(v, luts);
+    } catch (const std::exception& ex) {  // an invalid instance or options
+      throw UsageError(a.vectors + ": vector '" + v.id + "': " + ex.what());
+    }
+    results.push_back(OJson{{"id", v.id}, {"f_cos", {e.f_cos.r, e.f_cos.g, e.f_cos.b}}, {"pdf", e.pdf}});
+  }
+  write_text_atomically(a.out, json_text(OJson{{"results", results}}, -1, a.out) + "\n");
+  std::printf("%zu results of the reference with the %s tables -> %s\n", vectors.size(), a.tables.c_str(), a.out.c_str());
+}
+
+}  // namespace
+
+void add_conformance_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("conformance", "Conformance kit: test vectors for DSPBR implementations and their checker");
+  cmd->require_subcommand(1);
+
+  auto g = std::make_shared<GenerateArgs>();
+  auto* gen = cmd->add_subcommand("generate", "Write the conformance vectors: DIR/vectors.json and DIR/vectors.csv");
+  gen->add_option("--out", g->out, "Output folder")->required();
+  gen->add_option("--seed", g->settings.seed, "Seed of the directions (same seed -> same bytes)")
+      ->capture_default_str()
+      ->transform(non_negative_integer());
+  gen->add_option("--directions", g->settings.directions, "Pairs of directions per material")
+      ->capture_default_str()
+      ->transform(decimal_integer(1, 1000, "a number of direction pairs"));
+  gen->add_option("--scenes", g->scenes,
+                  "Folder of .gltf scenes whose materials join the set (default: the validation scenes, "
+                  "data/dspbr/scenes/sphere, installed with dspbr)");
+  gen->add_flag("--no-scenes", g->no_scenes, "Only the built-in materials (no scene materials)");
+  gen->add_flag("--no-albedo", [g](int64_t) { g->settings.albedo = false; },
+                "Leave out the directional albedos (a quadrature per material: most of the time)");
+  gen->add_option("--threads", g->threads, "Worker threads (0: all cores); the vectors do not depend on it")
+      ->capture_default_str()
+      ->transform(thread_count());
+  gen->callback([g] { run_generate(*g); });
+
+  auto c = std::make_shared<CheckArgs>();
+  auto* chk = cmd->add_subcommand(
+      "check", "Judge an implementation's results against the vectors; writes REPORT/report.json and index.html "
+               "(exit 0: all pass, 1: a failure, 2: bad input)");
+  chk->add_option("VECTORS", c->vectors, "vectors.json written by `dspbr conformance generate`")->required();
+  chk->add_option("RESULTS", c->results,
+                  "Results: JSON {\"results\": [{\"id\", \"f_cos\", [\"pdf\"], [\"albedo\"], ...}]} or CSV "
+                  "id,f_cos_r,f_cos_g,f_cos_b[,pdf][,albedo_r,albedo_g,albedo_b]")
+      ->required();
+  chk->add_option("--out", c->out, "Report folder")->required();
+  chk->add_option("--python", c->python, "Python interpreter with numpy, matplotlib and jinja2")->capture_default_str();
+  chk->add_flag("--no-html", [c](int64_t) { c->html = false; }, "Write only report.json");
+  chk->callback([c] { run_check(*c); });
+
+  auto r = std::make_shared<ReferenceArgs>();
+  auto* ref = cmd->add_subcommand(
+      "reference", "Write the results of the reference BSDF reading another table set (the demonstrations of "
+                   "docs/conformance.md): f_cos and pdf of every vector");
+  ref->add_option("VECTORS", r->vectors, "vectors.json written by `dspbr conformance generate`")->required();
+  ref->add_option("--tables", r->tables,
+                  "renderer (the reference), published, fits (fits/dspbr_fits.hpp) or uncompensated")
+      ->capture_default_str();
+  ref->add_option("--out", r->out, "Results file (JSON)")->required();
+  ref->callback([r] { run_reference(*r); });
+}
+
+}  // namespace dspbr::cli

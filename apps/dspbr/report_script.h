@@ -1,0 +1,26 @@
+// Files the commands find next to the running binary: the Python report scripts (scripts/report/)
+// run by `dspbr validate` and `dspbr conformance check` (installed in <prefix>/share/dspbr/report
+// beside <prefix>/bin/dspbr; the build copies them into share/dspbr/report of the binary's folder),
+// and the validation scenes (share/dspbr/scenes) of `dspbr conformance generate`.
+#pragma once
+#include <string>
+
+namespace dspbr::cli {
+
+// Single-quotes a string for /bin/sh.
+std::string shell_quote(const std::string& s);
+
+// The path of share/dspbr/<relative> next to the running binary (<prefix>/share/dspbr beside
+// <prefix>/bin, or share/dspbr in the binary's folder, where the build copies the report scripts and
+// the validation scenes); throws std::runtime_error listing the places looked at when it is in none.
+std::string shared_path(const std::string& relative, const std::string& hint);
+
+// shared_path("report/<name>"): scripts/report/<name>.
+std::string report_script(const std::string& name);
+
+// Runs `python script folder`; throws std::runtime_error with the command and its exit status when
+// it fails ("... (nothing was written to <out>)").
+void run_report_script(const std::string& python, const std::string& script, const std::string& folder,
+                       const std::string& out);
+
+}  // namespace dspbr::cli

@@ -1,0 +1,175 @@
+#include "dspbr/conformance/checker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+
+#include "dspbr/conformance/vector_file.h"
+
+namespace dspbr::conformance {
+
+namespace {
+
+using OJson = nlohmann::ordered_json;
+
+double rgb_ratio(const Tolerance& t, const Rgb& got, const Rgb& expected) {
+  return std::max({t.ratio(got.r, expected.r), t.ratio(got.g, expected.g), t.ratio(got.b, expected.b)});
+}
+
+// Directions of delta lobes match within this distance (unit vectors).
+constexpr double kDeltaDirection = 1e-6;
+
+// Every expected delta lobe against the supplied lobe towards its direction (a missing one counts
+// as 0); a supplied lobe towards no expected direction is judged against 0.
+double delta_ratio(const Tolerance& t, const std::vector<DeltaExpectation>& got, const std::vector<DeltaExpectation>& expected) {
+  double worst = 0;
+  std::vector<bool> used(got.size(), false);
+  for (const DeltaExpectation& e : expected) {
+    Rgb value{0, 0, 0};
+    for (std::size_t i = 0; i < got.size(); ++i)
+      if (!used[i] && length(got[i].l - e.l) < kDeltaDirection) value = got[i].value, used[i] = true;
+    worst = std::max(worst, rgb_ratio(t, value, e.value));
+  }
+  for (std::size_t i = 0; i < got.size(); ++i)
+    if (!used[i]) worst = std::max(worst, rgb_ratio(t, got[i].value, Rgb{0, 0, 0}));
+  return worst;
+}
+
+OJson counts_json(std::size_t judged, std::size_t passed, std::size_t not_judged) {
+  return OJson{{"judged", judged}, {"passed", passed}, {"failed", judged - passed}, {"not_judged", not_judged}};
+}
+
+OJson ratio_json(const std::optional<double>& r) { return r ? OJson(std::min(*r, 1e300)) : OJson(nullptr); }
+
+}  // namespace
+
+const char* quantity_name(Quantity q) {
+  switch (q) {
+    case Quantity::FCos: return "f_cos";
+    case Quantity::Pdf: return "pdf";
+    case Quantity::Albedo: return "albedo";
+    case Quantity::Emission: return "emission";
+    case Quantity::Delta: return "delta";
+  }
+  return "?";
+}
+
+Check check_results(const std::vector<Vector>& vectors, const std::vector<Result>& results) {
+  Check c;
+  for (std::size_t i = 0; i < vectors.size(); ++i) {
+    const Vector& v = vectors[i];
+    const Result& r = results[i];
+    VectorVerdict x;
+    x.ratio[int(Quantity::FCos)] = rgb_ratio(v.tolerance, r.f_cos, v.f_cos);
+    if (r.pdf) x.ratio[int(Quantity::Pdf)] = v.pdf_tolerance.ratio(*r.pdf, v.pdf);
+    if (r.albedo && v.albedo) x.ratio[int(Quantity::Albedo)] = rgb_ratio(v.albedo_tolerance, *r.albedo, *v.albedo);
+    if (r.emission && v.emission)
+      x.ratio[int(Quantity::Emission)] = rgb_ratio(v.emission_tolerance, *r.emission, *v.emission);
+    if (r.delta) x.ratio[int(Quantity::Delta)] = delta_ratio(v.delta_tolerance, *r.delta, v.delta);
+    for (const auto& q : x.ratio)
+      if (q) x.worst_ratio = std::max(x.worst_ratio, *q);
+    x.passed = x.worst_ratio <= 1;
+    c.failed += x.passed ? 0 : 1;
+    c.verdicts.push_back(x);
+  }
+  return c;
+}
+
+OJson check_report(const std::vector<Vector>& vectors, const std::vector<Result>& results, const Check& check,
+                   const OJson& provenance, std::size_t worst) {
+  OJson rep;
+  rep["format"] = "dspbr-conformance-report";
+  rep["version"] = kFormatVersion;
+  rep["provenance"] = provenance;
+  rep["verdict"] = check.passed() ? "PASS" : "FAIL";
+  rep["summary"] = {{"vectors", vectors.size()}, {"passed", vectors.size() - check.failed}, {"failed", check.failed}};
+
+  // Per quantity: judged where both the vector has the expectation and the results supply it.
+  OJson quantities = OJson::object();
+  for (int q = 0; q < kQuantities; ++q) {
+    std::size_t judged = 0, passed = 0, not_judged = 0;
+    for (std::size_t i = 0; i < vectors.size(); ++i) {
+      const auto& r = check.verdicts[i].ratio[q];
+      if (r) ++judged, passed += *r <= 1 ? 1 : 0;
+      else {
+        const Vector& v = vectors[i];
+        const bool expected = q == int(Quantity::FCos) || q == int(Quantity::Pdf) ||
+                              (q == int(Quantity::Albedo) && v.albedo) || (q == int(Quantity::Emission) && v.emission) ||
+                              (q == int(Quantity::Delta) && !v.delta.empty());
+        not_judged += expected ? 1 : 0;
+      }
+    }
+    quantities[quantity_name(Quantity(q))] = counts_json(judged, passed, not_judged);
+  }
+  rep["quantities"] = quantities;
+
+  // Per group (in order of first appearance) and per active component (in bit order of first appearance).
+  auto tally = [&](const std::function<std::vector<std::string>(const Vector&)>& keys) {
+    std::vector<std::string> order;
+    std::map<std::string, OJson> acc;
+    for (std::size_t i = 0; i < vectors.size(); ++i) {
+      const VectorVerdict& x = check.verdicts[i];
+      for (const std::string& k : keys(vectors[i])) {
+        auto it = acc.find(k);
+        if (it == acc.end()) {
+          order.push_back(k);
+          it = acc.emplace(k, OJson{{"name", k}, {"verdict", "PASS"}, {"vectors", 0}, {"passed", 0}, {"failed", 0},
+                                    {"worst_ratio", 0.0}, {"worst_id", vectors[i].id}}).first;
+        }
+        OJson& g = it->second;
+        g["vectors"] = g["vectors"].get<int>() + 1;
+        g[x.passed ? "passed" : "failed"] = g[x.passed ? "passed" : "failed"].get<int>() + 1;
+        if (!x.passed) g["verdict"] = "FAIL";
+        if (x.worst_ratio > g["worst_ratio"].get<double>()) {
+          g["worst_ratio"] = std::min(x.worst_ratio, 1e300);
+          g["worst_id"] = vectors[i].id;
+        }
+      }
+    }
+    OJson out = OJson::array();
+    for (const std::string& k : order) out.push_back(acc[k]);
+    return out;
+  };
+  rep["groups"] = tally([](const Vector& v) { return std::vector<std::string>{v.group}; });
+  rep["components"] = tally([](const Vector& v) { return v.components; });
+
+  // The worst vectors, with what an implementer needs to reproduce them.
+  std::vector<std::size_t> order(vectors.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return check.verdicts[a].worst_ratio > check.verdicts[b].worst_ratio;
+  });
+  OJson worst_list = OJson::array();
+  for (std::size_t k = 0; k < std::min(worst, order.size()); ++k) {
+    const std::size_t i = order[k];
+    OJson w = vector_json(vectors[i]);
+    OJson got{{"f_cos", {results[i].f_cos.r, results[i].f_cos.g, results[i].f_cos.b}}};
+    if (results[i].pdf) got["pdf"] = *results[i].pdf;
+    if (results[i].albedo) got["albedo"] = {results[i].albedo->r, results[i].albedo->g, results[i].albedo->b};
+    if (results[i].emission) got["emission"] = {results[i].emission->r, results[i].emission->g, results[i].emission->b};
+    w["result"] = got;
+    w["verdict"] = check.verdicts[i].passed ? "PASS" : "FAIL";
+    w["worst_ratio"] = std::min(check.verdicts[i].worst_ratio, 1e300);
+    worst_list.push_back(w);
+  }
+  rep["worst"] = worst_list;
+
+  // Every vector: verdict and ratios (null: NOT JUDGED), and the relative error of f cos (the plots).
+  OJson all = OJson::array();
+  for (std::size_t i = 0; i < vectors.size(); ++i) {
+    const VectorVerdict& x = check.verdicts[i];
+    const Vector& v = vectors[i];
+    const Rgb& got = results[i].f_cos;
+    double rel = 0;
+    for (auto [g, e] : {std::pair{got.r, v.f_cos.r}, {got.g, v.f_cos.g}, {got.b, v.f_cos.b}})
+      rel = std::max(rel, std::abs(g - e) / std::max(std::abs(e), v.tolerance.abs));
+    OJson j{{"id", v.id}, {"group", v.group}, {"verdict", x.passed ? "PASS" : "FAIL"}, {"f_cos_error", std::min(rel, 1e300)}};
+    for (int q = 0; q < kQuantities; ++q) j[std::string(quantity_name(Quantity(q))) + "_ratio"] = ratio_json(x.ratio[q]);
+    all.push_back(j);
+  }
+  rep["vectors"] = all;
+  return rep;
+}
+
+}  // namespace dspbr::conformance

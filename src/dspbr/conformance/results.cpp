@@ -1,0 +1,200 @@
+#include "dspbr/conformance/results.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include "dspbr/conformance/vector_file.h"
+#include "dspbr/io/json_fields.h"
+#include "dspbr/io/message.h"
+#include "dspbr/io/read_file.h"
+#include "dspbr/limits.h"
+
+namespace dspbr::conformance {
+
+namespace {
+
+// Input quoted in a message: 'text' (io/message.h: non-printable bytes as \xNN, cut at 200 characters).
+std::string in_quotes(std::string_view s) { return "'" + quote_input(s) + "'"; }
+
+using Json = nlohmann::json;
+namespace jf = json_fields;
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) { throw std::runtime_error(path + ": " + what); }
+
+
+std::vector<Result> parse_json_results(std::string_view bytes, const std::string& path) {
+  const Json doc = parse_json(bytes, path, "conformance results file");
+  std::vector<Result> out;
+  try {
+    const Json& arr = jf::array_member(doc, "results", "");
+    for (std::size_t i = 0; i < arr.size(); ++i) {
+      const std::string where = jf::index_path("results", i);
+      Result r;
+      r.id = jf::string_member(arr[i], "id", where);
+      const std::string w = where + " (id " + in_quotes(r.id) + ")";
+      for (const auto& [key, value] : arr[i].items())
+        if (key != "id" && key != "f_cos" && key != "pdf" && key != "albedo" && key != "emission" && key != "delta")
+          throw std::runtime_error(w + ": unknown member " + in_quotes(key) +
+                                   " (known: id, f_cos, pdf, albedo, emission, delta)");
+      r.f_cos = read_rgb(arr[i], "f_cos", w);
+      if (arr[i].contains("pdf")) r.pdf = jf::number_member(arr[i], "pdf", w);
+      if (arr[i].contains("albedo")) r.albedo = read_rgb(arr[i], "albedo", w);
+      if (arr[i].contains("emission")) r.emission = read_rgb(arr[i], "emission", w);
+      if (arr[i].contains("delta")) {
+        const Json& d = jf::array_member(arr[i], "delta", w);
+        std::vector<DeltaExpectation> lobes;
+        for (std::size_t k = 0; k < d.size(); ++k) {
+          const std::string wk = jf::index_path(jf::member_path(w, "delta"), k);
+          const Rgb l = read_rgb(d[k], "l", wk);
+          lobes.push_back({Vec3{l.r, l.g, l.b}, read_rgb(d[k], "value", wk)});
+        }
+        r.delta = std::move(lobes);
+      }
+      out.push_back(std::move(r));
+    }
+  } catch (const std::runtime_error& e) {
+    fail(path, e.what());
+  }
+  return out;
+}
+
+// The fields of one CSV line (RFC 4180 quoting: a quoted field may hold commas and doubled quotes).
+std::vector<std::string> csv_fields(const std::string& line, const std::string& where) {
+  std::vector<std::string> out;
+  std::string cur;
+  std::size_t i = 0;
+  while (true) {
+    cur.clear();
+    if (i < line.size() && line[i] == '"') {
+      ++i;
+      while (true) {
+        if (i >= line.size()) throw std::runtime_error(where + ": unterminated quoted field");
+        if (line[i] == '"') {
+          if (i + 1 < line.size() && line[i + 1] == '"') cur += '"', i += 2;
+          else { ++i; break; }
+        } else {
+          cur += line[i++];
+        }
+      }
+      if (i < line.size() && line[i] != ',') throw std::runtime_error(where + ": text after a quoted field");
+    } else {
+      while (i < line.size() && line[i] != ',') cur += line[i++];
+    }
+    out.push_back(cur);
+    if (i >= line.size()) break;
+    ++i;  // the comma
+  }
+  return out;
+}
+
+double csv_number(const std::string& text, const std::string& column, const std::string& where) {
+  char* end = nullptr;
+  const double x = text.empty() ? 0 : std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(x))
+    throw std::runtime_error(where + ": " + column + " is not a finite number: " + in_quotes(text));
+  return x;
+}
+
+std::vector<Result> parse_csv_results(std::string_view bytes, const std::string& path) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start <= bytes.size()) {
+    std::size_t end = bytes.find('\n', start);
+    if (end == std::string_view::npos) end = bytes.size();
+    std::string line(bytes.substr(start, end - start));
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(std::move(line));
+    start = end + 1;
+  }
+  static const std::vector<std::string> kBase = {"id", "f_cos_r", "f_cos_g", "f_cos_b"};
+  const std::vector<std::string> header = csv_fields(lines.empty() ? "" : lines[0], "line 1");
+  bool has_pdf = false, has_albedo = false;
+  {
+    std::vector<std::string> expect = kBase;
+    std::size_t i = 4;
+    if (header.size() > i && header[i] == "pdf") has_pdf = true, expect.push_back("pdf"), ++i;
+    if (header.size() > i && header[i] == "albedo_r") {
+      has_albedo = true;
+      for (const char* c : {"albedo_r", "albedo_g", "albedo_b"}) expect.push_back(c);
+    }
+    if (header != expect)
+      fail(path, "line 1: the CSV header must be id,f_cos_r,f_cos_g,f_cos_b[,pdf][,albedo_r,albedo_g,albedo_b], got " +
+                     in_quotes(lines.empty() ? "" : lines[0]));
+  }
+  const std::size_t columns = 4 + (has_pdf ? 1 : 0) + (has_albedo ? 3 : 0);
+  std::vector<Result> out;
+  try {
+    for (std::size_t n = 1; n < lines.size(); ++n) {
+      if (lines[n].find_first_not_of(" \t") == std::string::npos) continue;  // blank lines (the final newline)
+      const std::string line_where = "line " + std::to_string(n + 1);
+      const std::vector<std::string> f = csv_fields(lines[n], line_where);
+      const std::string where = line_where + (f.empty() ? "" : " (id " + in_quotes(f[0]) + ")");
+      if (f.size() != columns)
+        throw std::runtime_error(where + ": " + std::to_string(f.size()) + " fields, the header has " +
+                                 std::to_string(columns));
+      Result r;
+      r.id = f[0];
+      std::size_t c = 1;
+      r.f_cos = {csv_number(f[c], "f_cos_r", where), csv_number(f[c + 1], "f_cos_g", where),
+                 csv_number(f[c + 2], "f_cos_b", where)};
+      c += 3;
+      if (has_pdf) r.pdf = csv_number(f[c++], "pdf", where);
+      if (has_albedo)
+        r.albedo = Rgb{csv_number(f[c], "albedo_r", where), csv_number(f[c + 1], "albedo_g", where),
+                       csv_number(f[c + 2], "albedo_b", where)};
+      out.push_back(std::move(r));
+    }
+  } catch (const std::runtime_error& e) {
+    fail(path, e.what());
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Result> parse_results(std::string_view bytes, const std::string& path) {
+  const std::size_t first = bytes.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) fail(path, "the results file is empty");
+  std::vector<Result> out = bytes[first] == '{' ? parse_json_results(bytes, path) : parse_csv_results(bytes, path);
+  if (out.empty()) fail(path, "no results");
+  return out;
+}
+
+std::vector<Result> read_results(const std::string& path) {
+  return parse_results(read_file(path, limits::kDocumentBytes), path);
+}
+
+std::vector<Result> match_results(const std::vector<Vector>& vectors, std::vector<Result> results,
+                                  const std::string& path, const std::string& vectors_path) {
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < vectors.size(); ++i) index[vectors[i].id] = i;
+  std::vector<std::optional<Result>> slot(vectors.size());
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const auto it = index.find(results[i].id);
+    if (it == index.end())
+      fail(path, "result " + std::to_string(i + 1) + ": id " + in_quotes(results[i].id) + " is not a vector of " +
+                     vectors_path);
+    if (slot[it->second]) fail(path, "result " + std::to_string(i + 1) + ": duplicate id " + in_quotes(results[i].id));
+    slot[it->second] = std::move(results[i]);
+  }
+  std::vector<Result> out;
+  std::size_t missing = 0;
+  std::string first_missing;
+  for (std::size_t i = 0; i < vectors.size(); ++i) {
+    if (!slot[i]) {
+      if (missing++ == 0) first_missing = vectors[i].id;
+      continue;
+    }
+    out.push_back(std::move(*slot[i]));
+  }
+  if (missing > 0)
+    fail(path, "no result for vector " + in_quotes(first_missing) +
+                   (missing > 1 ? " (and " + std::to_string(missing - 1) + " more)" : std::string()) +
+                   ": every vector of " + vectors_path + " needs a result");
+  return out;
+}
+
+}  // namespace dspbr::conformance

@@ -1,0 +1,95 @@
+# dspbr.conformance (python/dspbr/conformance.py) with `dspbr conformance generate` and `check`: the
+# reference through the Python module passes; results from the published tables fail where they read
+# them; a bad value raises ValueError naming the vector.
+import json
+import os
+import re
+import shlex
+import subprocess
+import sys
+
+import pytest
+
+import dspbr.conformance as dc
+from conftest import SOURCE_DIR, dspbr_exe, run_cli
+
+
+@pytest.fixture(scope="module")
+def vectors(tmp_path_factory):
+    out = tmp_path_factory.mktemp("conformance") / "v"
+    code, _, err = run_cli("conformance", "generate", "--directions", 2, "--no-albedo", "--out", out)
+    assert code == 0, err
+    return str(out / "vectors.json")
+
+
+def check(vectors, results, tmp_path):
+    path = tmp_path / "results.json"
+    dc.write_results(results, path)
+    code, out, err = run_cli("conformance", "check", vectors, path, "--no-html", "--out", tmp_path / "report")
+    report = json.loads((tmp_path / "report" / "report.json").read_text()) if code in (0, 1) else None
+    return code, report, out + err
+
+
+def test_reference_passes(vectors, tmp_path):
+    code, report, text = check(vectors, dc.run(vectors, dc.reference_eval), tmp_path)
+    assert code == 0, text
+    assert report["quantities"]["pdf"]["judged"] == report["summary"]["vectors"]
+
+
+def test_published_tables_fail_where_tables_are_read(vectors, tmp_path):
+    code, report, text = check(vectors, dc.run(vectors, lambda v: dc.reference_eval(v, tables="published")), tmp_path)
+    assert code == 1, text
+    groups = {g["name"]: g["verdict"] for g in report["groups"]}
+    assert groups["plain_metal"] == "FAIL"  # the multiple-scattering term reads GGX_E
+    # A vector without tables (the mirror metal: no multiple scattering, docs/bsdf.md) passes.
+    mirror = [v for v in report["vectors"] if v["id"].startswith("metallic/metal-mirror/")]
+    assert mirror and all(v["verdict"] == "PASS" for v in mirror)
+
+
+def test_bad_values_name_the_vector(vectors):
+    with pytest.raises(ValueError, match=r"vector 'plain_metal/gold-r10/00': f_cos must be 3 finite numbers"):
+        dc.run(vectors, lambda v: [0.0, float("nan"), 0.0])
+    with pytest.raises(ValueError, match="f_cos must be 3 finite numbers"):
+        dc.run(vectors, lambda v: [1, 2])
+
+
+def test_demo_summary_block(tmp_path):
+    # The machinery of scripts/conformance_demo.sh on a small set: the reference with each demo table
+    # set, its report, and the summary written between the markers of a copy of the doc.
+    demo = tmp_path / "demo"
+    code, _, err = run_cli("conformance", "generate", "--directions", 2, "--no-albedo", "--out", demo / "vectors")
+    assert code == 0, err
+    vectors = demo / "vectors" / "vectors.json"
+    expected = {"renderer": 0, "published": 1, "fits": None, "uncompensated": 1}
+    for impl, status in expected.items():
+        code, _, err = run_cli("conformance", "reference", vectors, "--tables", impl, "--out", demo / f"results-{impl}.json")
+        assert code == 0, err
+        code, out, err = run_cli("conformance", "check", vectors, demo / f"results-{impl}.json", "--no-html",
+                                 "--out", demo / f"report-{impl}")
+        assert code in (0, 1) and (status is None or code == status), (impl, out, err)
+    doc = tmp_path / "doc.md"
+    doc.write_text("before\n<!-- conformance-demo:begin -->\nold\n<!-- conformance-demo:end -->\nafter\n")
+    subprocess.run([sys.executable, os.path.join(SOURCE_DIR, "scripts", "report", "conformance_demo_summary.py"),
+                    str(demo), str(doc)], check=True)
+    text = doc.read_text()
+    assert text.startswith("before\n<!-- conformance-demo:begin -->\n**The reference with the published tables")
+    assert "\nold\n" not in text and text.endswith("<!-- conformance-demo:end -->\nafter\n")
+    # Without compensation the rough plain metal fails; every mirror passes (no tables there).
+    block = text.split("Without energy compensation")[1]
+    assert "| plain_metal |" in block and "| r = 0 | 0 / " in block
+
+
+def test_documented_commands_run(tmp_path):
+    # Every `build/...` line of docs/conformance.md's code blocks, in order, in a fresh folder with
+    # build/ and data/ linked (the vector sets with 2 directions per material, to stay cheap).
+    doc = open(os.path.join(SOURCE_DIR, "docs", "conformance.md"), encoding="utf-8").read()
+    commands = re.findall(r"^    (build/\S+ .*)$", doc, flags=re.M)
+    assert len(commands) >= 6
+    os.symlink(os.path.dirname(os.path.abspath(dspbr_exe())), tmp_path / "build")
+    os.symlink(os.path.join(SOURCE_DIR, "data"), tmp_path / "data")
+    for command in commands:
+        args = shlex.split(command)
+        if args[1:3] == ["conformance", "generate"] and "--directions" not in args:
+            args += ["--directions", "2"]
+        p = subprocess.run(args, cwd=tmp_path, capture_output=True, text=True)
+        assert p.returncode == 0, (command, p.stdout, p.stderr)

@@ -1,0 +1,289 @@
+// The conformance kit (src/dspbr/conformance/, `dspbr conformance`, docs/conformance.md): the vector
+// set is deterministic, the reference re-evaluated from the instances passes, a 5% change to one
+// group's values fails that group alone, delta lobes match the closed-form Fresnel, and malformed
+// results exit 2 with one line naming the file and the record.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "dspbr/conformance/checker.h"
+#include "dspbr/conformance/results.h"
+#include "dspbr/conformance/vector_file.h"
+#include "dspbr/conformance/vector_set.h"
+#include "dspbr/tables/lut_set.h"
+#include "test_files.h"
+#include "test_params_run.h"
+
+namespace fs = std::filesystem;
+using namespace dspbr;
+using namespace dspbr::conformance;
+
+namespace {
+
+// A small set (seconds): 3 directions per material, no scenes, few albedo samples.
+const std::vector<Vector>& small_set() {
+  static const std::vector<Vector> set = [] {
+    GenerateSettings s;
+    s.directions = 3;
+    return generate_vectors(s);
+  }();
+  return set;
+}
+
+// The reference's results computed another way: each vector's instance and options read back and
+// the reference BSDF built from them (not the stored expectations).
+std::vector<Result> reference_results(const std::vector<Vector>& vectors) {
+  std::vector<Result> out;
+  for (const Vector& v : vectors) {
+    const Evaluation e = evaluate(v, LutSet::builtin());
+    Result r;
+    r.id = v.id;
+    r.f_cos = e.f_cos;
+    r.pdf = e.pdf;
+    out.push_back(r);
+  }
+  return out;
+}
+
+std::map<std::string, std::string> group_verdicts(const nlohmann::ordered_json& report) {
+  std::map<std::string, std::string> out;
+  for (const auto& g : report["groups"]) out[g["name"].get<std::string>()] = g["verdict"].get<std::string>();
+  return out;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path p = fs::temp_directory_path() / ("dspbr_conformance_" + std::to_string(getpid())) / name;
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+}  // namespace
+
+TEST(Conformance, SameSeedSameVectorsWhateverTheThreadCount) {
+  GenerateSettings s;
+  s.directions = 2;
+  s.albedo = false;
+  std::string one, all;
+  {
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism, 1);
+    one = vectors_document(generate_vectors(s), {}).dump();
+  }
+  all = vectors_document(generate_vectors(s), {}).dump();
+  EXPECT_EQ(one, all);
+  s.seed = 2;
+  EXPECT_NE(vectors_document(generate_vectors(s), {}).dump(), all);  // the seed moves the directions
+}
+
+TEST(Conformance, CoversEveryComponentAndTheExtremes) {
+  std::set<std::string> groups, components;
+  bool grazing = false, inside = false, delta = false, emission = false, ash = false;
+  for (const Vector& v : small_set()) {
+    groups.insert(v.group);
+    components.insert(v.components.begin(), v.components.end());
+    grazing = grazing || std::abs(v.v.z) <= 1e-4 || std::abs(v.l.z) <= 1e-4;
+    inside = inside || v.v.z < 0;
+    delta = delta || !v.delta.empty();
+    emission = emission || v.emission.has_value();
+    ash = ash || (v.options.is_object() && v.options.value("sheen", "") == "ash");
+  }
+  for (const char* c : {"metallic", "opaque_dielectric", "thin_transparent", "volumetric_transparent", "translucency",
+                        "thin_film", "sheen", "flakes", "clearcoat", "emission"})
+    EXPECT_TRUE(components.count(c)) << c;
+  for (const char* g : {"plain_metal", "plain_plastic", "cut_out", "combined", "extremes"}) EXPECT_TRUE(groups.count(g)) << g;
+  EXPECT_TRUE(grazing && inside && delta && emission && ash);
+}
+
+TEST(Conformance, DocumentRoundTrips) {
+  const auto& vs = small_set();
+  const nlohmann::ordered_json doc = vectors_document(vs, {{"x", 1}});
+  const std::vector<Vector> back = vectors_from_json(nlohmann::json::parse(doc.dump()), "mem");
+  ASSERT_EQ(back.size(), vs.size());
+  // Compared as parsed documents (the reader does not keep the key order of a material's values).
+  EXPECT_TRUE(nlohmann::json::parse(vectors_document(back, {{"x", 1}}).dump()) == nlohmann::json::parse(doc.dump()));
+}
+
+TEST(Conformance, TheReferencePasses) {
+  const auto& vs = small_set();
+  const Check c = check_results(vs, reference_results(vs));
+  EXPECT_TRUE(c.passed()) << c.failed << " failures";
+  // And the stored expectations are the re-evaluated ones to the last bit.
+  const auto rs = reference_results(vs);
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    EXPECT_EQ(rs[i].f_cos.r, vs[i].f_cos.r) << vs[i].id;
+    EXPECT_EQ(*rs[i].pdf, vs[i].pdf) << vs[i].id;
+  }
+}
+
+TEST(Conformance, FivePercentOnOneGroupFailsThatGroupAlone) {
+  const auto& vs = small_set();
+  std::set<std::string> groups;
+  for (const Vector& v : vs) groups.insert(v.group);
+  for (const std::string& g : groups) {
+    std::vector<Result> rs = reference_results(vs);
+    for (std::size_t i = 0; i < vs.size(); ++i)
+      if (vs[i].group == g) rs[i].f_cos = rs[i].f_cos * 1.05;
+    const Check c = check_results(vs, rs);
+    const auto verdicts = group_verdicts(check_report(vs, rs, c, {}));
+    for (const auto& [name, verdict] : verdicts) EXPECT_EQ(verdict, name == g ? "FAIL" : "PASS") << g << " changed";
+  }
+}
+
+TEST(Conformance, DeltaLobesOfSmoothGlassAreFresnel) {
+  // Smooth volumetric glass, ior 1.5, normal incidence from outside: R = ((1.5 - 1) / 2.5)^2 = 0.04
+  // along +z and T = 1 - R along -z (the BTDF keeps the flux, docs/bsdf.md).
+  for (const Vector& v : small_set()) {
+    if (v.id != "volumetric_transparent/glass-smooth/00") continue;
+    ASSERT_EQ(v.v.z, 1.0);
+    ASSERT_EQ(v.delta.size(), 2u);
+    for (const DeltaExpectation& d : v.delta) {
+      const double expect = d.l.z > 0 ? 0.04 : 0.96;
+      EXPECT_NEAR(d.value.r, expect, 1e-12);
+      EXPECT_NEAR(d.value.b, expect, 1e-12);
+    }
+    return;
+  }
+  FAIL() << "no smooth glass vector";
+}
+
+TEST(Conformance, DeltaLobesAndEmissionAreJudgedWhenSupplied) {
+  const auto& vs = small_set();
+  std::vector<Result> rs = reference_results(vs);
+  std::size_t with_delta = 0, with_emission = 0;
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    rs[i].delta = vs[i].delta;
+    rs[i].emission = vs[i].emission;
+    with_delta += vs[i].delta.empty() ? 0 : 1;
+    with_emission += vs[i].emission ? 1 : 0;
+  }
+  ASSERT_GT(with_delta, 0u);
+  ASSERT_GT(with_emission, 0u);
+  EXPECT_TRUE(check_results(vs, rs).passed());
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    if (vs[i].delta.size() < 2) continue;
+    // The lobes in the other order still match by direction; one lobe 5% off, or left out, fails.
+    std::vector<Result> swapped = rs;
+    std::reverse(swapped[i].delta->begin(), swapped[i].delta->end());
+    EXPECT_TRUE(check_results(vs, swapped).passed()) << vs[i].id;
+    std::vector<Result> off = rs;
+    (*off[i].delta)[0].value = (*off[i].delta)[0].value * 1.05;
+    const Check c = check_results(vs, off);
+    EXPECT_EQ(c.failed, 1u) << vs[i].id;
+    EXPECT_GT(*c.verdicts[i].ratio[int(Quantity::Delta)], 1) << vs[i].id;
+    std::vector<Result> missing = rs;
+    missing[i].delta->pop_back();
+    EXPECT_FALSE(check_results(vs, missing).passed()) << vs[i].id;
+    break;
+  }
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    if (!vs[i].emission) continue;
+    std::vector<Result> off = rs;
+    off[i].emission = *vs[i].emission * 1.05;
+    EXPECT_GT(*check_results(vs, off).verdicts[i].ratio[int(Quantity::Emission)], 1) << vs[i].id;
+    break;
+  }
+}
+
+TEST(Conformance, ResultsCsvWithPdfAndAlbedo) {
+  const auto rs = parse_results("id,f_cos_r,f_cos_g,f_cos_b,pdf,albedo_r,albedo_g,albedo_b\r\na,1,2,3,4,0.5,0.6,0.7\n\"b,c\",1e-3,0,0,1,1,1,1\n",
+                                "r.csv");
+  ASSERT_EQ(rs.size(), 2u);
+  EXPECT_EQ(rs[0].f_cos.g, 2);
+  EXPECT_EQ(*rs[0].pdf, 4);
+  EXPECT_EQ(rs[0].albedo->b, 0.7);
+  EXPECT_EQ(rs[1].id, "b,c");
+  EXPECT_THROW(parse_results("id,f_cos_r,f_cos_g\na,1,2\n", "r.csv"), std::runtime_error);
+}
+
+TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
+  const fs::path dir = scratch("cli");
+  const ToolRun gen = run_dspbr("conformance generate --directions 2 --no-albedo --out '" + (dir / "v").string() + "'");
+  ASSERT_EQ(gen.status, 0) << gen.output;
+  const std::string vectors = (dir / "v" / "vectors.json").string();
+  const std::vector<Vector> vs = read_vectors(vectors);
+  const std::string vcsv = read_all(dir / "v" / "vectors.csv");
+  EXPECT_EQ(std::count(vcsv.begin(), vcsv.end(), '\n'), std::ptrdiff_t(vs.size() + 1));  // header + one line each
+
+  // The reference's values (CSV with pdf) pass: exit 0.
+  std::string csv = "id,f_cos_r,f_cos_g,f_cos_b,pdf\n";
+  const auto rs = reference_results(vs);
+  for (const Result& r : rs) {
+    char line[512];
+    std::snprintf(line, sizeof line, "%s,%.17g,%.17g,%.17g,%.17g\n", r.id.c_str(), r.f_cos.r, r.f_cos.g, r.f_cos.b, *r.pdf);
+    csv += line;
+  }
+  write(dir / "ok.csv", csv);
+  const ToolRun ok = run_dspbr("conformance check '" + vectors + "' '" + (dir / "ok.csv").string() + "' --no-html --out '" +
+                               (dir / "rep").string() + "'");
+  EXPECT_EQ(ok.status, 0) << ok.output;
+  EXPECT_NE(ok.output.find("NOT JUDGED: delta"), std::string::npos) << ok.output;
+
+  // 5% off on the clearcoat vectors: exit 1, the report says clearcoat alone fails.
+  std::string bad = "id,f_cos_r,f_cos_g,f_cos_b\n";
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    const double k = vs[i].group == "clearcoat" ? 1.05 : 1.0;
+    char line[512];
+    std::snprintf(line, sizeof line, "%s,%.17g,%.17g,%.17g\n", rs[i].id.c_str(), k * rs[i].f_cos.r, k * rs[i].f_cos.g,
+                  k * rs[i].f_cos.b);
+    bad += line;
+  }
+  write(dir / "bad.csv", bad);
+  const ToolRun fail = run_dspbr("conformance check '" + vectors + "' '" + (dir / "bad.csv").string() +
+                                 "' --no-html --out '" + (dir / "rep2").string() + "'");
+  EXPECT_EQ(fail.status, 1) << fail.output;
+  const auto report = nlohmann::ordered_json::parse(read_all(dir / "rep2" / "report.json"));
+  for (const auto& [name, verdict] : group_verdicts(report)) EXPECT_EQ(verdict, name == "clearcoat" ? "FAIL" : "PASS");
+
+  // A vector file of another version: exit 2 naming it.
+  std::string doc = read_all(vectors);
+  doc.replace(doc.find("\"version\": 1"), 12, "\"version\": 7");
+  write(dir / "v7.json", doc);
+  const ToolRun v7 = run_dspbr("conformance check '" + (dir / "v7.json").string() + "' '" + (dir / "ok.csv").string() +
+                               "' --no-html --out '" + (dir / "never").string() + "'");
+  EXPECT_EQ(v7.status, 2) << v7.output;
+  EXPECT_NE(v7.output.find("v7.json: version 7 is not supported"), std::string::npos) << v7.output;
+
+  // `reference` with a vector whose material is out of range: exit 2 naming the file and the vector.
+  write(dir / "badv.json",
+        R"({"format": "dspbr-conformance", "version": 1, "provenance": {}, "vectors": [{"id": "a", "group": "g",
+        "components": [], "material": {"material": "generic", "values": {"roughness": 7}}, "v": [0, 0, 1],
+        "l": [0, 0, 1], "f_cos": [0, 0, 0], "tolerance": {"abs": 0, "rel": 0}, "pdf": 0,
+        "pdf_tolerance": {"abs": 0, "rel": 0}}]})");
+  const ToolRun bad_ref = run_dspbr("conformance reference '" + (dir / "badv.json").string() + "' --out '" +
+                                    (dir / "never.json").string() + "'");
+  EXPECT_EQ(bad_ref.status, 2) << bad_ref.output;
+  EXPECT_NE(bad_ref.output.find("badv.json: vector 'a': parameter 'roughness'"), std::string::npos) << bad_ref.output;
+  EXPECT_FALSE(fs::exists(dir / "never.json"));
+
+  // Malformed: exit 2, one line naming the file and the record; no report folder.
+  const std::string first = vs[0].id, second = vs[1].id;
+  struct Case {
+    std::string text, needle;
+  };
+  const std::vector<Case> cases = {
+      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,nan,0\n", "line 2 (id '" + first + "'): f_cos_g is not a finite number"},
+      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,0\n", "line 2 (id '" + first + "'): 3 fields"},
+      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,0,0\n", "no result for vector '" + second + "'"},
+      {"{\"results\": [{\"id\": \"" + first + "\", \"f_cos\": [1, 2]}]}", "results[0] (id '" + first + "')"},
+      {"{\"results\": [{\"id\": \"nope\", \"f_cos\": [1, 2, 3]}]}", "id 'nope' is not a vector of"},
+      {"{\"results\": [{\"id\": \"" + first + "\", \"f_cos\": [1, 2, 3]}, ", "malformed JSON"},
+      {"id;f\n", "line 1: the CSV header must be"},
+  };
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const fs::path f = dir / ("malformed" + std::to_string(k) + ".txt");
+    write(f, cases[k].text);
+    const ToolRun r = run_dspbr("conformance check '" + vectors + "' '" + f.string() + "' --no-html --out '" +
+                                (dir / "never").string() + "'");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_EQ(r.output.rfind("dspbr: error: " + f.string() + ": ", 0), 0u) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find(cases[k].needle), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "never")) << k;
+  }
+  fs::remove_all(dir.parent_path());
+}
