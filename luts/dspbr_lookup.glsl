@@ -11,7 +11,9 @@
 // With DSPBR_LOOKUP_TEXTURES defined, the tables are read from single-channel float
 // textures (R32F; width = fastest axis, height = slowest axis or 1; a three-axis table's
 // planes stacked: row = plane * rows + row), fetched with texelFetch / Load at integer texel
-// coordinates (no filtering, no sampler state needed):
+// coordinates (no filtering). GLSL: `uniform sampler2D` at binding N of descriptor set 0, in
+// Vulkan a combined image sampler (VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER; any sampler:
+// texelFetch ignores its state), in OpenGL the texture unit N; HLSL: Texture2D<float> at tN:
 //   dspbr_GGX_E_tex  binding 0  64 x 32
 //   dspbr_GGX_beta_tex  binding 1  32 x 32
 //   dspbr_GGX_E_avg_tex  binding 2  32 x 1

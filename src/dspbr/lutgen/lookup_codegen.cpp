@@ -398,7 +398,9 @@ std::string file_text(const RendererLuts& L, LookupDialect dialect, const std::s
     o << "// With DSPBR_LOOKUP_TEXTURES defined, the tables are read from single-channel float\n"
       << "// textures (R32F; width = fastest axis, height = slowest axis or 1; a three-axis table's\n"
       << "// planes stacked: row = plane * rows + row), fetched with texelFetch / Load at integer texel\n"
-      << "// coordinates (no filtering, no sampler state needed):\n";
+      << "// coordinates (no filtering). GLSL: `uniform sampler2D` at binding N of descriptor set 0, in\n"
+      << "// Vulkan a combined image sampler (VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER; any sampler:\n"
+      << "// texelFetch ignores its state), in OpenGL the texture unit N; HLSL: Texture2D<float> at tN:\n";
     for (const char* n : f.tables) {
       const WarpedTable& t = *L.table(n);
       o << "//   " << ident(t) << "_tex  binding " << binding++ << "  " << t.axes.back().size << " x "
