@@ -340,6 +340,16 @@ class Runner {
     throw VkError("no suitable memory type");
   }
 
+  // Memory of `want` properties for `req`.
+  VkDeviceMemory allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags want) {
+    VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    mai.allocationSize = req.size;
+    mai.memoryTypeIndex = memory_type(req.memoryTypeBits, want);
+    VkDeviceMemory memory;
+    check(vkAllocateMemory(device_, &mai, nullptr, &memory), "vkAllocateMemory");
+    return memory;
+  }
+
   // A host-visible, coherent, mapped buffer.
   Buffer& make_buffer(size_t bytes, VkBufferUsageFlags usage) {
     VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
@@ -350,11 +360,7 @@ class Runner {
     check(vkCreateBuffer(device_, &bci, nullptr, &b.buffer), "vkCreateBuffer");
     VkMemoryRequirements req;
     vkGetBufferMemoryRequirements(device_, b.buffer, &req);
-    VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    mai.allocationSize = req.size;
-    mai.memoryTypeIndex =
-        memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-    check(vkAllocateMemory(device_, &mai, nullptr, &b.memory), "vkAllocateMemory");
+    b.memory = allocate(req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     check(vkBindBufferMemory(device_, b.buffer, b.memory, 0), "vkBindBufferMemory");
     check(vkMapMemory(device_, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory");
     buffers_.push_back(b);
@@ -408,10 +414,7 @@ class Runner {
       check(vkCreateImage(device_, &ici, nullptr, &img.image), "vkCreateImage");
       VkMemoryRequirements req;
       vkGetImageMemoryRequirements(device_, img.image, &req);
-      VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-      mai.allocationSize = req.size;
-      mai.memoryTypeIndex = memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-      check(vkAllocateMemory(device_, &mai, nullptr, &img.memory), "vkAllocateMemory");
+      img.memory = allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
       check(vkBindImageMemory(device_, img.image, img.memory, 0), "vkBindImageMemory");
       VkCommandBuffer cmd = begin();
       VkImageMemoryBarrier to_dst{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
