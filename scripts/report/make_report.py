@@ -474,17 +474,25 @@ def run_figure_job(name, out):
             "convergence": convergence_plot, "integrators": integrator_study_plot}[name](rep, figs)
 
 
+
+def read_report(report_dir, prog):
+    """REPORT/data/report.json as written by `dspbr validate`, or None after a one-line message on
+    stderr naming the file and what is wrong (prog: the script's name)."""
+    path = os.path.join(report_dir, "data", "report.json")
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        print(f"{prog}: cannot read {path}: {e}", file=sys.stderr)
+        return None
+
 def main():
     if len(sys.argv) != 2:
         print(__doc__, file=sys.stderr)
         return 2
     out = sys.argv[1]
-    path = os.path.join(out, "data", "report.json")
-    try:
-        with open(path) as f:
-            rep = json.load(f)
-    except (OSError, ValueError) as e:
-        print(f"make_report.py: cannot read {path}: {e}", file=sys.stderr)
+    rep = read_report(out, "make_report.py")
+    if rep is None:
         return 1
     # The figure groups are independent: drawn by two processes (most costly first).
     jobs = ["furnace", "spheres", "luts", "chi2", "reciprocity", "convergence", "integrators"]

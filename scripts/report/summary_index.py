@@ -9,13 +9,12 @@ Run on the full report by scripts/main.sh:
 usage: summary_index.py REPORT_DIR DEST
 """
 import glob
-import json
 import os
 import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_report import energy_statement  # noqa: E402  (the report's own section, same rows)
+from make_report import energy_statement, read_report  # noqa: E402  (the report's own section, same rows)
 
 # Pictures of images/ that the index shows (the rest stays in the report).
 IMAGES = ("furnace_metallic.png", "furnace_sheen_over_white_base.png")
@@ -96,12 +95,8 @@ def main():
         print(__doc__, file=sys.stderr)
         return 2
     report_dir, dest = sys.argv[1], sys.argv[2]
-    path = os.path.join(report_dir, "data", "report.json")
-    try:
-        with open(path) as f:
-            rep = json.load(f)
-    except (OSError, ValueError) as e:
-        print(f"summary_index.py: cannot read {path}: {e}", file=sys.stderr)
+    rep = read_report(report_dir, "summary_index.py")
+    if rep is None:
         return 2
     figs = figures(report_dir)
     os.makedirs(dest, exist_ok=True)
