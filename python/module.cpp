@@ -575,11 +575,9 @@ py::dict lut_load(const py::object& path_obj) {
   }
   if (set.layout == LutLayout::Renderer) return renderer_arrays(set.renderer);
   py::dict d;
-  {
-    for (const Table* t : {&set.ggx_e, &set.ggx_e_avg, &set.base_e, &set.base_e_avg, &set.sheen_e, &set.sheen_ash_e,
-                           &set.glass_e, &set.glass_inv_e, &set.glass_e_avg, &set.glass_inv_e_avg})
-      if (!t->values.empty()) d[py::str(t->name)] = array_of(t->values, t->axes);
-  }
+  for (const Table* t : {&set.ggx_e, &set.ggx_e_avg, &set.base_e, &set.base_e_avg, &set.sheen_e, &set.sheen_ash_e,
+                         &set.glass_e, &set.glass_inv_e, &set.glass_e_avg, &set.glass_inv_e_avg})
+    if (!t->values.empty()) d[py::str(t->name)] = array_of(t->values, t->axes);
   return d;
 }
 

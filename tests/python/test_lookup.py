@@ -9,16 +9,13 @@ import pytest
 
 import dspbr
 
-SMALL = dict(threads=0)
-
-
 def grid(name, size):
     axes = dspbr.lut.axes(name, size=size)
     return [x for _, x in axes]
 
 
 def exact(name, size):
-    return dspbr.lut.generate([name], {name: size}, **SMALL)[name]
+    return dspbr.lut.generate([name], {name: size})[name]
 
 
 @pytest.mark.parametrize("name, fn, tol", [("GGX_E", "ggx_E", 1.2e-3), ("Sheen_E", "sheen_E", 1.2e-3),
