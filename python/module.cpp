@@ -32,6 +32,7 @@
 #include "dspbr/scene/components.h"
 #include "dspbr/scene/scene_analysis.h"
 #include "dspbr/version.h"
+#include "lut_table.h"
 
 namespace py = pybind11;
 using Json = nlohmann::json;
@@ -493,7 +494,7 @@ py::array_t<double> array_of(const std::vector<double>& values, const std::vecto
   return out;
 }
 
-// The stored values of a renderer-layout set, {name: array} (as lut.load reads its file).
+// The stored values of a renderer-layout set, {name: array} (lut.load's Table.stored).
 py::dict renderer_arrays(const RendererLuts& luts) {
   py::dict d;
   for (const char* name : luts.held_names()) {
@@ -573,11 +574,16 @@ py::dict lut_load(const py::object& path_obj) {
   } catch (const std::exception& e) {
     fail(e.what());
   }
-  if (set.layout == LutLayout::Renderer) return renderer_arrays(set.renderer);
   py::dict d;
-  for (const Table* t : {&set.ggx_e, &set.ggx_e_avg, &set.base_e, &set.base_e_avg, &set.sheen_e, &set.sheen_ash_e,
-                         &set.glass_e, &set.glass_inv_e, &set.glass_e_avg, &set.glass_inv_e_avg})
-    if (!t->values.empty()) d[py::str(t->name)] = array_of(t->values, t->axes);
+  if (set.layout == LutLayout::Renderer) {
+    for (const char* name : set.renderer.held_names()) d[py::str(name)] = loaded_table(*set.renderer.table(name));
+    return d;
+  }
+  for (const LutInfo& info : lut_registry()) {
+    if ((info.layouts & kPublishedLayout) == 0) continue;
+    const Table& t = set.published_table(info.id);
+    if (!t.values.empty()) d[py::str(t.name)] = loaded_table(t);
+  }
   return d;
 }
 
@@ -680,6 +686,7 @@ from the surface, normalized here; a (3,) argument broadcasts against an (N, 3) 
       .def("__repr__", &PyBsdf::repr, "__repr__(self) -> str");
 
   auto lut = m.def_submodule("lut", "Energy-compensation tables (docs/luts.md)");
+  bind_lut_table(lut);
   lut.def("names", &lut_table_names, "names() -> list[str]\n\nTable names in canonical order.");
   lut.def("generate", &lut_generate, py::arg("tables") = py::none(), py::arg("size") = py::none(), py::kw_only(),
           py::arg("integrator") = "", py::arg("samples") = 0, py::arg("target_error") = kLutIntegratorDefault,
@@ -695,16 +702,17 @@ qmc/mc 0: fixed budget); randomizations; seed; threads (0: all
 cores); grid "cell" | "endpoint". Returns {name: array of the table's shape}, or with errors=True
 {name: {"values": array, "errors": per-cell standard errors}}.
 layout="renderer": the renderer layout as `dspbr lut --layout renderer` makes it (fixed warped grids;
-its glass tables when tables holds Glass_E): {name: stored values}, as lut.load returns its file
+its glass tables when tables holds Glass_E): {name: stored values}, each lut.load(file)[name].stored
 (encodings and warps: docs/luts.md, "Renderer layout"); size, grid and errors do not apply.
 )doc");
   lut.def("axes", &lut_axes_of, py::arg("name"), py::arg("size") = py::none(), py::arg("grid") = "cell",
           "axes(name: str, size: typing.Any = None, grid: str = 'cell') -> list[tuple[str, numpy.typing.NDArray[numpy.float64]]]\n\n"
           "The axes of a table, slowest first: list of (axis name, sample coordinates).");
   lut.def("load", &lut_load, py::arg("path"),
-          "load(path: typing.Union[str, os.PathLike[str]]) -> dict[str, numpy.typing.NDArray[numpy.float64]]\n\n"
-          "Reads dspbr_luts.json (published layout: {name: values}) or dspbr_renderer_luts.json (renderer layout: "
-          "{name: stored values}, encoded as the file says).");
+          "load(path: typing.Union[str, os.PathLike[str]]) -> dict[str, Table]\n\n"
+          "Reads a table file of either layout (dspbr_luts.json, dspbr_renderer_luts.json; checked as --luts "
+          "checks it): {name: Table}, each with the decoded values, the stored ones, errors, and its axes with "
+          "their warps, grid and the coordinates of every sample.");
 
   bind_lookup(m);
 

@@ -3,7 +3,7 @@
     dspbr.Bsdf(material, components=None, sheen="main", tables="renderer")
         .eval(v, l) -> (N, 3), .pdf(v, l) -> (N,), .sample(v, u) -> {"l", "weight", "pdf", "flags", "valid"}
     dspbr.lut.generate(tables=None, size=None, **settings) -> {name: array}
-    dspbr.lut.load(path) -> {name: array}
+    dspbr.lut.load(path) -> {name: Table}: decoded .values, .stored, .errors, .axes (name, warp, grid, coordinates)
     dspbr.scene.analyze(path) -> dict (as `dspbr scene analyze --json`)
     dspbr.lookup.ggx_E(cos_theta, roughness), ... -> float32 arrays: the functions of the generated
         luts/dspbr_lookup.h and dspbr_glass_lookup.h, vectorised (what a renderer including them computes)

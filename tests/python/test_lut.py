@@ -39,7 +39,8 @@ def test_generate_agrees_with_cli(tmp_path, integrator, grid):
     loaded = dspbr.lut.load(path)
     assert set(loaded) == set(tables)
     for name in tables:
-        np.testing.assert_array_equal(loaded[name], got[name])
+        np.testing.assert_array_equal(loaded[name].values, got[name])
+        assert [(a.name, a.warp) for a in loaded[name].axes] == [(n, grid) for n, _ in dspbr.lut.axes(name, sizes[name], grid)]
 
 
 def test_generate_default_sizes_and_errors_and_threads():
@@ -58,18 +59,75 @@ def test_load_committed_tables():
     pub = dspbr.lut.load(os.path.join(SOURCE_DIR, "luts", "dspbr_luts.json"))
     assert list(pub) == dspbr.lut.names()
     doc = json.load(open(os.path.join(SOURCE_DIR, "luts", "dspbr_luts.json")))
-    for name, arr in pub.items():
+    for name, t in pub.items():
         axes = doc["tables"][name]["axes"]
-        assert arr.shape == tuple(a["size"] for a in axes)
-        np.testing.assert_array_equal(arr.ravel(), doc["tables"][name]["values"])
+        assert t.name == name and t.layout == "published" and t.encoding == "value"
+        assert t.values.shape == tuple(a["size"] for a in axes)
+        np.testing.assert_array_equal(t.values.ravel(), doc["tables"][name]["values"])
+        np.testing.assert_array_equal(t.stored, t.values)
+        assert t.errors is not None and t.errors.shape == t.values.shape
+        # the axes as lut.axes gives them for this size and grid, broadcast over the table
+        for k, (a, (axis_name, x)) in enumerate(zip(t.axes, dspbr.lut.axes(name, t.values.shape, t.axes[0].warp))):
+            assert a.name == axis_name and a.size == len(x)
+            np.testing.assert_allclose(a.grid, x, rtol=1e-15)
+            np.testing.assert_allclose(np.moveaxis(a.coordinates, k, -1).reshape(-1, a.size)[0], x, rtol=1e-15)
     ren = dspbr.lut.load(os.path.join(SOURCE_DIR, "luts", "dspbr_renderer_luts.json"))
     doc = json.load(open(os.path.join(SOURCE_DIR, "luts", "dspbr_renderer_luts.json")))
     assert set(ren) == set(doc["tables"])
     # the DSPBR 2025x tables, then the optional rough-glass ones (beyond the spec), counted apart
-    assert sum(a.size for a in ren.values()) == doc["stored_values"] + doc.get("glass_stored_values", 0)
-    for name, arr in ren.items():
-        assert arr.shape == tuple(a["size"] for a in doc["tables"][name]["axes"])
-        np.testing.assert_array_equal(arr.ravel(), doc["tables"][name]["values"])
+    assert sum(t.stored.size for t in ren.values()) == doc["stored_values"] + doc.get("glass_stored_values", 0)
+    for name, t in ren.items():
+        assert t.layout == "renderer"
+        assert t.stored.shape == t.values.shape == tuple(a["size"] for a in doc["tables"][name]["axes"])
+        np.testing.assert_array_equal(t.stored.ravel(), doc["tables"][name]["values"])
+        for a in t.axes:
+            np.testing.assert_allclose(a.grid, np.linspace(0, 1, a.size), rtol=1e-15)
+
+
+def test_load_decodes_the_renderer_layout_as_the_c_header_looks_it_up():
+    # At a sample's coordinates the generated C lookup (dspbr.lookup: float warps, Catmull-Rom
+    # weights (0, 1, 0, 0) there, its own decoding) returns that sample, so decoded values and
+    # coordinates are checked by code written apart from lut.load's. Tolerance: float rounding of
+    # the header's warps and sums (measured worst 2.8e-6, Glass_E; Sheen_ash_E 9.5e-7 at values to 6.1). The r = 0 rows
+    # hold the limit r -> 0 at fixed cos / alpha, which no lookup at r = 0 reads: checked apart;
+    # the glass samples nearer ior 1 than a float argument resolves (ior < 1.001) are left out.
+    ren = dspbr.lut.load(os.path.join(SOURCE_DIR, "luts", "dspbr_renderer_luts.json"))
+    L = dspbr.lookup
+    ior = lambda x: (2 + x) / (2 - x)  # the average tables' axis ior_x = 2 (ior - 1) / (ior + 1)
+    lookups = {
+        "GGX_E": lambda r, mu: L.ggx_E(mu, r),
+        "GGX_E_avg": lambda r: L.ggx_E_avg(r),
+        "Sheen_E": lambda a, mu: L.sheen_E(mu, a),
+        "Sheen_ash_E": lambda a, mu: L.sheen_ash_E(mu, a),
+        "Glass_E": lambda i, r, mu: L.glass_E(mu, r, i, 0),
+        "Glass_inv_E": lambda i, r, mu: L.glass_E(mu, r, i, 1),
+        "Glass_E_avg": lambda x, r: L.glass_E_avg(r, ior(x), 0),
+        "Glass_inv_E_avg": lambda x, r: L.glass_E_avg(r, ior(x), 1),
+        # B_avg and beta through the header's Base_E compositions at f0 = 0 (spec "Energy Preservation"):
+        # E_avg = B_avg + F_ms (1 - E_m,avg), E = beta E_m + F_ms (1 - E_m), F_ms = F_ms(0, 1; E_m,avg)
+        "GGX_B_avg": lambda r: L.base_E_avg(r, 0) - L.fresnel_ms(0, 1, L.ggx_E_avg(r)) * L.ggx_E_avg_missing(r),
+        "GGX_beta": lambda r, mu: (L.base_E(mu, r, 0) - L.fresnel_ms(0, 1, L.ggx_E_avg(r)) * (1 - L.ggx_E(mu, r)))
+        / L.ggx_E(mu, r),
+    }
+    assert set(lookups) == set(ren)
+    for name, t in ren.items():
+        got = lookups[name](*[a.coordinates.astype(np.float32) for a in t.axes])
+        axes = {a.name: a for a in t.axes}
+        rows = axes["roughness"].coordinates > 0 if "cos_theta" in axes and "roughness" in axes else ...
+        if "ior" in axes:  # a float ior within ~1e-7 of 1 does not reach the samples near ior 1 at grazing
+            rows = rows & (axes["ior"].coordinates >= 1.001)
+        tol = 5e-6 * max(1.0, np.abs(t.values).max()) if name != "GGX_beta" else 2e-5
+        np.testing.assert_allclose(got[rows], t.values[rows], rtol=0, atol=tol, err_msg=name)
+    assert ren["GGX_E_avg"].encoding == "log_one_minus" and ren["GGX_beta"].encoding == "beta_minus_mirror"
+    np.testing.assert_allclose(ren["GGX_E_avg"].values, 1 - np.exp(ren["GGX_E_avg"].stored), rtol=1e-15)
+    # r = 0: cos_theta is the limit, 0 below the last sample; beta there is the mirror's, 1 at cos 0
+    mu0 = ren["GGX_beta"].axes[1].coordinates[0]
+    assert np.all(mu0[:-1] == 0) and mu0[-1] == 1
+    np.testing.assert_array_equal(ren["GGX_beta"].values[0, :-1], 1.0)
+    # glass_ior depends on cos_theta: at one ior sample the ior changes along cos_theta
+    ior_axis = ren["Glass_E"].axes[0].coordinates
+    assert ior_axis[5, 8].min() < ior_axis[5, 8].max()
+    np.testing.assert_allclose(ior_axis[[0, -1]].reshape(2, -1), np.broadcast_to([[1], [3]], (2, ior_axis[0].size)), rtol=1e-14)
 
 
 @pytest.mark.parametrize("kwargs,cli_args", [
@@ -113,7 +171,7 @@ def test_generate_renderer_layout_equals_the_committed_file():
     committed = dspbr.lut.load(os.path.join(SOURCE_DIR, "luts", "dspbr_renderer_luts.json"))
     assert set(made) == {"GGX_E", "GGX_beta", "GGX_E_avg", "GGX_B_avg", "Sheen_E", "Sheen_ash_E"}
     for name, values in made.items():
-        assert np.array_equal(values, committed[name]), name
+        assert np.array_equal(values, committed[name].stored), name
     with pytest.raises(ValueError, match="layout: "):
         dspbr.lut.generate(["GGX_E"], layout="gpu")
     with pytest.raises(ValueError, match="size: the renderer layout's grids are fixed"):

@@ -44,16 +44,20 @@ bsdf = dspbr.Bsdf({"roughness": 0.3}, tables="published")
 f: npt.NDArray[np.float64] = bsdf.eval([0.0, 0.0, 1.0], np.array([[0.3, 0.0, 1.0]]))
 names: list[str] = dspbr.lut.names() + bsdf.components
 version: str = dspbr.__version__
+table: dspbr.lut.Table = dspbr.lut.load("luts/dspbr_renderer_luts.json")["GGX_E"]
+cos: npt.NDArray[np.float64] = table.axes[1].coordinates
 ''')
     assert good.returncode == 0, good.stdout + good.stderr
     bad = run_mypy(tmp_path, '''
 import dspbr
 bsdf = dspbr.Bsdf(sheen=2)
 n: int = dspbr.lut.names()
+warp: int = dspbr.lut.load("x.json")["GGX_E"].axes[0].warp
 ''')
     assert bad.returncode == 1, bad.stdout
     assert 'Argument "sheen" to "Bsdf" has incompatible type "int"; expected "str"' in bad.stdout
     assert 'Incompatible types in assignment (expression has type "List[str]", variable has type "int")' in bad.stdout
+    assert 'Incompatible types in assignment (expression has type "str", variable has type "int")' in bad.stdout
 
 
 def test_module_version_entry_point():

@@ -190,4 +190,38 @@ double RendererLuts::E_glass_avg(double roughness, double ior, bool inside) cons
   return t.lookup_grid(t.axes[0].warp.to_grid(glass_x_of_ior(ior)), t.axes[1].warp.to_grid(roughness));
 }
 
+std::array<double, 3> renderer_sample_coordinates(const WarpedTable& t, size_t index) {
+  const size_t rank = t.axes.size();
+  if (rank == 0 || rank > 3 || index >= t.size())
+    throw std::invalid_argument("renderer_sample_coordinates: no sample " + std::to_string(index) + " in " + t.name);
+  std::array<double, 3> x{}, v{};
+  for (size_t k = rank, rest = index; k-- > 0; rest /= size_t(t.axes[k].size))
+    x[k] = double(rest % size_t(t.axes[k].size)) / double(t.axes[k].size - 1);
+  // The aux coordinates of the dependent warps (warped_table.h): alpha = r^2 for ggx_cos, mu for
+  // glass_ior; so first the independent axes, then ggx_cos, then glass_ior.
+  auto coordinate_of = [&](const char* axis_name) {
+    for (size_t k = 0; k < rank; ++k)
+      if (t.axes[k].name == axis_name) return v[k];
+    throw std::invalid_argument("renderer_sample_coordinates: " + t.name + " has no " + axis_name + " axis");
+  };
+  for (const WarpKind pass : {WarpKind::Power, WarpKind::GgxCos, WarpKind::GlassIor}) {
+    for (size_t k = 0; k < rank; ++k) {
+      const Warp& w = t.axes[k].warp;
+      const bool independent = w.kind == WarpKind::Power || w.kind == WarpKind::LogRoughness;
+      if (independent ? pass != WarpKind::Power : w.kind != pass) continue;
+      double aux = 0;
+      if (w.kind == WarpKind::GgxCos) aux = coordinate_of("roughness") * coordinate_of("roughness");
+      if (w.kind == WarpKind::GlassIor) aux = coordinate_of("cos_theta");
+      v[k] = w.from_grid(x[k], aux);
+    }
+  }
+  return v;
+}
+
+double renderer_sample_value(const WarpedTable& t, size_t index) {
+  const double stored = t.values.at(index);
+  if (is_lut(t.name, Lut::GgxBeta)) return RendererLuts::decode_beta(renderer_sample_coordinates(t, index)[1], stored);
+  return decode(t.encoding, stored);
+}
+
 }  // namespace dspbr

@@ -34,6 +34,7 @@
 // as for GGX_E.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -101,6 +102,16 @@ inline double RendererLuts::E_m(double cos_theta, double roughness) const {
   const double x1 = ggx_E.axes[1].warp.to_grid(cos_theta, r * r);
   return decode(ggx_E.encoding, ggx_E.interpolate_2d(x0, x1));
 }
+
+// The physical coordinates (one per axis, slowest first; unused ones 0) of sample `index` of a
+// renderer-layout table: each axis' warp inverted at its grid coordinate i / (N - 1), the ggx_cos
+// axis at alpha = r^2 of the sample's roughness and the glass_ior axis at the sample's cos_theta,
+// as a lookup maps them. On an r = 0 row (the limit r -> 0 at fixed mu / alpha) the cos_theta
+// coordinates are that limit: 0 below the last sample, 1 at it.
+std::array<double, 3> renderer_sample_coordinates(const WarpedTable& t, size_t index);
+// The decoded quantity of sample `index`, as a lookup at its coordinates decodes it: the
+// table's encoding, and for GGX_beta the mirror's (1 - mu)^5 added back.
+double renderer_sample_value(const WarpedTable& t, size_t index);
 
 // The default axes (sizes and warps) of a renderer table, `scale` times the default sample count
 // per axis (scale 1: the default renderer set, 5184 values; the reference BSDF's set uses 2).
