@@ -1,3 +1,5 @@
+# The Vulkan programs, on the Vulkan plumbing of examples/vulkan/vk_compute.h (one compute shader,
+# its buffers and the lookup tables as textures; library dspbr_vk_compute):
 # The generated GLSL lookups and fits on a real Vulkan driver (tests/vulkan/vulkan_lookup.cpp):
 # tests/shaders/vulkan_lookup.comp compiled to SPIR-V by glslangValidator in texture mode (the
 # tables uploaded from the committed luts/renderer/*.exr as R32F images, bound as the headers
@@ -11,11 +13,16 @@
 find_package(Vulkan QUIET)
 find_program(DSPBR_GLSLANG_VK glslangValidator)
 if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
+  set(_vk_dir ${PROJECT_SOURCE_DIR}/examples/vulkan)
+  add_library(dspbr_vk_compute STATIC ${_vk_dir}/vk_compute.cpp ${_vk_dir}/lookup_textures.cpp)
+  target_include_directories(dspbr_vk_compute PUBLIC ${_vk_dir})
+  target_link_libraries(dspbr_vk_compute PUBLIC Vulkan::Vulkan PRIVATE PkgConfig::OIIO)
+  # `VkXxxInfo x{VK_STRUCTURE_TYPE_...}`: the other members zero, as Vulkan code writes it.
+  target_compile_options(dspbr_vk_compute PRIVATE -Wall -Wextra -Wno-missing-field-initializers)
   add_executable(vulkan_lookup ${CMAKE_CURRENT_LIST_DIR}/vulkan/vulkan_lookup.cpp)
   target_include_directories(vulkan_lookup PRIVATE ${PROJECT_SOURCE_DIR}/luts ${PROJECT_SOURCE_DIR}/fits)
-  target_link_libraries(vulkan_lookup PRIVATE Vulkan::Vulkan PkgConfig::OIIO)
-  # `VkXxxInfo x{VK_STRUCTURE_TYPE_...}`: the other members zero, as Vulkan code writes it.
-  target_compile_options(vulkan_lookup PRIVATE -Wall -Wextra -Wno-missing-field-initializers)
+  target_link_libraries(vulkan_lookup PRIVATE dspbr_vk_compute)
+  target_compile_options(vulkan_lookup PRIVATE -Wall -Wextra)
   set(_spv_files "")
   foreach(mode textures)
     set(_def "-DDSPBR_LOOKUP_TEXTURES")
