@@ -1,9 +1,9 @@
 // Running one compute shader on the first Vulkan device (Mesa's lavapipe on a machine without a
-// GPU), as the Vulkan programs of the project use it (tests/vulkan/vulkan_lookup.cpp, CTest
-// vulkan_lookup_textures): set 0 holds an input storage buffer at binding 0, an output storage
-// buffer at binding 1 and the lookup tables as combined image samplers from a given binding on
-// (docs/luts.md, "Using the tables in your renderer"); a push-constant block; one dispatch; the
-// output read back.
+// GPU), as the Vulkan programs of the project use it (examples/vulkan/sphere.cpp, CTest
+// vulkan_sphere_example; tests/vulkan/vulkan_lookup.cpp, CTest vulkan_lookup_textures): set 0
+// holds an input storage buffer at binding 0, an output storage buffer at binding 1 and the
+// lookup tables as combined image samplers from a given binding on (docs/luts.md, "Using the
+// tables in your renderer"); a push-constant block; one dispatch; the output read back.
 #pragma once
 #include <vulkan/vulkan.h>
 
