@@ -4,6 +4,7 @@
 // BSDF plus (1 - m) times the opaque dielectric BSDF, isotropic, specular tint rho_s = 1:
 //   f = M_r F(rho_s,r,0, rho_s,r,90) + M_r,ms F_ms(rho_s,r,0, rho_s,r,90) + rho_d [B_u (1 - s) + s B_c(F_0)]
 // Used by examples/vulkan/sphere.comp; the reference is the C++ BSDF (dspbr::MaterialBsdf).
+// Rough surfaces only (r > 0): at r = 0 M_r is a Dirac, which a renderer samples, not evaluates.
 #ifndef DSPBR_CORE_GLSL
 #define DSPBR_CORE_GLSL
 
