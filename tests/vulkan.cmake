@@ -1,4 +1,6 @@
-# The generated GLSL lookups and fits on a real Vulkan driver (tests/vulkan/vulkan_lookup.cpp):
+# The Vulkan programs, on the Vulkan plumbing of examples/vulkan/vk_compute.h (one compute shader,
+# its buffers and the lookup tables as textures; library dspbr_vk_compute):
+# 1. The generated GLSL lookups and fits on a real Vulkan driver (tests/vulkan/vulkan_lookup.cpp):
 # tests/shaders/vulkan_lookup.comp compiled to SPIR-V by glslangValidator in texture mode (the
 # tables uploaded from the committed luts/renderer/*.exr as R32F images, bound as the headers
 # say), run on the first Vulkan device (Mesa's lavapipe here: Debian mesa-vulkan-drivers,
@@ -8,14 +10,22 @@
 # The constant-array mode is not run here: lavapipe's pipeline creation for a shader holding one
 # 2048-float table took over 100 s (measured 2026-12-04 on this project's 2-core machine; the whole
 # set: over 300 s), so it stays the compile check lookup_glsl_arrays (tests/lookup_code.cmake).
+# 2. The renderer-side example (examples/vulkan/sphere.cpp, CTest vulkan_sphere_example): spheres
+# shaded by examples/vulkan/sphere.comp with the core BRDF and the energy compensation read from
+# the tables, written to build/vulkan_sphere.exr and compared with the C++ reference BSDF.
 find_package(Vulkan QUIET)
 find_program(DSPBR_GLSLANG_VK glslangValidator)
 if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
+  set(_vk_dir ${PROJECT_SOURCE_DIR}/examples/vulkan)
+  add_library(dspbr_vk_compute STATIC ${_vk_dir}/vk_compute.cpp ${_vk_dir}/lookup_textures.cpp)
+  target_include_directories(dspbr_vk_compute PUBLIC ${_vk_dir})
+  target_link_libraries(dspbr_vk_compute PUBLIC Vulkan::Vulkan PRIVATE PkgConfig::OIIO)
+  # `VkXxxInfo x{VK_STRUCTURE_TYPE_...}`: the other members zero, as Vulkan code writes it.
+  target_compile_options(dspbr_vk_compute PRIVATE -Wall -Wextra -Wno-missing-field-initializers)
   add_executable(vulkan_lookup ${CMAKE_CURRENT_LIST_DIR}/vulkan/vulkan_lookup.cpp)
   target_include_directories(vulkan_lookup PRIVATE ${PROJECT_SOURCE_DIR}/luts ${PROJECT_SOURCE_DIR}/fits)
-  target_link_libraries(vulkan_lookup PRIVATE Vulkan::Vulkan PkgConfig::OIIO)
-  # `VkXxxInfo x{VK_STRUCTURE_TYPE_...}`: the other members zero, as Vulkan code writes it.
-  target_compile_options(vulkan_lookup PRIVATE -Wall -Wextra -Wno-missing-field-initializers)
+  target_link_libraries(vulkan_lookup PRIVATE dspbr_vk_compute)
+  target_compile_options(vulkan_lookup PRIVATE -Wall -Wextra)
   set(_spv_files "")
   foreach(mode textures)
     set(_def "-DDSPBR_LOOKUP_TEXTURES")
@@ -34,8 +44,25 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
            COMMAND vulkan_lookup ${PROJECT_BINARY_DIR}/vulkan_lookup_textures.spv textures ${PROJECT_SOURCE_DIR}/luts)
   set_tests_properties(vulkan_lookup_textures PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300
                        ENVIRONMENT "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}")
+
+  set(_spv ${PROJECT_BINARY_DIR}/vulkan_sphere.spv)
+  add_custom_command(OUTPUT ${_spv}
+    COMMAND ${DSPBR_GLSLANG_VK} -V -I${PROJECT_SOURCE_DIR}/luts -o ${_spv} ${_vk_dir}/sphere.comp
+    DEPENDS ${_vk_dir}/sphere.comp ${_vk_dir}/dspbr_core.glsl ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl
+    COMMENT "glslangValidator: sphere.comp" VERBATIM)
+  add_custom_target(vulkan_sphere_shader ALL DEPENDS ${_spv})
+  add_executable(example_vulkan_sphere ${_vk_dir}/sphere.cpp ${_vk_dir}/sphere_scene.cpp)
+  add_dependencies(example_vulkan_sphere vulkan_sphere_shader)
+  target_link_libraries(example_vulkan_sphere PRIVATE dspbr_vk_compute dspbr_core PkgConfig::OIIO)
+  target_compile_options(example_vulkan_sphere PRIVATE -Wall -Wextra)
+  add_test(NAME vulkan_sphere_example
+           COMMAND example_vulkan_sphere ${_spv} ${PROJECT_SOURCE_DIR}/luts ${PROJECT_BINARY_DIR}/vulkan_sphere.exr)
+  set_tests_properties(vulkan_sphere_example PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
+                       ENVIRONMENT "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}")
 else()
   message(STATUS "Vulkan tests disabled: need libvulkan-dev and glslangValidator (Debian packages)")
-  add_test(NAME vulkan_lookup_textures COMMAND ${CMAKE_COMMAND} -E echo "Vulkan or glslangValidator not found")
-  set_tests_properties(vulkan_lookup_textures PROPERTIES DISABLED TRUE)
+  foreach(_name vulkan_lookup_textures vulkan_sphere_example)
+    add_test(NAME ${_name} COMMAND ${CMAKE_COMMAND} -E echo "Vulkan or glslangValidator not found")
+    set_tests_properties(${_name} PROPERTIES DISABLED TRUE)
+  endforeach()
 endif()

@@ -1,0 +1,84 @@
+// Running one compute shader on the first Vulkan device (Mesa's lavapipe on a machine without a
+// GPU), as the Vulkan programs of the project use it (examples/vulkan/sphere.cpp, CTest
+// vulkan_sphere_example; tests/vulkan/vulkan_lookup.cpp, CTest vulkan_lookup_textures): set 0
+// holds an input storage buffer at binding 0, an output storage buffer at binding 1 and the
+// lookup tables as combined image samplers from a given binding on (docs/luts.md, "Using the
+// tables in your renderer"); a push-constant block; one dispatch; the output read back.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <deque>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "lookup_textures.h"
+
+namespace vk_compute {
+
+// A Vulkan call that failed (its name and VkResult in the message).
+struct VkError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The words of a SPIR-V file (glslangValidator -V); std::invalid_argument when unreadable.
+std::vector<uint32_t> read_spirv(const std::string& path);
+
+// One dispatch: what the shader reads and writes.
+struct Job {
+  const std::vector<uint32_t>* spirv = nullptr;
+  const void* input = nullptr;  // binding 0, std430 storage buffer (read)
+  size_t input_bytes = 0;
+  size_t output_floats = 0;     // binding 1, std430 storage buffer of floats (NaN until written)
+  const std::vector<TableImage>* textures = nullptr;  // R32F combined image samplers
+  uint32_t texture_binding = 0;                       // the first table's binding
+  const void* push = nullptr;   // push constants (compute stage, offset 0)
+  uint32_t push_bytes = 0;
+  uint32_t groups[3] = {1, 1, 1};  // vkCmdDispatch's workgroup counts
+};
+
+class Device {
+ public:
+  // The first physical device with a compute queue; none: has_device() is false (no exception).
+  explicit Device(const char* application);
+  ~Device();
+  Device(const Device&) = delete;
+  Device& operator=(const Device&) = delete;
+  bool has_device() const { return device_ != VK_NULL_HANDLE; }
+  const std::string& device_name() const { return device_name_; }
+
+  // Runs the job and returns the output buffer; VkError when a Vulkan call fails.
+  std::vector<float> run(const Job& job);
+
+ private:
+  struct Buffer {
+    VkBuffer buffer;
+    VkDeviceMemory memory;
+    void* mapped;
+  };
+  struct Image {
+    VkImage image;
+    VkDeviceMemory memory;
+    VkImageView view;
+  };
+  uint32_t memory_type(uint32_t bits, VkMemoryPropertyFlags want) const;
+  VkDeviceMemory allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags want);
+  Buffer& make_buffer(size_t bytes, VkBufferUsageFlags usage);
+  VkCommandBuffer begin();
+  void submit(VkCommandBuffer cmd);
+  void upload_textures(const std::vector<TableImage>& textures);
+
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  uint32_t family_ = 0;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  VkCommandPool pool_ = VK_NULL_HANDLE;
+  VkSampler sampler_ = VK_NULL_HANDLE;
+  std::string device_name_;
+  std::deque<Buffer> buffers_;  // a deque: the references make_buffer returns stay valid
+  std::vector<Image> images_;
+};
+
+}  // namespace vk_compute
