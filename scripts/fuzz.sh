@@ -6,7 +6,7 @@
 #   bash scripts/fuzz.sh --build-only     configure and build only (the main build's dspbr_fuzz target)
 #   bash scripts/fuzz.sh --no-build SECONDS   run only (CTest fuzz_short)
 # Work folder: ${FUZZ_DIR:-${BUILD_DIR:-build}/fuzz} (build, corpora, artifacts, logs).
-# FUZZ_TARGETS="gltf uri" runs only those targets (default: all six).
+# FUZZ_TARGETS="gltf uri" runs only those targets (default: all seven).
 # Exit status: 0 when no target crashed, hung (10 s per input), leaked past 2 GB or got a
 # sanitizer report; else 1, with the reproducer in <work folder>/artifacts/.
 set -euo pipefail
@@ -19,7 +19,7 @@ case "${1:-}" in
   "") ;;
   *) seconds="$1" ;;
 esac
-read -r -a targets <<<"${FUZZ_TARGETS:-params instance gltf luts uri output}"
+read -r -a targets <<<"${FUZZ_TARGETS:-params instance gltf luts uri output conformance}"
 
 if ((build)); then
   cxx="${FUZZ_CXX:-$(command -v clang++ || true)}"
@@ -32,7 +32,7 @@ fi
 # Seed corpora (rebuilt each run from the sources; what the fuzzer adds goes to corpus/<target>).
 seeds="$work/seeds"
 rm -rf "$seeds"
-mkdir -p "$seeds"/{params,instance,gltf,luts,uri,output}
+mkdir -p "$seeds"/{params,instance,gltf,luts,uri,output,conformance}
 cp "$here/data/dspbr/params-2025x.json" "$seeds/params/"
 for f in "$here"/tests/data/params/*.json; do
   if grep -q '"materials"' "$f"; then cp "$f" "$seeds/params/"; else cp "$f" "$seeds/instance/"; fi
@@ -68,6 +68,14 @@ printf '1a.json\nrenderer/b.exr\nc.png\n' >"$seeds/output/0"
 printf '1x.json\ny/z.json\n' >"$seeds/output/1"
 printf '0a.json\nfile/q.json\n' >"$seeds/output/2"
 printf '1file\n' >"$seeds/output/3"
+
+# Conformance readers (first byte even: a vector document, odd: a results file): the committed
+# small vector set, and results for it in JSON and CSV.
+{ printf '0'; cat "$here/tests/data/conformance/vectors-small.json"; } >"$seeds/conformance/vectors"
+printf '1{"results": [{"id": "plain_metal/gold-r10/00", "f_cos": [1, 2, 3], "pdf": 1, "delta": [{"l": [0, 0, 1], "value": [1, 1, 1]}]}]}' \
+  >"$seeds/conformance/results-json"
+printf '1id,f_cos_r,f_cos_g,f_cos_b,pdf\nplain_metal/gold-r10/00,1,2,3,4\nmetallic/metal-mirror/00,0,0,0,0\n' \
+  >"$seeds/conformance/results-csv"
 
 mkdir -p "$work/artifacts" "$work/logs"
 # The short run (--no-build, CTest) starts from the seeds alone each time, so that it stays a few

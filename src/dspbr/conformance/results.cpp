@@ -16,9 +16,6 @@ namespace dspbr::conformance {
 
 namespace {
 
-// Input quoted in a message: 'text' (io/message.h: non-printable bytes as \xNN, cut at 200 characters).
-std::string in_quotes(std::string_view s) { return "'" + quote_input(s) + "'"; }
-
 using Json = nlohmann::json;
 namespace jf = json_fields;
 

@@ -9,6 +9,8 @@ namespace dspbr {
 // kQuoteChars characters followed by "...".
 inline constexpr std::size_t kQuoteChars = 200;
 std::string quote_input(std::string_view s);
+// quote_input between single quotes: 'text'.
+inline std::string in_quotes(std::string_view s) { return "'" + quote_input(s) + "'"; }
 
 // A whole message: control characters (newline, ESC, ...) written \xNN; everything else as is
 // (UTF-8 file names stay readable).
