@@ -2,8 +2,11 @@
 // (Piessens et al. 1983, "QUADPACK", sec. 2.2): the 15-point Kronrod rule with its embedded
 // 7-point Gauss rule per panel (nodes and weights from Boost.Math), the panel with the largest
 // error estimate bisected until the estimates add up to at most the tolerance. The estimate of a
-// panel is QUADPACK's (QK15, below; max over the components) plus the errors the integrand
-// states for its own values (a nested quadrature), weighted as the 15-point rule weights them.
+// panel is |K15 - G7| (QK15, below; max over the components). The errors the integrand states
+// for its own values (a nested quadrature), weighted as the 15-point rule weights them, are added
+// to the stated error but steer nothing: bisecting a panel does not shrink them, so the caller
+// bounds them by the nested tolerance (their sum is at most the nested tolerance times the
+// integral of the weight) and gives this level only its own share.
 // Deterministic: the same panels in the same order for the same integrand.
 #pragma once
 #include <array>
@@ -24,21 +27,27 @@ struct QuadResult {
   long evaluations = 0;
 };
 
-// The 15 nodes on [-1, 1] with their Kronrod and (0 off the Gauss nodes) Gauss weights.
-struct GaussKronrod15 {
-  std::array<double, 15> x, wk, wg;
-  static const GaussKronrod15& get();
+// The N = 2n + 1 nodes on [-1, 1] of the N-point Kronrod rule with their Kronrod and (0 off the
+// Gauss nodes) n-point Gauss weights; N = 15 (QK15, the default) or 31 (QK31, for integrands
+// that cost a nested quadrature each: its higher degree needs fewer of them on smooth pieces).
+template <int N>
+struct GaussKronrod {
+  std::array<double, N> x, wk, wg;
+  static const GaussKronrod& get();
 };
+extern template struct GaussKronrod<15>;
+extern template struct GaussKronrod<31>;
 
 // f(x, values, error): the K integrand values at x and the absolute error of those values (0
 // for exact point values). One panel [a, b].
-template <int K, class F>
-QuadValues<K> gauss_kronrod_panel(F& f, double a, double b, double& error) {
-  const GaussKronrod15& r = GaussKronrod15::get();
+// `error` is the rule's own estimate, `nested` the integrand's stated errors integrated.
+template <int K, int N = 15, class F>
+QuadValues<K> gauss_kronrod_panel(F& f, double a, double b, double& error, double& nested) {
+  const GaussKronrod<N>& r = GaussKronrod<N>::get();
   const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
   QuadValues<K> kr{}, ga{};
   double inner = 0;
-  for (int i = 0; i < 15; ++i) {
+  for (int i = 0; i < N; ++i) {
     QuadValues<K> v{};
     double e = 0;
     f(mid + half * r.x[size_t(i)], v, e);
@@ -53,25 +62,27 @@ QuadValues<K> gauss_kronrod_panel(F& f, double a, double b, double& error) {
     kr[size_t(k)] *= half;
     worst = std::max(worst, std::abs(kr[size_t(k)] - half * ga[size_t(k)]));
   }
-  error = worst + std::abs(half) * inner;
+  error = worst;
+  nested = std::abs(half) * inner;
   return kr;
 }
 
 // Integral of f over [breaks.front(), breaks.back()], one first panel between consecutive
-// breaks (where the integrand has kinks), bisecting the worst panel while the total error
-// estimate exceeds `tolerance` and fewer than `max_panels` panels exist.
-template <int K, class F>
+// breaks (where the integrand has kinks), bisecting the panel of the largest own estimate while
+// their sum exceeds `tolerance` and fewer than `max_panels` panels exist. The error returned is
+// that sum plus the integrand's stated errors integrated.
+template <int K, int N = 15, class F>
 QuadResult<K> integrate_adaptive(F&& f, const std::vector<double>& breaks, double tolerance, int max_panels) {
   struct Panel {
-    double a, b, error;
+    double a, b, error, nested;
     QuadValues<K> value;
   };
   std::vector<Panel> panels;
   QuadResult<K> out;
   auto make = [&](double a, double b) {
-    Panel p{a, b, 0, {}};
-    p.value = gauss_kronrod_panel<K>(f, a, b, p.error);
-    out.evaluations += 15;
+    Panel p{a, b, 0, 0, {}};
+    p.value = gauss_kronrod_panel<K, N>(f, a, b, p.error, p.nested);
+    out.evaluations += N;
     return p;
   };
   for (size_t i = 0; i + 1 < breaks.size(); ++i)
@@ -93,7 +104,7 @@ QuadResult<K> integrate_adaptive(F&& f, const std::vector<double>& breaks, doubl
   // Sum in panel order (left to right): the same bits for the same panels.
   for (const Panel& p : panels) {
     for (int k = 0; k < K; ++k) out.value[size_t(k)] += p.value[size_t(k)];
-    out.error += p.error;
+    out.error += p.error + p.nested;
   }
   out.panels = int(panels.size());
   return out;

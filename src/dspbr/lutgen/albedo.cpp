@@ -419,9 +419,12 @@ Estimate glass_E_avg(double r, double ior, bool inside, const IntegratorSettings
   const GgxDistribution ggx(alpha, alpha);
   if (s.integrator == Integrator::Quad) {
     if (alpha == 0) return {1.0, 0.0};
-    // Split at the critical cosine sqrt(1 - 1/eta^2) from inside (the total-internal-reflection edge).
+    // From inside, E_g(mu) has two kinks where the total-internal-reflection threshold
+    // v.h = sqrt(1 - 1/eta^2) meets the range of v.h over the normals: at h = n (the critical
+    // cosine mu = sqrt(1 - 1/eta^2)) and at the normals of the horizon, where v.h reaches
+    // sin theta_v (mu = 1/eta). Split at both.
     std::vector<double> cuts;
-    if (inside && eta > 1 + kIndexMatched) cuts.push_back(std::sqrt(1.0 - 1.0 / (eta * eta)));
+    if (inside && eta > 1 + kIndexMatched) cuts = {std::sqrt(1.0 - 1.0 / (eta * eta)), 1.0 / eta};
     const QuadResult<1> q = cosine_average_quadrature<1>(
         [&](double mu, double tol) { return dielectric_albedo_quadrature(clamp_cos(mu), alpha, f0, eta_i, eta_o, tol); },
         cuts, quad_tolerance(s));

@@ -106,14 +106,29 @@ struct GlassIntegrand {
     }
   }
   void breaks(std::vector<double>&) const {}
-  void value(const Vec3& v, const Vec3& h, double vh, double cz, QuadValues<K>& out) const {
+  // Height-correlated G2(v, l) = 1 / (1 + Lambda(v) + Lambda(l)) of a unit l from its cosine z
+  // alone (isotropic GGX, Heitz 2014: 1 + Lambda(l) = (|z| + sqrt(z^2 + alpha^2 (1 - z^2))) / (2 |z|)),
+  // so G2 = 2 |z| / (|z| (1 + 2 Lambda(v)) + sqrt(z^2 + alpha^2 (1 - z^2))): one square root and one
+  // division, no cancellation. G2 needs nothing else of l_r and l_t.
+  double g2_of_cos(double z) const {
+    const double a = std::abs(z), z2 = z * z;
+    return 2.0 * a / (a * (1.0 + 2.0 * lambda_v) + std::sqrt(z2 + alpha * alpha * std::max(0.0, 1.0 - z2)));
+  }
+  // Only the z components of l_r and l_t enter (their horizons and G2), in closed form:
+  // reflect(v, h).z = 2 (v.h) h.z - mu; the refraction (Walter et al. 2007, eq. 40, as refract_dir)
+  // l_t = -eta v + (eta v.h - cos_t) h, cos_t = sqrt(1 - eta^2 (1 - v.h^2)), none under total
+  // internal reflection. At eta = 1: l_t = -v, the limit eta -> 1+.
+  void value(const Vec3&, const Vec3&, double vh, double cz, QuadValues<K>& out) const {
     if (vh <= 0) return;
     const double F = fresnel_schlick_d(vh, f0, 1.0, eta_i, eta_o);
     double w = 0;
-    const Vec3 lr = reflect(v, h);
-    if (lr.z > 0) w += F / (1.0 + lambda_v + ggx.Lambda(lr));
-    Vec3 lt;  // at eta = 1: l_t = -v, the limit eta -> 1+
-    if (F < 1 && refract_dir(v, h, eta, lt) && lt.z < 0) w += (1.0 - F) / (1.0 + lambda_v + ggx.Lambda(lt));
+    const double lr_z = 2.0 * vh * cz - mu;
+    if (lr_z > 0) w += F * g2_of_cos(lr_z);
+    const double sin2_t = eta * eta * std::max(0.0, 1.0 - vh * vh);
+    if (F < 1 && sin2_t < 1.0) {
+      const double lt_z = -eta * mu + (eta * vh - std::sqrt(1.0 - sin2_t)) * cz;
+      if (lt_z < 0) w += (1.0 - F) * g2_of_cos(lt_z);
+    }
     out[0] += w * vh / (mu * cz);
   }
 };
