@@ -126,6 +126,34 @@ TEST(GlassAlbedo, QmcAndQuadAgreeWithinTheQmcError) {
     }
 }
 
+TEST(GlassAlbedo, GrazingLowRoughnessCellsWithinTheTrueErrorBound) {
+  // Cells where the quadrature's embedded estimate misses its error (found by comparing 5632
+  // cells of the renderer grid with a 1e-10 run; that run agrees with QMC at 2^25 samples within
+  // its 1e-7 standard error at each of these, measured 2026-12-04). At the default target the
+  // table cell must be within 1e-6 of it (asked at the target itself, the first cell was 1.1e-6
+  // off); the stated error bounds the truth at the first two, not at the last two (3.1e-7 and
+  // 1.2e-7 true, a tenth of that stated: docs/luts.md, "Glass tables").
+  struct Cell {
+    double mu, r, ior;
+    bool inside, stated_bounds;
+  };
+  const Cell cells[] = {{2.991e-4, 1.0 / 15, 1.91674, false, true},
+                        {2.5640712208942706e-4, 1.0 / 15, 1.6803559458335713, false, true},
+                        {0.003631, 1.0 / 15, 1.00005, false, false},
+                        {0.3294, 11.0 / 15, 1.03003, true, false}};
+  IntegratorSettings table = quad_settings(), tight = quad_settings();
+  table.target_error = kQuadDefaultTolerance;  // the tables' default
+  tight.target_error = 1e-9;  // run at 1e-10 (the glass safety factor); tighter runs hit the panel cap
+  for (const Cell& c : cells) {
+    const Estimate e = glass_E(c.mu, c.r, c.ior, c.inside, table);
+    const Estimate ref = glass_E(c.mu, c.r, c.ior, c.inside, tight);
+    const double err = std::abs(e.value - ref.value);
+    EXPECT_LE(err, 1e-6) << "mu " << c.mu << " r " << c.r << " ior " << c.ior << " inside " << c.inside;
+    EXPECT_LE(e.error, kQuadDefaultTolerance);
+    if (c.stated_bounds) EXPECT_LE(err, e.error + ref.error) << "mu " << c.mu << " ior " << c.ior;
+  }
+}
+
 TEST(GlassAlbedo, LimitsInClosedForm) {
   // Smooth interface: reflection F_d + transmission (1 - F_d) = 1 on both sides (also under total
   // internal reflection, where F_d = 1).

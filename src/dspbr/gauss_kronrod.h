@@ -2,11 +2,15 @@
 // (Piessens et al. 1983, "QUADPACK", sec. 2.2): the 15-point Kronrod rule with its embedded
 // 7-point Gauss rule per panel (nodes and weights from Boost.Math), the panel with the largest
 // error estimate bisected until the estimates add up to at most the tolerance. The estimate of a
-// panel is |K15 - G7| (QK15, below; max over the components). The errors the integrand states
-// for its own values (a nested quadrature), weighted as the 15-point rule weights them, are added
-// to the stated error but steer nothing: bisecting a panel does not shrink them, so the caller
-// bounds them by the nested tolerance (their sum is at most the nested tolerance times the
-// integral of the weight) and gives this level only its own share.
+// panel is |K15 - G7| (QK15, below; max over the components) plus, where the nested errors
+// steer (the default), the errors the integrand states for its own values (a nested quadrature),
+// weighted as the 15-point rule weights them. Without steering they are added to the stated
+// error only: bisecting a panel does not shrink them, so a caller that bounds them itself (the
+// cosine averages: their sum is at most the nested tolerance times the integral of the weight)
+// gives this level only its own share. The directional glass quadrature keeps the steering: its
+// extra bisections where the polar integrals state large errors are what keeps its true error
+// within 1e-6 at grazing, low-roughness cells (without it, 1.1e-6 at 14x the stated error, e.g.
+// ior 1.92, r 0.067, mu 3e-4; measured 2026-12-04 against a 1e-11 run of the same quadrature).
 // Deterministic: the same panels in the same order for the same integrand.
 #pragma once
 #include <array>
@@ -68,11 +72,13 @@ QuadValues<K> gauss_kronrod_panel(F& f, double a, double b, double& error, doubl
 }
 
 // Integral of f over [breaks.front(), breaks.back()], one first panel between consecutive
-// breaks (where the integrand has kinks), bisecting the panel of the largest own estimate while
-// their sum exceeds `tolerance` and fewer than `max_panels` panels exist. The error returned is
-// that sum plus the integrand's stated errors integrated.
+// breaks (where the integrand has kinks), bisecting the panel of the largest estimate (its own,
+// plus the integrand's stated errors when nested_steers) while their sum exceeds `tolerance` and
+// fewer than `max_panels` panels exist. The error returned is the own estimates' sum plus the
+// integrand's stated errors integrated.
 template <int K, int N = 15, class F>
-QuadResult<K> integrate_adaptive(F&& f, const std::vector<double>& breaks, double tolerance, int max_panels) {
+QuadResult<K> integrate_adaptive(F&& f, const std::vector<double>& breaks, double tolerance, int max_panels,
+                                 bool nested_steers = true) {
   struct Panel {
     double a, b, error, nested;
     QuadValues<K> value;
@@ -90,9 +96,10 @@ QuadResult<K> integrate_adaptive(F&& f, const std::vector<double>& breaks, doubl
   while (true) {
     double total = 0;
     size_t worst = 0;
+    auto steering = [&](const Panel& p) { return nested_steers ? p.error + p.nested : p.error; };
     for (size_t i = 0; i < panels.size(); ++i) {
-      total += panels[i].error;
-      if (panels[i].error > panels[worst].error) worst = i;
+      total += steering(panels[i]);
+      if (steering(panels[i]) > steering(panels[worst])) worst = i;
     }
     if (total <= tolerance || int(panels.size()) >= max_panels || panels.empty()) break;
     const Panel p = panels[worst];

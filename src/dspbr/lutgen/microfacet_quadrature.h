@@ -70,7 +70,7 @@ QuadResult<K> cosine_average_quadrature(G&& g, const std::vector<double>& mu_bre
         for (int k = 0; k < K; ++k) v[size_t(k)] = w * d.value[size_t(k)];
         e = w * d.error;
       },
-      t, 0.5 * tolerance, kQuadMaxPanels);
+      t, 0.5 * tolerance, kQuadMaxPanels, /*nested_steers=*/false);
   r.evaluations = inner;
   return r;
 }
