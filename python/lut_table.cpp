@@ -68,11 +68,11 @@ LoadedTable loaded_table(const WarpedTable& t) {
                          : t.encoding == Encoding::LogOneMinus ? "log_one_minus"
                                                                : "value";
   LoadedTable out{t.name, "renderer", encoding, {}, {}, {}, {}};
-  out.stored = array_from(shape, [&](size_t i) { return t.values[i]; });
-  out.values = array_from(shape, [&](size_t i) { return renderer_sample_value(t, i); });
-  out.errors = errors_of(t.errors, shape);
   std::vector<std::array<double, 3>> coords(t.size());
   for (size_t i = 0; i < coords.size(); ++i) coords[i] = renderer_sample_coordinates(t, i);
+  out.stored = array_from(shape, [&](size_t i) { return t.values[i]; });
+  out.values = array_from(shape, [&](size_t i) { return renderer_sample_value(t, i, coords[i]); });
+  out.errors = errors_of(t.errors, shape);
   for (size_t k = 0; k < t.axes.size(); ++k) {
     const WarpedAxis& a = t.axes[k];
     LoadedAxis la{a.name, a.size, a.warp.describe(), {}, {}};

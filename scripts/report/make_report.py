@@ -474,7 +474,6 @@ def run_figure_job(name, out):
             "convergence": convergence_plot, "integrators": integrator_study_plot}[name](rep, figs)
 
 
-
 def read_report(report_dir, prog):
     """REPORT/data/report.json as written by `dspbr validate`, or None after a one-line message on
     stderr naming the file and what is wrong (prog: the script's name)."""
@@ -485,6 +484,7 @@ def read_report(report_dir, prog):
     except (OSError, ValueError) as e:
         print(f"{prog}: cannot read {path}: {e}", file=sys.stderr)
         return None
+
 
 def main():
     if len(sys.argv) != 2:

@@ -8,9 +8,9 @@
 // error only: bisecting a panel does not shrink them, so a caller that bounds them itself (the
 // cosine averages: their sum is at most the nested tolerance times the integral of the weight)
 // gives this level only its own share. The directional glass quadrature keeps the steering: its
-// extra bisections where the polar integrals state large errors are what keeps its true error
-// within 1e-6 at grazing, low-roughness cells (without it, 1.1e-6 at 14x the stated error, e.g.
-// ior 1.92, r 0.067, mu 3e-4; measured 2026-12-04 against a 1e-11 run of the same quadrature).
+// extra bisections where the polar integrals state large errors keep a grazing, low-roughness
+// cell within 1e-6 (without it, ior 1.68, r 0.067, mu 2.6e-4 was 1.3e-6 off at 14x its stated
+// error; measured 2026-12-04 against a 1e-10 run of the same quadrature, docs/luts.md "Speed").
 // Deterministic: the same panels in the same order for the same integrand.
 #pragma once
 #include <array>
@@ -93,10 +93,10 @@ QuadResult<K> integrate_adaptive(F&& f, const std::vector<double>& breaks, doubl
   };
   for (size_t i = 0; i + 1 < breaks.size(); ++i)
     if (breaks[i + 1] > breaks[i]) panels.push_back(make(breaks[i], breaks[i + 1]));
+  auto steering = [&](const Panel& p) { return nested_steers ? p.error + p.nested : p.error; };
   while (true) {
     double total = 0;
     size_t worst = 0;
-    auto steering = [&](const Panel& p) { return nested_steers ? p.error + p.nested : p.error; };
     for (size_t i = 0; i < panels.size(); ++i) {
       total += steering(panels[i]);
       if (steering(panels[i]) > steering(panels[worst])) worst = i;

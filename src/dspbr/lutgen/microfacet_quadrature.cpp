@@ -74,11 +74,10 @@ struct GgxIntegrand {
 struct GlassIntegrand {
   static constexpr int K = 1, kThresholds = 4, kLayers = 6;
   double mu, sv, alpha, f0, eta_i, eta_o, eta;  // eta = eta_i / eta_o
-  GgxDistribution ggx;
   double lambda_v, vh_tir;
   GlassIntegrand(double mu_, double alpha_, double f0_, double eta_i_, double eta_o_)
       : mu(mu_), sv(std::sqrt(std::max(0.0, 1.0 - mu_ * mu_))), alpha(alpha_), f0(f0_), eta_i(eta_i_),
-        eta_o(eta_o_), eta(eta_i_ / eta_o_), ggx(alpha_, alpha_), lambda_v(ggx.Lambda(Vec3{sv, 0.0, mu_})),
+        eta_o(eta_o_), eta(eta_i_ / eta_o_), lambda_v(GgxDistribution(alpha_, alpha_).Lambda(Vec3{sv, 0.0, mu_})),
         vh_tir(eta > 1 ? std::sqrt(1.0 - 1.0 / (eta * eta)) : kAbsent) {}
   Polar polar(double w) const { return ggx_polar(alpha, w); }
   // The refraction's horizon: l_t.z = -eta mu + (eta v.h - q) cos t with q = sqrt(1 - eta^2 (1 - v.h^2));

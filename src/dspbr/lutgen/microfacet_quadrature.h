@@ -50,9 +50,9 @@ QuadResult<1> sheen_albedo_quadrature(double mu, double alpha_b, bool ash, doubl
 // (gauss_kronrod.h). g's share is spread by weight: g at t is asked for 0.5 tol (5/4) / sqrt(w),
 // w = 4 t^3, so its weighted errors add up to at most Integral w 0.5 tol (5/4) w^(-1/2) dt =
 // 0.5 tol (looser where the weight is small, i.e. at grazing, where g is the dearest; capped at
-// 1e3 tol). The outer
-// rule is QK31: each node costs a directional quadrature, and on the smooth pieces between the
-// kinks one 31-node panel usually meets the target where QK15 needs 3 to 5 (fewer nodes in all).
+// 1e3 tol). The outer rule is QK31: each node costs a directional quadrature, and on the smooth
+// pieces between the kinks one 31-node panel usually meets the target where QK15 needs 3 to 5
+// (fewer nodes in all).
 template <int K, class G>
 QuadResult<K> cosine_average_quadrature(G&& g, const std::vector<double>& mu_breaks, double tolerance) {
   std::vector<double> t = {0.0};

@@ -218,9 +218,9 @@ std::array<double, 3> renderer_sample_coordinates(const WarpedTable& t, size_t i
   return v;
 }
 
-double renderer_sample_value(const WarpedTable& t, size_t index) {
+double renderer_sample_value(const WarpedTable& t, size_t index, const std::array<double, 3>& coordinates) {
   const double stored = t.values.at(index);
-  if (is_lut(t.name, Lut::GgxBeta)) return RendererLuts::decode_beta(renderer_sample_coordinates(t, index)[1], stored);
+  if (is_lut(t.name, Lut::GgxBeta)) return RendererLuts::decode_beta(coordinates[1], stored);
   return decode(t.encoding, stored);
 }
 

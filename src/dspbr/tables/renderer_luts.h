@@ -109,9 +109,10 @@ inline double RendererLuts::E_m(double cos_theta, double roughness) const {
 // as a lookup maps them. On an r = 0 row (the limit r -> 0 at fixed mu / alpha) the cos_theta
 // coordinates are that limit: 0 below the last sample, 1 at it.
 std::array<double, 3> renderer_sample_coordinates(const WarpedTable& t, size_t index);
-// The decoded quantity of sample `index`, as a lookup at its coordinates decodes it: the
-// table's encoding, and for GGX_beta the mirror's (1 - mu)^5 added back.
-double renderer_sample_value(const WarpedTable& t, size_t index);
+// The decoded quantity of sample `index` at its `coordinates` (renderer_sample_coordinates), as
+// a lookup there decodes it: the table's encoding, and for GGX_beta the mirror's (1 - mu)^5
+// added back.
+double renderer_sample_value(const WarpedTable& t, size_t index, const std::array<double, 3>& coordinates);
 
 // The default axes (sizes and warps) of a renderer table, `scale` times the default sample count
 // per axis (scale 1: the default renderer set, 5184 values; the reference BSDF's set uses 2).
