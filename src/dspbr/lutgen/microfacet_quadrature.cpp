@@ -29,6 +29,26 @@ struct Polar {
   double cz = 0, sz = 0, jac = 0;  // cos, sin of the normal's polar angle; measure factor
 };
 
+// The nodes of one azimuth panel at a fixed polar angle: c = cos p, sin p, v.h = A c + B and the
+// measure's numerator jw (the measure is jw / sin p: dp = dc / sin p).
+constexpr int kNodes = 15;  // QK15
+struct AzimuthNodes {
+  std::array<double, kNodes> c, sin_p, vh, jw;
+};
+
+// The integrands that take one node at a time (value(v, h, v.h, cos t, jw, sin p, out)) over a
+// panel's nodes; the nodes at sin p = 0 (the panel's ends, where the measure's pole is) add 0.
+template <class M>
+void values_by_node(const M& m, const Vec3& v, const Polar& p, const AzimuthNodes& n,
+                    std::array<QuadValues<M::K>, kNodes>& out) {
+  for (size_t i = 0; i < size_t(kNodes); ++i) {
+    out[i] = {};
+    if (n.sin_p[i] <= 0) continue;
+    const Vec3 h{p.sz * n.c[i], p.sz * n.sin_p[i], p.cz};
+    m.value(v, h, n.vh[i], p.cz, n.jw[i], n.sin_p[i], out[i]);
+  }
+}
+
 // GGX polar variable w (header): cos t = w / sqrt(w^2 + alpha^2 (1 - w^2)) without cancellation
 // at w -> 0; D(h) (h.n) dh = 2 w dw dp / (2 pi).
 Polar ggx_polar(double alpha, double w) {
@@ -60,15 +80,68 @@ struct GgxIntegrand {
     for (int i = 0; i < kLayers; ++i) t[i] = reflection_threshold(mu, cz, kLayer[size_t(i % 3)] * alpha);
   }
   void breaks(std::vector<double>&) const {}
-  void value(const Vec3& v, const Vec3& h, double vh, double cz, QuadValues<K>& out) const {
+  void values(const Vec3& v, const Polar& p, const AzimuthNodes& n, std::array<QuadValues<K>, kNodes>& out) const {
+    values_by_node(*this, v, p, n, out);
+  }
+  void value(const Vec3& v, const Vec3& h, double vh, double cz, double jw, double sin_p, QuadValues<K>& out) const {
     const Vec3 l = reflect(v, h);
     if (vh <= 0 || l.z <= 0) return;  // round-off at a piece's end
-    const double w = vh / ((1.0 + lambda_v + ggx.Lambda(l)) * mu * cz);
+    const double w = jw * vh / ((1.0 + lambda_v + ggx.Lambda(l)) * mu * cz * sin_p);
     const double m = 1.0 - vh, m2 = m * m;
     out[0] += w;
     out[1] += w * (m2 * m2 * m);
   }
 };
+
+// x86-64: a second copy of a vectorised function for AVX2 (4 lanes, not SSE2's 2), chosen at load
+// time. The same operations in the same order (no FMA: not enabled by the "avx2" target), so the
+// same bits on every machine; 1.25x faster glass cells where AVX2 exists.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define DSPBR_AVX2_CLONE __attribute__((target_clones("avx2", "default")))
+#else
+#define DSPBR_AVX2_CLONE
+#endif
+
+// The glass integrand at one azimuth panel's nodes (GlassIntegrand::values, below), on scalars
+// only: inside the class the vectoriser gives up on the loops (measured with -fopt-info-vec:
+// 16.5 ns an evaluation node by node, 9.6 ns vectorised, 7.7 ns with AVX2).
+DSPBR_AVX2_CLONE void glass_values(const AzimuthNodes& n, double mu, double cz, double alpha, double lambda_v, double f0, double eta,
+                  std::array<QuadValues<1>, kNodes>& out) {
+  const double a2 = alpha * alpha, g = 1.0 + 2.0 * lambda_v;
+  // Three simple loops (the compiler vectorises each; one loop with everything it does not).
+  std::array<double, kNodes> F, lr_z, lt_z;
+  const double outside = eta <= 1 ? 1.0 : 0.0;
+  for (size_t i = 0; i < size_t(kNodes); ++i) {
+    const double vh = n.vh[i];
+    const double sin2_t = eta * eta * std::max(0.0, 1.0 - vh * vh);
+    const double cos_t = std::sqrt(std::max(0.0, 1.0 - sin2_t));
+    // fresnel_schlick_d(vh, f0, 1, eta_i, eta_o): Schlick at v.h (eta <= 1) or at cos_t (<= 1), 1
+    // under total internal reflection (sin2_t >= 1 only for eta > 1, or at v.h = 0, where
+    // Schlick is 1 too). The side is chosen by a 0/1 blend: a select here stops the vectoriser.
+    const double m = 1.0 - (outside * std::min(1.0, vh) + (1.0 - outside) * cos_t), m2 = m * m;
+    F[i] = sin2_t >= 1.0 ? 1.0 : f0 + (1.0 - f0) * (m2 * m2 * m);
+    lr_z[i] = 2.0 * vh * cz - mu;
+    lt_z[i] = -eta * mu + (eta * vh - cos_t) * cz;
+  }
+  // G2 = 2 |z| / d (above), both square roots taken whatever the branch.
+  std::array<double, kNodes> d_r, d_t;
+  for (size_t i = 0; i < size_t(kNodes); ++i) {
+    const double r = lr_z[i], t = lt_z[i];
+    d_r[i] = r * g + std::sqrt(r * r + a2 * std::max(0.0, 1.0 - r * r));
+    d_t[i] = -t * g + std::sqrt(t * t + a2 * std::max(0.0, 1.0 - t * t));
+  }
+  for (size_t i = 0; i < size_t(kNodes); ++i) {
+    // 0/1 weights, not selects (which stop the vectoriser; the blends are exact). Under total
+    // internal reflection 1 - F = 0 weighs the (meaningless) transmitted term out.
+    const double R = lr_z[i] > 0 ? 1.0 : 0.0, T = lt_z[i] < 0 ? 1.0 : 0.0;
+    const double dr = R * d_r[i] + (1.0 - R), dt = T * d_t[i] + (1.0 - T);
+    // F 2|lr_z| / d_r + (1 - F) 2|lt_z| / d_t over one denominator, with the measure.
+    const double num = R * F[i] * 2.0 * lr_z[i] * dt + T * (1.0 - F[i]) * 2.0 * -lt_z[i] * dr;
+    const double live = (n.vh[i] > 0 ? 1.0 : 0.0) * (n.sin_p[i] > 0 ? 1.0 : 0.0) * (R + T > 0 ? 1.0 : 0.0);
+    const double den = live * (dr * dt * mu * cz * n.sin_p[i]) + (1.0 - live);
+    out[i][0] = live * (n.jw[i] * num * n.vh[i] / den);
+  }
+}
 
 // E_g of the rough dielectric interface (lutgen/albedo.h glass_E).
 struct GlassIntegrand {
@@ -107,28 +180,18 @@ struct GlassIntegrand {
   void breaks(std::vector<double>&) const {}
   // Height-correlated G2(v, l) = 1 / (1 + Lambda(v) + Lambda(l)) of a unit l from its cosine z
   // alone (isotropic GGX, Heitz 2014: 1 + Lambda(l) = (|z| + sqrt(z^2 + alpha^2 (1 - z^2))) / (2 |z|)),
-  // so G2 = 2 |z| / (|z| (1 + 2 Lambda(v)) + sqrt(z^2 + alpha^2 (1 - z^2))): one square root and one
-  // division, no cancellation. G2 needs nothing else of l_r and l_t.
-  double g2_of_cos(double z) const {
-    const double a = std::abs(z), z2 = z * z;
-    return 2.0 * a / (a * (1.0 + 2.0 * lambda_v) + std::sqrt(z2 + alpha * alpha * std::max(0.0, 1.0 - z2)));
-  }
+  // as the fraction G2 = 2 |z| / d, d = |z| (1 + 2 Lambda(v)) + sqrt(z^2 + alpha^2 (1 - z^2)) (no
+  // cancellation). G2 needs nothing else of l_r and l_t.
   // Only the z components of l_r and l_t enter (their horizons and G2), in closed form:
   // reflect(v, h).z = 2 (v.h) h.z - mu; the refraction (Walter et al. 2007, eq. 40, as refract_dir)
   // l_t = -eta v + (eta v.h - cos_t) h, cos_t = sqrt(1 - eta^2 (1 - v.h^2)), none under total
-  // internal reflection. At eta = 1: l_t = -v, the limit eta -> 1+.
-  void value(const Vec3&, const Vec3&, double vh, double cz, QuadValues<K>& out) const {
-    if (vh <= 0) return;
-    const double F = fresnel_schlick_d(vh, f0, 1.0, eta_i, eta_o);
-    double w = 0;
-    const double lr_z = 2.0 * vh * cz - mu;
-    if (lr_z > 0) w += F * g2_of_cos(lr_z);
-    const double sin2_t = eta * eta * std::max(0.0, 1.0 - vh * vh);
-    if (F < 1 && sin2_t < 1.0) {
-      const double lt_z = -eta * mu + (eta * vh - std::sqrt(1.0 - sin2_t)) * cz;
-      if (lt_z < 0) w += (1.0 - F) * g2_of_cos(lt_z);
-    }
-    out[0] += w * vh / (mu * cz);
+  // internal reflection. At eta = 1: l_t = -v, the limit eta -> 1+. F_d from inside is Schlick at
+  // the same cos_t (fresnel_schlick_d). The two G2 fractions and the measure jw / sin p share one
+  // division. One branch-free loop over the panel's nodes (selects, every square root taken of a
+  // clamped argument), which the compiler vectorises: the integrand is bound by its 5 square
+  // roots and 1 division, about 2x faster so than node by node.
+  void values(const Vec3&, const Polar& p, const AzimuthNodes& n, std::array<QuadValues<K>, kNodes>& out) const {
+    glass_values(n, mu, p.cz, alpha, lambda_v, f0, eta, out);
   }
 };
 
@@ -142,14 +205,17 @@ struct SheenIntegrand {
   Polar polar(double x) const { return {x, std::sqrt(std::max(0.0, 1.0 - x * x)), 1.0}; }
   void thresholds(double cz, double* t) const { t[0] = reflection_threshold(mu, cz); }
   void layers(double, double*) const {}
+  void values(const Vec3& v, const Polar& p, const AzimuthNodes& n, std::array<QuadValues<K>, kNodes>& out) const {
+    values_by_node(*this, v, p, n, out);
+  }
   // The Charlie peak at the horizon: sin^(1/alpha_b) t has width ~ sqrt(alpha_b) in cos t.
   void breaks(std::vector<double>& b) const {
     for (double k : {1.0, 3.0, 9.0}) b.push_back(k * std::sqrt(alpha_b));
   }
-  void value(const Vec3& v, const Vec3& h, double vh, double, QuadValues<K>& out) const {
+  void value(const Vec3& v, const Vec3& h, double vh, double, double jw, double sin_p, QuadValues<K>& out) const {
     const Vec3 l = reflect(v, h);
     if (vh <= 0 || l.z <= 0) return;
-    out[0] += (ash ? sheen_brdf_ash(v, l, alpha_b) : sheen_brdf(v, l, alpha_b)) * l.z * 4.0 * vh;
+    out[0] += (ash ? sheen_brdf_ash(v, l, alpha_b) : sheen_brdf(v, l, alpha_b)) * l.z * 4.0 * vh * jw / sin_p;
   }
 };
 
@@ -185,16 +251,18 @@ QuadResult<M::K> integrate_normals(const M& m, double tolerance) {
       // Smoothstep substitution c = a + (b - a)(3 x^2 - 2 x^3): square-root behaviour at the
       // ends (the piece's threshold, 1 / sqrt(1 - c^2) at c = -1 and 1) becomes smooth.
       const QuadResult<K> r = integrate_adaptive<K>(
-          [&](double x, QuadValues<K>& val, double& e) {
-            e = 0;
-            val = {};
-            const double c = a + (b - a) * x * x * (3.0 - 2.0 * x);
-            const double sin_p = std::sqrt(std::max(0.0, (1.0 - c) * (1.0 + c)));
-            if (sin_p <= 0) return;
-            const Vec3 h{p.sz * c, p.sz * sin_p, p.cz};
-            m.value(v, h, A * c + B, p.cz, val);
-            const double jw = 2.0 * p.jac * (b - a) * 6.0 * x * (1.0 - x) / sin_p;
-            for (double& y : val) y *= jw;
+          [&](const std::array<double, kNodes>& xs, std::array<QuadValues<K>, kNodes>& vals,
+              std::array<double, kNodes>& es) {
+            AzimuthNodes nodes;
+            for (size_t i = 0; i < size_t(kNodes); ++i) {
+              const double x = xs[i], c = a + (b - a) * x * x * (3.0 - 2.0 * x);
+              nodes.c[i] = c;
+              nodes.sin_p[i] = std::sqrt(std::max(0.0, (1.0 - c) * (1.0 + c)));
+              nodes.vh[i] = A * c + B;
+              nodes.jw[i] = 2.0 * p.jac * (b - a) * 6.0 * x * (1.0 - x);
+              es[i] = 0;
+            }
+            m.values(v, p, nodes, vals);
           },
           {0.0, 1.0}, inner_tol / (n - 1), kQuadMaxPanels);
       evaluations += r.evaluations;
