@@ -402,15 +402,18 @@ Estimate glass_E(double mu, double r, double ior, bool inside, const IntegratorS
   if (s.integrator == Integrator::Quad) {
     // Smooth interface: F_d + (1 - F_d) = 1 (also under total internal reflection, F_d = 1).
     if (alpha == 0) return {1.0, 0.0};
-    // Asked for a tenth of the tolerance, its estimate stated 10x: at grazing, low-roughness cells
-    // the embedded estimate at the tolerance itself missed the error by up to 14x (true 1.1e-6 at
-    // 1e-7, e.g. ior 1.92, r 0.067, mu 3e-4); at a tenth, over 5632 cells of the renderer grid, the
-    // worst true error is 3.1e-7 (against a 1e-10 run, which QMC at 2^25 samples confirms; measured
-    // 2026-12-04, test GlassAlbedo.GrazingLowRoughnessCellsWithinTheTrueErrorBound). Costs about
-    // 1.6x the evaluations.
-    constexpr double kGlassSafety = 10;
-    const QuadResult<1> q = dielectric_albedo_quadrature(v.z, alpha, f0, eta_i, eta_o, quad_tolerance(s) / kGlassSafety);
-    return {q.value[0], kGlassSafety * q.error};
+    // Below r = 1/4 (alpha < 1/16) asked for a tenth of the tolerance, its estimate stated 10x:
+    // there, at grazing cells, the embedded estimate at the tolerance itself missed the error by
+    // up to 14x (true 1.1e-6 at 1e-7, e.g. ior 1.92, r 0.067, mu 3e-4). Swept against 1e-10 runs
+    // (the renderer grid: 6144 cells at r 1/15..3/15 and 5632 over the whole domain; measured
+    // 2026-12-04, docs/luts.md "Speed", test GlassAlbedo.GrazingLowRoughnessCellsWithinTheTrueErrorBound):
+    // worst true error 3.2e-7 with this rule, three cells beyond their stated error (r 1/15,
+    // 0.6 and 0.73). The factor costs 1.7x the evaluations; above r = 1/4 it bought no cell
+    // within 1e-6 that was not.
+    constexpr double kGlassSafety = 10, kGlassSafetyBelowAlpha = 1.0 / 16.0;
+    const double safety = alpha < kGlassSafetyBelowAlpha ? kGlassSafety : 1.0;
+    const QuadResult<1> q = dielectric_albedo_quadrature(v.z, alpha, f0, eta_i, eta_o, quad_tolerance(s) / safety);
+    return {q.value[0], safety * q.error};
   }
   return combine<1>(replicate_means<1>(s, stream, 2,
                                        [&](const double* u, std::array<double, 1>& acc) {

@@ -29,12 +29,35 @@ struct Polar {
   double cz = 0, sz = 0, jac = 0;  // cos, sin of the normal's polar angle; measure factor
 };
 
+// x86-64: a second copy of a vectorised function for AVX2 (4 lanes, not SSE2's 2), chosen at load
+// time. The same operations in the same order (no FMA: not enabled by the "avx2" target), so the
+// same bits on every machine; 1.25x faster glass cells where AVX2 exists.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define DSPBR_AVX2_CLONE __attribute__((target_clones("avx2", "default")))
+#else
+#define DSPBR_AVX2_CLONE
+#endif
+
 // The nodes of one azimuth panel at a fixed polar angle: c = cos p, sin p, v.h = A c + B and the
 // measure's numerator jw (the measure is jw / sin p: dp = dc / sin p).
 constexpr int kNodes = 15;  // QK15
 struct AzimuthNodes {
   std::array<double, kNodes> c, sin_p, vh, jw;
 };
+
+// The nodes of the azimuth piece [a, b] in c = cos p at the panel nodes xs in [0, 1] (the
+// smoothstep substitution c = a + (b - a)(3 x^2 - 2 x^3), integrate_normals), v.h = A c + B and
+// the measure 2 jac dc/dx / sin p, its division left to the integrand. Vectorised, as glass_values.
+DSPBR_AVX2_CLONE void azimuth_nodes(const std::array<double, kNodes>& xs, double a, double b, double A, double B,
+                                    double jac, AzimuthNodes& n) {
+  for (size_t i = 0; i < size_t(kNodes); ++i) {
+    const double x = xs[i], c = a + (b - a) * x * x * (3.0 - 2.0 * x);
+    n.c[i] = c;
+    n.sin_p[i] = std::sqrt(std::max(0.0, (1.0 - c) * (1.0 + c)));
+    n.vh[i] = A * c + B;
+    n.jw[i] = 2.0 * jac * (b - a) * 6.0 * x * (1.0 - x);
+  }
+}
 
 // The integrands that take one node at a time (value(v, h, v.h, cos t, jw, sin p, out)) over a
 // panel's nodes; the nodes at sin p = 0 (the panel's ends, where the measure's pole is) add 0.
@@ -92,15 +115,6 @@ struct GgxIntegrand {
     out[1] += w * (m2 * m2 * m);
   }
 };
-
-// x86-64: a second copy of a vectorised function for AVX2 (4 lanes, not SSE2's 2), chosen at load
-// time. The same operations in the same order (no FMA: not enabled by the "avx2" target), so the
-// same bits on every machine; 1.25x faster glass cells where AVX2 exists.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define DSPBR_AVX2_CLONE __attribute__((target_clones("avx2", "default")))
-#else
-#define DSPBR_AVX2_CLONE
-#endif
 
 // The glass integrand at one azimuth panel's nodes (GlassIntegrand::values, below), on scalars
 // only: inside the class the vectoriser gives up on the loops (measured with -fopt-info-vec:
@@ -254,14 +268,8 @@ QuadResult<M::K> integrate_normals(const M& m, double tolerance) {
           [&](const std::array<double, kNodes>& xs, std::array<QuadValues<K>, kNodes>& vals,
               std::array<double, kNodes>& es) {
             AzimuthNodes nodes;
-            for (size_t i = 0; i < size_t(kNodes); ++i) {
-              const double x = xs[i], c = a + (b - a) * x * x * (3.0 - 2.0 * x);
-              nodes.c[i] = c;
-              nodes.sin_p[i] = std::sqrt(std::max(0.0, (1.0 - c) * (1.0 + c)));
-              nodes.vh[i] = A * c + B;
-              nodes.jw[i] = 2.0 * p.jac * (b - a) * 6.0 * x * (1.0 - x);
-              es[i] = 0;
-            }
+            azimuth_nodes(xs, a, b, A, B, p.jac, nodes);
+            es = {};
             m.values(v, p, nodes, vals);
           },
           {0.0, 1.0}, inner_tol / (n - 1), kQuadMaxPanels);
