@@ -104,6 +104,7 @@ QuadResult<K> integrate_adaptive(F&& f, const std::vector<double>& breaks, doubl
     QuadValues<K> value;
   };
   std::vector<Panel> panels;
+  panels.reserve(breaks.size() + 7);  // room for a few bisections without reallocating
   QuadResult<K> out;
   auto make = [&](double a, double b) {
     Panel p{a, b, 0, 0, {}};
