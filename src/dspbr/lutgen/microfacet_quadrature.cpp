@@ -44,13 +44,14 @@ struct AzimuthNodes {
   std::array<double, kNodes> c, sin_p, vh, jw;
 };
 
-// The nodes of the azimuth piece [a, b] in c = cos p at the panel nodes xs in [0, 1] (the
-// smoothstep substitution c = a + (b - a)(3 x^2 - 2 x^3), integrate_normals), v.h = A c + B and
-// the measure 2 jac dc/dx / sin p, its division left to the integrand. Vectorised, as glass_values.
-DSPBR_AVX2_CLONE void azimuth_nodes(const std::array<double, kNodes>& xs, double a, double b, double A, double B,
-                                    double jac, AzimuthNodes& n) {
+// The nodes of the azimuth piece [a, b] in c = cos p at the panel nodes x = mid + half x_i in
+// [0, 1] (x_i the rule's nodes on [-1, 1]; the smoothstep substitution c = a + (b - a)(3 x^2 -
+// 2 x^3), integrate_normals), v.h = A c + B and the measure 2 jac dc/dx / sin p, its division
+// left to the integrand. Vectorised, as glass_values.
+DSPBR_AVX2_CLONE void azimuth_nodes(const std::array<double, kNodes>& x_i, double mid, double half, double a,
+                                    double b, double A, double B, double jac, AzimuthNodes& n) {
   for (size_t i = 0; i < size_t(kNodes); ++i) {
-    const double x = xs[i], c = a + (b - a) * x * x * (3.0 - 2.0 * x);
+    const double x = mid + half * x_i[i], c = a + (b - a) * x * x * (3.0 - 2.0 * x);
     n.c[i] = c;
     n.sin_p[i] = std::sqrt(std::max(0.0, (1.0 - c) * (1.0 + c)));
     n.vh[i] = A * c + B;
@@ -89,7 +90,7 @@ constexpr std::array<double, 3> kLayer = {1.0 / 16.0, 0.5, 4.0};
 
 // {E_m, B}: G2 (v.h) / (mu cos t) times {1, (1 - v.h)^5} (the measure in ggx_polar).
 struct GgxIntegrand {
-  static constexpr int K = 2, kThresholds = 1, kLayers = 3;
+  static constexpr int K = 2, kSplits = 4;
   double mu, sv, alpha;
   GgxDistribution ggx;
   double lambda_v;
@@ -97,9 +98,9 @@ struct GgxIntegrand {
       : mu(mu_), sv(std::sqrt(std::max(0.0, 1.0 - mu_ * mu_))), alpha(alpha_), ggx(alpha_, alpha_),
         lambda_v(ggx.Lambda(Vec3{sv, 0.0, mu_})) {}
   Polar polar(double w) const { return ggx_polar(alpha, w); }
-  void thresholds(double cz, double* t) const { t[0] = reflection_threshold(mu, cz); }
-  void layers(double cz, double* t) const {
-    for (int i = 0; i < kLayers; ++i) t[i] = reflection_threshold(mu, cz, kLayer[size_t(i % 3)] * alpha);
+  // The reflection's horizon, then its layers.
+  double split(double cz, int k) const {
+    return reflection_threshold(mu, cz, k == 0 ? 0.0 : kLayer[size_t(k - 1)] * alpha);
   }
   void breaks(std::vector<double>&) const {}
   void values(const Vec3& v, const Polar& p, const AzimuthNodes& n, std::array<QuadValues<K>, kNodes>& out) const {
@@ -160,7 +161,7 @@ DSPBR_AVX2_CLONE void glass_values(const AzimuthNodes& n, double mu, double cz, 
 
 // E_g of the rough dielectric interface (lutgen/albedo.h glass_E).
 struct GlassIntegrand {
-  static constexpr int K = 1, kThresholds = 4, kLayers = 6;
+  static constexpr int K = 1, kSplits = 10;
   double mu, sv, alpha, f0, eta;  // eta = eta_i / eta_o
   double lambda_v, vh_tir;
   GlassIntegrand(double mu_, double alpha_, double f0_, double eta_i_, double eta_o_)
@@ -180,16 +181,17 @@ struct GlassIntegrand {
     if (c * c > eta * eta - 1.0) return vh_tir;
     return std::clamp((c * c + eta * eta - 1.0) / (2.0 * c * eta), vh_tir, 1.0);
   }
-  void thresholds(double cz, double* t) const {
-    t[0] = 0.0;
-    t[1] = reflection_threshold(mu, cz);
-    t[2] = vh_tir;
-    t[3] = refraction_threshold(cz);
-  }
-  void layers(double cz, double* t) const {
-    for (int i = 0; i < 3; ++i) {
-      t[i] = reflection_threshold(mu, cz, kLayer[size_t(i)] * alpha);
-      t[3 + i] = refraction_threshold(cz, -kLayer[size_t(i)] * alpha);
+  // v.h = 0, the reflection's horizon, the TIR edge, the refraction's horizon, then the layers of
+  // the two horizons.
+  double split(double cz, int k) const {
+    switch (k) {
+      case 0: return 0.0;
+      case 1: return reflection_threshold(mu, cz);
+      case 2: return vh_tir;
+      case 3: return refraction_threshold(cz);
+      default:
+        return k < 7 ? reflection_threshold(mu, cz, kLayer[size_t(k - 4)] * alpha)
+                     : refraction_threshold(cz, -kLayer[size_t(k - 7)] * alpha);
     }
   }
   void breaks(std::vector<double>&) const {}
@@ -209,14 +211,13 @@ struct GlassIntegrand {
 
 // E_b: f_b(v, l) (l.n) 4 (v.h) over dh = d(cos t) dp.
 struct SheenIntegrand {
-  static constexpr int K = 1, kThresholds = 1, kLayers = 0;
+  static constexpr int K = 1, kSplits = 1;
   double mu, sv, alpha_b;
   bool ash;
   SheenIntegrand(double mu_, double alpha_b_, bool ash_)
       : mu(mu_), sv(std::sqrt(std::max(0.0, 1.0 - mu_ * mu_))), alpha_b(alpha_b_), ash(ash_) {}
   Polar polar(double x) const { return {x, std::sqrt(std::max(0.0, 1.0 - x * x)), 1.0}; }
-  void thresholds(double cz, double* t) const { t[0] = reflection_threshold(mu, cz); }
-  void layers(double, double*) const {}
+  double split(double cz, int) const { return reflection_threshold(mu, cz); }  // the reflection's horizon
   void values(const Vec3& v, const Polar& p, const AzimuthNodes& n, std::array<QuadValues<K>, kNodes>& out) const {
     values_by_node(*this, v, p, n, out);
   }
@@ -247,15 +248,14 @@ QuadResult<M::K> integrate_normals(const M& m, double tolerance) {
     const Polar p = m.polar(s);
     if (!(p.cz > 0) || p.jac == 0) return;
     const double A = m.sv * p.sz, B = m.mu * p.cz;
-    std::array<double, M::kThresholds + M::kLayers + 2> cs{};
+    std::array<double, M::kSplits + 2> cs{};
     int n = 0;
     cs[size_t(n++)] = -1.0;
     cs[size_t(n++)] = 1.0;
-    double t[M::kThresholds + M::kLayers];
-    m.thresholds(p.cz, t);
-    m.layers(p.cz, t + M::kThresholds);
-    for (double x : t)
+    for (int k = 0; k < M::kSplits; ++k) {
+      const double x = m.split(p.cz, k);
       if (A > 0 && x > B - A && x < B + A) cs[size_t(n++)] = (x - B) / A;
+    }
     std::sort(cs.begin(), cs.begin() + n);
     for (int k = 0; k + 1 < n; ++k) {
       const double a = cs[size_t(k)], b = cs[size_t(k + 1)];
@@ -263,10 +263,9 @@ QuadResult<M::K> integrate_normals(const M& m, double tolerance) {
       // Smoothstep substitution c = a + (b - a)(3 x^2 - 2 x^3): square-root behaviour at the
       // ends (the piece's threshold, 1 / sqrt(1 - c^2) at c = -1 and 1) becomes smooth.
       const QuadResult<K> r = integrate_adaptive<K>(
-          [&](const std::array<double, kNodes>& xs, std::array<QuadValues<K>, kNodes>& vals,
-              std::array<double, kNodes>& es) {
+          [&](double mid, double half, std::array<QuadValues<K>, kNodes>& vals, std::array<double, kNodes>& es) {
             AzimuthNodes nodes;
-            azimuth_nodes(xs, a, b, A, B, p.jac, nodes);
+            azimuth_nodes(GaussKronrod<kNodes>::get().x, mid, half, a, b, A, B, p.jac, nodes);
             es = {};
             m.values(v, p, nodes, vals);
           },
@@ -278,21 +277,25 @@ QuadResult<M::K> integrate_normals(const M& m, double tolerance) {
   };
   // Kinks: where a threshold meets v.h at p = 0 (cos(t_v - t)) or p = pi (cos(t_v + t)).
   // The layer splits are polar breaks too (at normal incidence the layer lies across t alone).
-  constexpr int kSplits = M::kThresholds + M::kLayers;
+  // Gap 2k (2k + 1): split k minus v.h at p = 0 (p = pi).
+  constexpr int kSplits = M::kSplits;
+  auto gap = [&](double s, int g) {
+    const Polar p = m.polar(s);
+    const double A = m.sv * p.sz, B = m.mu * p.cz;
+    return m.split(p.cz, g / 2) - (g % 2 == 0 ? B - A : B + A);
+  };
   auto gaps = [&](double s, std::array<double, 2 * kSplits>& d) {
     const Polar p = m.polar(s);
     const double A = m.sv * p.sz, B = m.mu * p.cz;
-    double t[kSplits];
-    m.thresholds(p.cz, t);
-    m.layers(p.cz, t + M::kThresholds);
     for (int k = 0; k < kSplits; ++k) {
-      d[size_t(2 * k)] = t[k] - (B - A);
-      d[size_t(2 * k + 1)] = t[k] - (B + A);
+      const double t = m.split(p.cz, k);
+      d[size_t(2 * k)] = t - (B - A);
+      d[size_t(2 * k + 1)] = t - (B + A);
     }
   };
   std::vector<double> breaks = {0.0, 1.0};
   m.breaks(breaks);
-  std::array<double, 2 * kSplits> prev{}, cur{}, mid{};
+  std::array<double, 2 * kSplits> prev{}, cur{};
   std::vector<double> scan;
   for (int i = 0; i < kScanGraded; ++i) scan.push_back(kScanLo * std::pow(1.0 / (kScan * kScanLo), double(i) / kScanGraded));
   for (int i = 1; i <= kScan; ++i) scan.push_back(double(i) / kScan);
@@ -306,8 +309,7 @@ QuadResult<M::K> integrate_normals(const M& m, double tolerance) {
       double lo = s_prev, hi = s;
       for (int it = 0; it < kBisections; ++it) {
         const double x = 0.5 * (lo + hi);
-        gaps(x, mid);
-        ((mid[k] < 0) == (prev[k] < 0) ? lo : hi) = x;
+        ((gap(x, int(k)) < 0) == (prev[k] < 0) ? lo : hi) = x;
       }
       breaks.push_back(0.5 * (lo + hi));
     }
