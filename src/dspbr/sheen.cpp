@@ -32,17 +32,18 @@ const SheenLambdaFit& sheen_lambda_fit_spec() {
   return fit;
 }
 
-double sheen_fit_l(double x, double alpha_b, const SheenLambdaFit& f) {
+SheenLambda::SheenLambda(double alpha_b, const SheenLambdaFit& f) {
   const double w = f.c[0] / (1.0 + f.c[1] * std::pow(alpha_b, f.c[2])) + f.c[3];
-  double p[5];
-  for (int i = 0; i < 5; ++i) p[i] = (1.0 - w) * f.p0[i] + w * f.p1[i];
-  return p[0] / (1.0 + p[1] * std::pow(x, p[2])) + p[3] * x + p[4];
+  for (size_t i = 0; i < p_.size(); ++i) p_[i] = (1.0 - w) * f.p0[i] + w * f.p1[i];
+  l_half_ = L(0.5);
 }
 
-double sheen_lambda(double cos_theta, double alpha_b, const SheenLambdaFit& fit) {
+double SheenLambda::L(double x) const { return p_[0] / (1.0 + p_[1] * std::pow(x, p_[2])) + p_[3] * x + p_[4]; }
+
+double SheenLambda::operator()(double cos_theta) const {
   const double c = std::min(1.0, std::abs(cos_theta));
-  if (c < 0.5) return std::exp(sheen_fit_l(c, alpha_b, fit));
-  return std::exp(2.0 * sheen_fit_l(0.5, alpha_b, fit) - sheen_fit_l(1.0 - c, alpha_b, fit));
+  if (c < 0.5) return std::exp(L(c));
+  return std::exp(2.0 * l_half_ - L(1.0 - c));
 }
 
 double sheen_lambda_exact(double cos_theta, double alpha_b) {
@@ -90,13 +91,21 @@ double sheen_lambda_exact(double cos_theta, double alpha_b) {
 
 double sheen_g2(const Vec3& v, const Vec3& l, const Vec3& h, double alpha_b, const SheenLambdaFit& fit) {
   if (dot(v, h) <= 0 || dot(l, h) <= 0) return 0.0;
-  return 1.0 / (1.0 + sheen_lambda(v.z, alpha_b, fit) + sheen_lambda(l.z, alpha_b, fit));
+  const SheenLambda lambda(alpha_b, fit);
+  return 1.0 / (1.0 + lambda(v.z) + lambda(l.z));
 }
 
 double sheen_brdf(const Vec3& v, const Vec3& l, double alpha_b, const SheenLambdaFit& fit) {
   if (v.z <= 0 || l.z <= 0) return 0.0;
+  const SheenLambda lambda(alpha_b, fit);
+  return sheen_brdf(v, l, alpha_b, lambda, lambda(v.z));
+}
+
+double sheen_brdf(const Vec3& v, const Vec3& l, double alpha_b, const SheenLambda& lambda, double lambda_v) {
+  if (v.z <= 0 || l.z <= 0) return 0.0;
   const Vec3 h = normalize(v + l);
-  return charlie_d(h.z, alpha_b) * sheen_g2(v, l, h, alpha_b, fit) / (4.0 * v.z * l.z);
+  if (dot(v, h) <= 0 || dot(l, h) <= 0) return 0.0;  // G_b's chi+ terms
+  return charlie_d(h.z, alpha_b) * (1.0 / (1.0 + lambda_v + lambda(l.z))) / (4.0 * v.z * l.z);
 }
 
 double sheen_brdf_ash(const Vec3& v, const Vec3& l, double alpha_b) {

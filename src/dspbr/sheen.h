@@ -32,11 +32,25 @@ struct SheenLambdaFit {
 // The coefficients printed in the DSPBR 2025x spec (Table sheen-lambda-fit and -w).
 const SheenLambdaFit& sheen_lambda_fit_spec();
 
-// L(x; alpha_b) of the fit form.
-double sheen_fit_l(double x, double alpha_b, const SheenLambdaFit& fit);
+// The fit at one alpha_b: the blended row p(alpha_b) and L(0.5) computed once, for the many
+// directions evaluated at a fixed roughness (a quadrature cell: 5 powers per sheen BRDF
+// evaluation become 2, measured 2026-12-04).
+class SheenLambda {
+ public:
+  SheenLambda(double alpha_b, const SheenLambdaFit& fit);
+  // L(x; alpha_b) of the fit form.
+  double L(double x) const;
+  // Lambda(cos; alpha_b) = exp(L(|cos|)) for |cos| < 0.5, exp(2 L(0.5) - L(1 - |cos|)) otherwise.
+  double operator()(double cos_theta) const;
 
-// Lambda(cos; alpha_b) = exp(L(|cos|)) for |cos| < 0.5, exp(2 L(0.5) - L(1 - |cos|)) otherwise.
-double sheen_lambda(double cos_theta, double alpha_b, const SheenLambdaFit& fit);
+ private:
+  std::array<double, 5> p_;
+  double l_half_;
+};
+
+inline double sheen_lambda(double cos_theta, double alpha_b, const SheenLambdaFit& fit) {
+  return SheenLambda(alpha_b, fit)(cos_theta);
+}
 inline double sheen_lambda(double cos_theta, double alpha_b) {
   return sheen_lambda(cos_theta, alpha_b, sheen_lambda_fit_spec());
 }
@@ -58,6 +72,8 @@ double sheen_brdf(const Vec3& v, const Vec3& l, double alpha_b, const SheenLambd
 inline double sheen_brdf(const Vec3& v, const Vec3& l, double alpha_b) {
   return sheen_brdf(v, l, alpha_b, sheen_lambda_fit_spec());
 }
+// The same with the fit at alpha_b and lambda_v = lambda(v.n) given (a fixed view and roughness).
+double sheen_brdf(const Vec3& v, const Vec3& l, double alpha_b, const SheenLambda& lambda, double lambda_v);
 
 // Alternative sheen BRDF with the Neubelt-Pettineo visibility (spec "Sheen", [NP13]):
 // M_b = D_b / (4 (v.n + l.n - (v.n)(l.n))).

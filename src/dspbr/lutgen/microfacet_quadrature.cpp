@@ -214,8 +214,11 @@ struct SheenIntegrand {
   static constexpr int K = 1, kSplits = 1;
   double mu, sv, alpha_b;
   bool ash;
+  SheenLambda lambda;  // the fit at alpha_b and Lambda(v), computed once for the cell
+  double lambda_v;
   SheenIntegrand(double mu_, double alpha_b_, bool ash_)
-      : mu(mu_), sv(std::sqrt(std::max(0.0, 1.0 - mu_ * mu_))), alpha_b(alpha_b_), ash(ash_) {}
+      : mu(mu_), sv(std::sqrt(std::max(0.0, 1.0 - mu_ * mu_))), alpha_b(alpha_b_), ash(ash_),
+        lambda(alpha_b_, sheen_lambda_fit_spec()), lambda_v(lambda(mu_)) {}
   Polar polar(double x) const { return {x, std::sqrt(std::max(0.0, 1.0 - x * x)), 1.0}; }
   double split(double cz, int) const { return reflection_threshold(mu, cz); }  // the reflection's horizon
   void values(const Vec3& v, const Polar& p, const AzimuthNodes& n, std::array<QuadValues<K>, kNodes>& out) const {
@@ -228,7 +231,8 @@ struct SheenIntegrand {
   void value(const Vec3& v, const Vec3& h, double vh, double, double jw, double sin_p, QuadValues<K>& out) const {
     const Vec3 l = reflect(v, h);
     if (vh <= 0 || l.z <= 0) return;
-    out[0] += (ash ? sheen_brdf_ash(v, l, alpha_b) : sheen_brdf(v, l, alpha_b)) * l.z * 4.0 * vh * jw / sin_p;
+    out[0] += (ash ? sheen_brdf_ash(v, l, alpha_b) : sheen_brdf(v, l, alpha_b, lambda, lambda_v)) * l.z * 4.0 * vh * jw /
+              sin_p;
   }
 };
 
