@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <memory_resource>
 #include <type_traits>
 #include <vector>
 
@@ -106,8 +107,14 @@ QuadResult<K> integrate_adaptive(F&& f, const std::vector<double>& breaks, doubl
     double a, b, error, nested;
     QuadValues<K> value;
   };
-  std::vector<Panel> panels;
-  panels.reserve(breaks.size() + 7);  // room for a few bisections without reallocating
+  // The first kInline panels live on the stack: an azimuth piece of the directional quadrature
+  // usually needs one to three, and allocating them on the heap cost 10% of a glass cell
+  // (measured 2026-12-04). More spill to the heap.
+  constexpr size_t kInline = 16;
+  alignas(Panel) std::array<std::byte, kInline * sizeof(Panel)> buffer;
+  std::pmr::monotonic_buffer_resource arena(buffer.data(), buffer.size());
+  std::pmr::vector<Panel> panels(&arena);
+  panels.reserve(std::max(kInline, breaks.size()));
   QuadResult<K> out;
   auto make = [&](double a, double b) {
     Panel p{a, b, 0, 0, {}};

@@ -13,6 +13,8 @@ namespace dspbr {
 
 namespace {
 
+// The azimuth pieces' variable x in [0, 1] (integrate_normals; built once, not per piece).
+const std::vector<double> kUnit = {0.0, 1.0};
 // Share of the tolerance left to the azimuthal integrals (the rest to the polar one).
 constexpr double kInnerShare = 0.1;
 // Polar scan for kinks, then bisection to double precision: kScan points on [0, 1] and, below
@@ -273,7 +275,7 @@ QuadResult<M::K> integrate_normals(const M& m, double tolerance) {
             es = {};
             m.values(v, p, nodes, vals);
           },
-          {0.0, 1.0}, inner_tol / (n - 1), kQuadMaxPanels);
+          kUnit, inner_tol / (n - 1), kQuadMaxPanels);
       evaluations += r.evaluations;
       for (int c = 0; c < K; ++c) out[size_t(c)] += r.value[size_t(c)];
       err += r.error;
