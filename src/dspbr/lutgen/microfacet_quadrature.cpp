@@ -61,8 +61,9 @@ DSPBR_AVX2_CLONE void azimuth_nodes(const std::array<double, kNodes>& x_i, doubl
   }
 }
 
-// The integrands that take one node at a time (value(v, h, v.h, cos t, jw, sin p, out)) over a
-// panel's nodes; the nodes at sin p = 0 (the panel's ends, where the measure's pole is) add 0.
+// The integrands that take one node at a time (value(v, h, v.h, out), without the measure) over
+// a panel's nodes, times the measure jw / sin p; the nodes at sin p = 0 (the panel's ends, where
+// the measure's pole is) add 0.
 template <class M>
 void values_by_node(const M& m, const Vec3& v, const Polar& p, const AzimuthNodes& n,
                     std::array<QuadValues<M::K>, kNodes>& out) {
@@ -70,8 +71,18 @@ void values_by_node(const M& m, const Vec3& v, const Polar& p, const AzimuthNode
     out[i] = {};
     if (n.sin_p[i] <= 0) continue;
     const Vec3 h{p.sz * n.c[i], p.sz * n.sin_p[i], p.cz};
-    m.value(v, h, n.vh[i], p.cz, n.jw[i], n.sin_p[i], out[i]);
+    m.value(v, h, n.vh[i], out[i]);
+    for (double& x : out[i]) x = x * n.jw[i] / n.sin_p[i];
   }
+}
+
+// Height-correlated G2(v, l) = 1 / (1 + Lambda(v) + Lambda(l)) of a unit l from its cosine z
+// alone (isotropic GGX, Heitz 2014: 1 + Lambda(l) = (|z| + sqrt(z^2 + alpha^2 (1 - z^2))) / (2 |z|)),
+// as the fraction G2 = 2 |z| / d: this is d = |z| (1 + 2 Lambda(v)) + sqrt(z^2 + alpha^2 (1 - z^2))
+// for g = 1 + 2 Lambda(v), a2 = alpha^2 (no cancellation; the square root's argument clamped
+// for |z| > 1 by round-off, so that a vectorised loop can take it whatever the branch).
+inline double g2_denominator(double z, double g, double a2) {
+  return std::abs(z) * g + std::sqrt(z * z + a2 * std::max(0.0, 1.0 - z * z));
 }
 
 // GGX polar variable w (header): cos t = w / sqrt(w^2 + alpha^2 (1 - w^2)) without cancellation
@@ -94,29 +105,39 @@ constexpr std::array<double, 3> kLayer = {1.0 / 16.0, 0.5, 4.0};
 struct GgxIntegrand {
   static constexpr int K = 2, kSplits = 4;
   double mu, sv, alpha;
-  GgxDistribution ggx;
   double lambda_v;
   GgxIntegrand(double mu_, double alpha_)
-      : mu(mu_), sv(std::sqrt(std::max(0.0, 1.0 - mu_ * mu_))), alpha(alpha_), ggx(alpha_, alpha_),
-        lambda_v(ggx.Lambda(Vec3{sv, 0.0, mu_})) {}
+      : mu(mu_), sv(std::sqrt(std::max(0.0, 1.0 - mu_ * mu_))), alpha(alpha_),
+        lambda_v(GgxDistribution(alpha_, alpha_).Lambda(Vec3{sv, 0.0, mu_})) {}
   Polar polar(double w) const { return ggx_polar(alpha, w); }
   // The reflection's horizon, then its layers.
   double split(double cz, int k) const {
     return reflection_threshold(mu, cz, k == 0 ? 0.0 : kLayer[size_t(k - 1)] * alpha);
   }
   void breaks(std::vector<double>&) const {}
-  void values(const Vec3& v, const Polar& p, const AzimuthNodes& n, std::array<QuadValues<K>, kNodes>& out) const {
-    values_by_node(*this, v, p, n, out);
-  }
-  void value(const Vec3& v, const Vec3& h, double vh, double cz, double jw, double sin_p, QuadValues<K>& out) const {
-    const Vec3 l = reflect(v, h);
-    if (vh <= 0 || l.z <= 0) return;  // round-off at a piece's end
-    const double w = jw * vh / ((1.0 + lambda_v + ggx.Lambda(l)) * mu * cz * sin_p);
-    const double m = 1.0 - vh, m2 = m * m;
-    out[0] += w;
-    out[1] += w * (m2 * m2 * m);
-  }
+  void values(const Vec3&, const Polar& p, const AzimuthNodes& n, std::array<QuadValues<K>, kNodes>& out) const;
 };
+
+// GgxIntegrand at one azimuth panel's nodes, vectorised as glass_values (below): l.z = 2 (v.h)
+// cos t - mu (reflect(v, h).z), the measure jw / sin p and G2 over one division; 0 where v.h <= 0
+// or l.z <= 0 (round-off at a piece's end) and at sin p = 0.
+DSPBR_AVX2_CLONE void ggx_values(const AzimuthNodes& n, double mu, double cz, double alpha, double lambda_v,
+                                 std::array<QuadValues<2>, kNodes>& out) {
+  const double a2 = alpha * alpha, g = 1.0 + 2.0 * lambda_v;
+  for (size_t i = 0; i < size_t(kNodes); ++i) {
+    const double vh = n.vh[i], lz = 2.0 * vh * cz - mu;
+    const double live = (vh > 0 ? 1.0 : 0.0) * (lz > 0 ? 1.0 : 0.0) * (n.sin_p[i] > 0 ? 1.0 : 0.0);
+    const double den = live * (g2_denominator(lz, g, a2) * mu * cz * n.sin_p[i]) + (1.0 - live);
+    const double w = live * (n.jw[i] * vh * 2.0 * lz / den), m = 1.0 - vh, m2 = m * m;
+    out[i][0] = w;
+    out[i][1] = w * (m2 * m2 * m);
+  }
+}
+
+void GgxIntegrand::values(const Vec3&, const Polar& p, const AzimuthNodes& n,
+                          std::array<QuadValues<K>, kNodes>& out) const {
+  ggx_values(n, mu, p.cz, alpha, lambda_v, out);
+}
 
 // The glass integrand (GlassIntegrand, below) at one azimuth panel's nodes: [F_d G2(v, l_r) +
 // (1 - F_d) G2(v, l_t)] v.h / (mu cos t) times the measure jw / sin p, the two G2 fractions and the
@@ -141,12 +162,11 @@ DSPBR_AVX2_CLONE void glass_values(const AzimuthNodes& n, double mu, double cz, 
     lr_z[i] = 2.0 * vh * cz - mu;
     lt_z[i] = -eta * mu + (eta * vh - cos_t) * cz;
   }
-  // G2 = 2 |z| / d (above), both square roots taken whatever the branch.
+  // G2 = 2 |z| / d (g2_denominator), both square roots taken whatever the branch.
   std::array<double, kNodes> d_r, d_t;
   for (size_t i = 0; i < size_t(kNodes); ++i) {
-    const double r = lr_z[i], t = lt_z[i];
-    d_r[i] = r * g + std::sqrt(r * r + a2 * std::max(0.0, 1.0 - r * r));
-    d_t[i] = -t * g + std::sqrt(t * t + a2 * std::max(0.0, 1.0 - t * t));
+    d_r[i] = g2_denominator(lr_z[i], g, a2);
+    d_t[i] = g2_denominator(lt_z[i], g, a2);
   }
   for (size_t i = 0; i < size_t(kNodes); ++i) {
     // 0/1 weights, not selects (which stop the vectoriser; the blends are exact). Under total
@@ -197,10 +217,7 @@ struct GlassIntegrand {
     }
   }
   void breaks(std::vector<double>&) const {}
-  // Height-correlated G2(v, l) = 1 / (1 + Lambda(v) + Lambda(l)) of a unit l from its cosine z
-  // alone (isotropic GGX, Heitz 2014: 1 + Lambda(l) = (|z| + sqrt(z^2 + alpha^2 (1 - z^2))) / (2 |z|)),
-  // as the fraction G2 = 2 |z| / d, d = |z| (1 + 2 Lambda(v)) + sqrt(z^2 + alpha^2 (1 - z^2)) (no
-  // cancellation). G2 needs nothing else of l_r and l_t.
+  // G2 needs nothing of l_r and l_t but their z components (g2_denominator).
   // Only the z components of l_r and l_t enter (their horizons and G2), in closed form:
   // reflect(v, h).z = 2 (v.h) h.z - mu; the refraction (Walter et al. 2007, eq. 40, as refract_dir)
   // l_t = -eta v + (eta v.h - cos_t) h, cos_t = sqrt(1 - eta^2 (1 - v.h^2)), none under total
@@ -230,11 +247,10 @@ struct SheenIntegrand {
   void breaks(std::vector<double>& b) const {
     for (double k : {1.0, 3.0, 9.0}) b.push_back(k * std::sqrt(alpha_b));
   }
-  void value(const Vec3& v, const Vec3& h, double vh, double, double jw, double sin_p, QuadValues<K>& out) const {
+  void value(const Vec3& v, const Vec3& h, double vh, QuadValues<K>& out) const {
     const Vec3 l = reflect(v, h);
     if (vh <= 0 || l.z <= 0) return;
-    out[0] += (ash ? sheen_brdf_ash(v, l, alpha_b) : sheen_brdf(v, l, alpha_b, lambda, lambda_v)) * l.z * 4.0 * vh * jw /
-              sin_p;
+    out[0] += (ash ? sheen_brdf_ash(v, l, alpha_b) : sheen_brdf(v, l, alpha_b, lambda, lambda_v)) * l.z * 4.0 * vh;
   }
 };
 
