@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include <boost/math/tools/toms748_solve.hpp>
+
 #include "dspbr/constants.h"
 #include "dspbr/ggx.h"
 #include "dspbr/sheen.h"
@@ -17,12 +19,13 @@ namespace {
 const std::vector<double> kUnit = {0.0, 1.0};
 // Share of the tolerance left to the azimuthal integrals (the rest to the polar one).
 constexpr double kInnerShare = 0.1;
-// Polar scan for kinks, then bisection to double precision: kScan points on [0, 1] and, below
-// the first, kScanGraded points in geometric progression from kScanLo (the GGX features sit at
-// w ~ alpha, down to 1e-6).
+// Polar scan for kinks, then a bracketing root finder to kRootBits bits (4% of a table run less
+// than 52 bisections, measured 2026-12-04): kScan points on [0, 1] and, below the first,
+// kScanGraded points in geometric progression from kScanLo (the GGX features sit at w ~ alpha,
+// down to 1e-6).
 constexpr int kScan = 32, kScanGraded = 48;
 constexpr double kScanLo = 1e-9;
-constexpr int kBisections = 52;
+constexpr int kRootBits = 50, kRootIterations = 100;
 // A threshold that does not exist at this polar angle (below every v.h).
 constexpr double kAbsent = -2.0;
 
@@ -318,9 +321,12 @@ QuadResult<M::K> integrate_normals(const M& m, double tolerance) {
   std::vector<double> breaks = {0.0, 1.0};
   m.breaks(breaks);
   std::array<double, 2 * kSplits> prev{}, cur{};
-  std::vector<double> scan;
-  for (int i = 0; i < kScanGraded; ++i) scan.push_back(kScanLo * std::pow(1.0 / (kScan * kScanLo), double(i) / kScanGraded));
-  for (int i = 1; i <= kScan; ++i) scan.push_back(double(i) / kScan);
+  static const std::vector<double> scan = [] {
+    std::vector<double> x;
+    for (int i = 0; i < kScanGraded; ++i) x.push_back(kScanLo * std::pow(1.0 / (kScan * kScanLo), double(i) / kScanGraded));
+    for (int i = 1; i <= kScan; ++i) x.push_back(double(i) / kScan);
+    return x;
+  }();
   double s_prev = scan[0];
   gaps(s_prev, prev);
   for (size_t i = 1; i < scan.size(); ++i) {
@@ -328,12 +334,13 @@ QuadResult<M::K> integrate_normals(const M& m, double tolerance) {
     gaps(s, cur);
     for (size_t k = 0; k < cur.size(); ++k) {
       if ((prev[k] < 0) == (cur[k] < 0)) continue;
-      double lo = s_prev, hi = s;
-      for (int it = 0; it < kBisections; ++it) {
-        const double x = 0.5 * (lo + hi);
-        ((gap(x, int(k)) < 0) == (prev[k] < 0) ? lo : hi) = x;
-      }
-      breaks.push_back(0.5 * (lo + hi));
+      // TOMS 748 (Alefeld, Potra and Shi 1995): it keeps a bracket, so a jump of the split (a
+      // layer that vanishes) is found as a root is.
+      boost::uintmax_t iterations = kRootIterations;
+      const std::pair<double, double> root = boost::math::tools::toms748_solve(
+          [&](double x) { return gap(x, int(k)); }, s_prev, s, prev[k], cur[k],
+          boost::math::tools::eps_tolerance<double>(kRootBits), iterations);
+      breaks.push_back(0.5 * (root.first + root.second));
     }
     prev = cur;
     s_prev = s;

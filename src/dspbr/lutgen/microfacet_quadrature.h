@@ -17,7 +17,7 @@
 // form, below). The azimuth is split where v.h crosses a threshold and each piece integrated with
 // the smoothstep substitution (square-root behaviour at its ends, e.g. Fresnel at the TIR edge);
 // the polar variable is split where a piece appears or vanishes (a threshold meets v.h at p = 0 or
-// p = pi: a kink of the azimuthal integral; scan and bisection). Both levels are adaptive
+// p = pi: a kink of the azimuthal integral; a scan, then a root finder). Both levels are adaptive
 // Gauss-Kronrod (gauss_kronrod.h); the error stated is the sum of the embedded estimates.
 #pragma once
 #include <algorithm>
