@@ -37,7 +37,7 @@ SMALL = {
     "dspbr lut --out luts": (TINY_LUT, "every table of both layouts: about 20 s, and scripts/main.sh runs it"),
     "dspbr lut --out DIR --size GGX_E=64x64 --size Base_E=16x32x32 --grid endpoint":
         ("--layout published --tables GGX_E,Base_E --target-error 1e-3", "every table at those sizes: minutes"),
-    "dspbr lut --out DIR --formats exr --half": (TINY_LUT, "every table: about 20 s"),
+    "dspbr lut --out DIR --formats exr --half": (TINY_LUT, "every table: about 15 s"),
     "dspbr lut --out DIR --integrator mc --samples 65536":
         ("--layout published --tables GGX_E --size GGX_E=4x4", "every table by plain MC: minutes"),
     "dspbr lut --out DIR --scene scene.gltf --transmission-compensation":
@@ -45,13 +45,13 @@ SMALL = {
     "dspbr lut --out DIR --scene scene.gltf": ("--layout published --target-error 1e-3", "the scene's tables: a minute"),
     "dspbr lut --out DIR --tables Glass_E,Glass_inv_E,Glass_E_avg,Glass_inv_E_avg":
         ("--size Glass_E=2x2x2 --size Glass_inv_E=2x2x2 --size Glass_E_avg=2x2 --size Glass_inv_E_avg=2x2 "
-         "--target-error 1e-3", "the four glass tables: about 12 s"),
+         "--target-error 1e-3", "the four glass tables: about 8 s"),
     "dspbr lut --out DIR --tables GGX_E,Sheen_E": ("--size GGX_E=4x4 --size Sheen_E=4x4", "seconds instead of 10 s"),
     "dspbr lut --bench": (None, "the whole study: minutes (its two halves are run below with small settings)"),
     "dspbr lut --bench-lookups": ("--bench-points 10", "400 points: about 13 s"),
-    "dspbr lut --bench-integrators --bench-csv study.csv": (None, "the integrators' study: about 45 s"),
-    "dspbr lut --out DIR --layout renderer": (None, "9 s; the README's test runs the same command"),
-    "dspbr lut --out DIR --quiet": (TINY_LUT, "every table: about 20 s"),
+    "dspbr lut --bench-integrators --bench-csv study.csv": (None, "the integrators' study: about 42 s"),
+    "dspbr lut --out DIR --layout renderer": (None, "7 s; the README's test runs the same command"),
+    "dspbr lut --out DIR --quiet": (TINY_LUT, "every table: about 15 s"),
     "dspbr validate --out report": ("--quick --no-html", "the full run: minutes"),
     "dspbr validate --threads 1 --out DIR": ("--quick --no-html", "the full run: minutes"),
     "dspbr validate --quick --out DIR": ("--no-html", "the HTML report is made by the README's test of the same run"),
