@@ -220,8 +220,7 @@ struct GlassIntegrand {
     }
   }
   void breaks(std::vector<double>&) const {}
-  // G2 needs nothing of l_r and l_t but their z components (g2_denominator).
-  // Only the z components of l_r and l_t enter (their horizons and G2), in closed form:
+  // Only the z components of l_r and l_t enter (their horizons and G2, g2_denominator), in closed form:
   // reflect(v, h).z = 2 (v.h) h.z - mu; the refraction (Walter et al. 2007, eq. 40, as refract_dir)
   // l_t = -eta v + (eta v.h - cos_t) h, cos_t = sqrt(1 - eta^2 (1 - v.h^2)), none under total
   // internal reflection. At eta = 1: l_t = -v, the limit eta -> 1+. F_d from inside is Schlick at
