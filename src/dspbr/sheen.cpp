@@ -89,10 +89,14 @@ double sheen_lambda_exact(double cos_theta, double alpha_b) {
   return total / mu - 1.0;
 }
 
-double sheen_g2(const Vec3& v, const Vec3& l, const Vec3& h, double alpha_b, const SheenLambdaFit& fit) {
+double sheen_g2(const Vec3& v, const Vec3& l, const Vec3& h, double lambda_v, double lambda_l) {
   if (dot(v, h) <= 0 || dot(l, h) <= 0) return 0.0;
+  return 1.0 / (1.0 + lambda_v + lambda_l);
+}
+
+double sheen_g2(const Vec3& v, const Vec3& l, const Vec3& h, double alpha_b, const SheenLambdaFit& fit) {
   const SheenLambda lambda(alpha_b, fit);
-  return 1.0 / (1.0 + lambda(v.z) + lambda(l.z));
+  return sheen_g2(v, l, h, lambda(v.z), lambda(l.z));
 }
 
 double sheen_brdf(const Vec3& v, const Vec3& l, double alpha_b, const SheenLambdaFit& fit) {
@@ -104,8 +108,7 @@ double sheen_brdf(const Vec3& v, const Vec3& l, double alpha_b, const SheenLambd
 double sheen_brdf(const Vec3& v, const Vec3& l, double alpha_b, const SheenLambda& lambda, double lambda_v) {
   if (v.z <= 0 || l.z <= 0) return 0.0;
   const Vec3 h = normalize(v + l);
-  if (dot(v, h) <= 0 || dot(l, h) <= 0) return 0.0;  // G_b's chi+ terms
-  return charlie_d(h.z, alpha_b) * (1.0 / (1.0 + lambda_v + lambda(l.z))) / (4.0 * v.z * l.z);
+  return charlie_d(h.z, alpha_b) * sheen_g2(v, l, h, lambda_v, lambda(l.z)) / (4.0 * v.z * l.z);
 }
 
 double sheen_brdf_ash(const Vec3& v, const Vec3& l, double alpha_b) {

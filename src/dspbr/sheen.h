@@ -64,7 +64,9 @@ inline double sheen_lambda(double cos_theta, double alpha_b) {
 // "total / cos - 1" limits the absolute accuracy to ~1e-14.
 double sheen_lambda_exact(double cos_theta, double alpha_b);
 
-// Sheen shadowing-masking G_b = chi+(v.h) chi+(l.h) / (1 + Lambda(v.n) + Lambda(l.n)).
+// Sheen shadowing-masking G_b = chi+(v.h) chi+(l.h) / (1 + Lambda(v.n) + Lambda(l.n)), from the
+// two Lambdas, or with them from the fit.
+double sheen_g2(const Vec3& v, const Vec3& l, const Vec3& h, double lambda_v, double lambda_l);
 double sheen_g2(const Vec3& v, const Vec3& l, const Vec3& h, double alpha_b, const SheenLambdaFit& fit);
 
 // Main sheen BRDF M_b = D_b G_b / (4 |v.n| |l.n|) (spec "Sheen"), without the sheen colour.
