@@ -198,6 +198,23 @@ Rgb albedo_quadrature(const MaterialBsdf& b, const Vec3& v, int mu_panels, int p
   return sum;
 }
 
+// The material with every number rounded to single precision: what an implementation in float
+// reads (the tolerance's input part, docs/conformance.md "Tolerances").
+Material float_rounded(Material m) {
+  auto f = [](double& x) { x = double(float(x)); };
+  auto c = [&](Rgb& x) { f(x.r), f(x.g), f(x.b); };
+  auto v = [&](Vec3& x) { f(x.x), f(x.y), f(x.z); };
+  c(m.albedo), f(m.metallic), f(m.roughness), f(m.anisotropy), f(m.anisotropyRotation), v(m.normal);
+  v(m.displacement), f(m.translucency), c(m.translucencyColor), f(m.transparency), f(m.cutoutOpacity);
+  f(m.specular), c(m.specularTint), f(m.thinFilm), f(m.thinFilmThickness), f(m.thinFilmIor), c(m.sheenColor);
+  f(m.sheenRoughness), f(m.flakeCoverage), c(m.flakeColor), f(m.flakeSize), f(m.flakeRoughness), f(m.flipFlop);
+  c(m.flipFlopColor), f(m.clearcoat), f(m.clearcoatRoughness), v(m.clearcoatNormal), c(m.emissionColor);
+  f(m.emissionValue), f(m.ior), f(m.abbeNumber), c(m.attenuationColor), f(m.attenuationDistance);
+  c(m.subsurfaceColor), f(m.subsurfaceAnisotropy);
+  return m;
+}
+Vec3 float_rounded(const Vec3& w) { return {double(float(w.x)), double(float(w.y)), double(float(w.z))}; }
+
 // The vectors of one material (its index seeds its directions).
 std::vector<Vector> case_vectors(const Case& c, std::size_t index, const GenerateSettings& s) {
   Pcg32 rng(s.seed, index);
@@ -215,6 +232,7 @@ std::vector<Vector> case_vectors(const Case& c, std::size_t index, const Generat
   const MaterialBsdf ref(m, LutSet::builtin(), opt, mask);
   std::vector<MaterialBsdf> perturbed;
   for (const LutSet& t : perturbed_tables()) perturbed.emplace_back(m, t, opt, mask);
+  const MaterialBsdf ref_float(float_rounded(m), LutSet::builtin(), opt, mask);
   const bool thin_film = (mask & kThinFilm) != 0;
   const double rel = kFloatRelative + (thin_film ? kThinFilmRelative : 0.0);
 
@@ -233,6 +251,12 @@ std::vector<Vector> case_vectors(const Case& c, std::size_t index, const Generat
       df = std::max(df, max_channel_difference(p.eval(x.v, x.l) * std::abs(x.l.z), x.f_cos));
       dp = std::max(dp, std::abs(p.pdf(x.v, x.l) - x.pdf));
     }
+    // Inputs in float: the change of f cos and pdf when the material and the directions are
+    // rounded to single precision (large only where the configuration is ill-conditioned, e.g. a
+    // transmission at grazing through an IOR near 1).
+    const Vec3 vf = float_rounded(x.v), lf = float_rounded(x.l);
+    df += max_channel_difference(ref_float.eval(vf, lf) * std::abs(lf.z), x.f_cos);
+    dp += std::abs(ref_float.pdf(vf, lf) - x.pdf);
     x.tolerance = {kFloatAbsolute + 2 * df, rel};
     x.pdf_tolerance = {kFloatAbsolute + 2 * dp, rel};
     if (mask & kEmission) {

@@ -1,0 +1,19 @@
+// The DSPBR 2025x BSDF for GLSL 450 (Vulkan, OpenGL 4.5): the shader library's body
+// (shaders/dspbr/*.glsl, the same source the C++ and HLSL entries compile). The including shader
+// enables `#extension GL_GOOGLE_include_directive : require` and puts this folder and the
+// generated lookups' folder on the include path; the tables are textures when
+// DSPBR_LOOKUP_TEXTURES is defined (bindings: dspbr_lookup.glsl), constant arrays otherwise.
+// Usage: docs/renderer.md.
+#ifndef DSPBR_GLSL_INCLUDED
+#define DSPBR_GLSL_INCLUDED
+#include "dspbr_lookup.glsl"
+#include "dspbr/interop.glsl"
+#include "dspbr/math.glsl"
+#include "dspbr/material.glsl"
+#include "dspbr/ggx.glsl"
+#include "dspbr/sheen.glsl"
+#include "dspbr/sampling.glsl"
+#include "dspbr/prepare.glsl"
+#include "dspbr/lobes.glsl"
+#include "dspbr/bsdf.glsl"
+#endif

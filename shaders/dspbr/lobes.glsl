@@ -1,0 +1,154 @@
+// The lobes of a prepared BSDF, each in its own frame with v on its front (v.z > 0 of the side's
+// coordinates; bsdf.glsl mirrors a viewer on the back): eval (f without the cosine), pdf, a
+// direction sample and the selection weight (a rough estimate of the lobe's albedo at v), as the
+// reference's lobes compute them (src/dspbr/bsdf/*.cpp). eta_i: the IOR on v's side, eta_o: the
+// other side (they differ from 1 only for the volumetric transmission seen from inside).
+
+// ---- Fresnel factors of the core (spec "Putting It All Together": ThinCore / VolumetricCore) ----
+// M_r's factor. Thin-walled: F(rho_s,r,0, rho_s,r,90); volumetric: m F(rho, 1) + (1-m)(1-t) s
+// F(F_0 rho_s, 1) + (1-m) t s F_d(F_0 rho_s, 1).
+DSPBR_FN vec3 dspbr_core_reflection_factor(DspbrBsdf b, float c, float eta_i, float eta_o) {
+  if (b.thin_walled) return dspbr_schlick(c, b.rho_sr0, b.rho_sr90);
+  vec3 one = dspbr_splat(1.0f);
+  vec3 f = dspbr_splat(0.0f);
+  if (b.w_metal > 0.0f) f = dspbr_schlick(c, b.rho, one) * b.w_metal;
+  if (b.w_opaque > 0.0f) f += dspbr_schlick(c, b.f0_diel, one) * (b.w_opaque * b.specular);
+  if (b.w_transp > 0.0f) f += dspbr_schlick_d(c, b.f0_diel, one, eta_i, eta_o) * (b.w_transp * b.specular);
+  return f;
+}
+// M_t' of ThinCore: rho_t (1 - s F(F_0 rho_s, 1)); M_t of VolumetricCore: rho_t (1 - s F_d(F_0 rho_s, 1)).
+DSPBR_FN vec3 dspbr_core_transmission_factor(DspbrBsdf b, float c, float eta_i, float eta_o) {
+  vec3 one = dspbr_splat(1.0f);
+  vec3 f = b.thin_walled ? dspbr_schlick(c, b.f0_diel, one) : dspbr_schlick_d(c, b.f0_diel, one, eta_i, eta_o);
+  return b.rho_t * (one - f * b.specular);
+}
+// The factor of a lobe built on reflection (core reflection, thin transmission, clearcoat).
+DSPBR_FN vec3 dspbr_lobe_factor(DspbrBsdf b, int k, float c, float eta_i, float eta_o) {
+  if (k == DSPBR_LOBE_CLEARCOAT) return dspbr_splat(b.clearcoat * dspbr_clearcoat_fresnel(c));
+  if (k == DSPBR_LOBE_TRANSMISSION) return dspbr_core_transmission_factor(b, c, eta_i, eta_o);
+  return dspbr_core_reflection_factor(b, c, eta_i, eta_o);
+}
+DSPBR_FN DspbrGgx dspbr_lobe_ggx(DspbrBsdf b, int k) { return k == DSPBR_LOBE_CLEARCOAT ? b.coat_ggx : b.ggx; }
+
+// ---- Table reads ----
+// 1 - E_m(|cos|; r_uv) and 1 - E(|cos|; r_uv, f0_max), clamped to [0, 1].
+DSPBR_FN float dspbr_missing_m(DspbrBsdf b, float c) { return clamp(1.0f - dspbr_ggx_E(abs(c), b.r_uv), 0.0f, 1.0f); }
+DSPBR_FN float dspbr_missing_base(DspbrBsdf b, float c) {
+  return clamp(1.0f - dspbr_base_E(abs(c), b.r_uv, b.f0_max), 0.0f, 1.0f);
+}
+// E_b(|cos|; alpha_b) of the sheen model, clamped to [0, 1].
+DSPBR_FN float dspbr_sheen_albedo(DspbrBsdf b, float c) {
+  float e = b.sheen_model == DSPBR_SHEEN_ASH ? dspbr_sheen_ash_E(abs(c), b.alpha_b) : dspbr_sheen_E(abs(c), b.alpha_b);
+  return clamp(e, 0.0f, 1.0f);
+}
+
+// ---- Microfacet reflection (core, clearcoat) and thin transmission (the reflection mirrored) ----
+DSPBR_FN vec3 dspbr_reflection_eval(DspbrBsdf b, int k, vec3 v, vec3 l, float eta_i, float eta_o) {
+  DspbrGgx g = dspbr_lobe_ggx(b, k);
+  if (g.mirror || !(v.z > 0.0f) || !(l.z > 0.0f)) return dspbr_splat(0.0f);
+  vec3 h = normalize(v + l);
+  return dspbr_lobe_factor(b, k, dot(v, h), eta_i, eta_o) * dspbr_ggx_M_r(g, v, l, h);
+}
+// Selection weight of a lobe built on reflection: the factor at v.n and at v.n / 2.
+DSPBR_FN float dspbr_reflection_weight(DspbrBsdf b, int k, vec3 v, float eta_i, float eta_o) {
+  if (!(v.z > 0.0f)) return 0.0f;
+  return max(0.0f, 0.5f * (dspbr_mean(dspbr_lobe_factor(b, k, v.z, eta_i, eta_o)) +
+                           dspbr_mean(dspbr_lobe_factor(b, k, 0.5f * v.z, eta_i, eta_o))));
+}
+
+// ---- Volumetric transmission M_t (spec "Dielectric BSDF for Transparent Surfaces"; Walter 2007) ----
+// The refraction half vector h_t = -(eta_i v + eta_o l) / |...|, turned towards +z; false unless v
+// and l are on the two sides of the microfacet. denom = eta_i v.h + eta_o l.h, which is -|eta_i v +
+// eta_o l| (or +|...| once h is turned): computed from the sum's length, not as the difference of
+// the two dot products (near eta = 1 they cancel, and float would lose 1e-5 of it).
+DSPBR_FN bool dspbr_refraction_half(vec3 v, vec3 l, float eta_i, float eta_o, DSPBR_OUT(vec3) h, DSPBR_OUT(float) denom) {
+  vec3 s = -(v * eta_i + l * eta_o);
+  float len = length(s);
+  h = vec3(0.0f, 0.0f, 1.0f);
+  denom = 0.0f;
+  if (!(len > 0.0f)) return false;
+  h = s / len;
+  denom = -len;
+  if (h.z < 0.0f) {
+    h = -h;
+    denom = len;
+  }
+  return h.z > 0.0f && dot(v, h) > 0.0f && dot(l, h) < 0.0f;
+}
+// M_t = |l.h| |v.h| / (|l.n| |v.n|) eta_o^2 D(h) G2 / (eta_i v.h + eta_o l.h)^2, times the factor at v.h.
+DSPBR_FN vec3 dspbr_volumetric_eval(DspbrBsdf b, vec3 v, vec3 l, float eta_i, float eta_o) {
+  if (dspbr_is_delta_lobe(b, DSPBR_LOBE_TRANSMISSION) || !(v.z > 0.0f) || !(l.z < 0.0f)) return dspbr_splat(0.0f);
+  vec3 h;
+  float denom;
+  if (!dspbr_refraction_half(v, l, eta_i, eta_o, h, denom)) return dspbr_splat(0.0f);
+  float vh = dot(v, h), lh = dot(l, h);
+  float g = dspbr_ggx_G2(b.ggx, v, l);
+  float mt = abs(lh) * abs(vh) / (abs(l.z) * abs(v.z)) * eta_o * eta_o * dspbr_ggx_D(b.ggx, h) * g / (denom * denom);
+  return dspbr_core_transmission_factor(b, vh, eta_i, eta_o) * mt;
+}
+// D_v(h_t) times |dh/dl| = eta_o^2 |l.h| / (eta_i v.h + eta_o l.h)^2 (Walter 2007 eq. 17).
+DSPBR_FN float dspbr_volumetric_pdf(DspbrBsdf b, vec3 v, vec3 l, float eta_i, float eta_o) {
+  if (dspbr_is_delta_lobe(b, DSPBR_LOBE_TRANSMISSION) || !(v.z > 0.0f)) return 0.0f;
+  vec3 h;
+  float denom;
+  if (!dspbr_refraction_half(v, l, eta_i, eta_o, h, denom)) return 0.0f;
+  float lh = dot(l, h);
+  return dspbr_ggx_D_visible(b.ggx, v, h) * eta_o * eta_o * abs(lh) / (denom * denom);
+}
+DSPBR_FN float dspbr_volumetric_weight(DspbrBsdf b, vec3 v, float eta_i, float eta_o) {
+  if (!(v.z > 0.0f)) return 0.0f;
+  // A smooth lobe under total internal reflection transmits nothing.
+  float eta = eta_i / eta_o;
+  if (dspbr_is_delta_lobe(b, DSPBR_LOBE_TRANSMISSION) && eta * eta * (1.0f - v.z * v.z) >= 1.0f &&
+      abs(eta - 1.0f) >= dspbr_index_matched)
+    return 0.0f;
+  return max(0.0f, dspbr_mean(dspbr_core_transmission_factor(b, v.z, eta_i, eta_o)));
+}
+
+// ---- Multiple scattering M_r,ms F_ms (spec eq. multiscatter; Kulla & Conty 2017) ----
+DSPBR_FN vec3 dspbr_multiscatter_eval(DspbrBsdf b, vec3 v, vec3 l) {
+  if (!(v.z > 0.0f) || !(l.z > 0.0f) || b.ms_inv_norm == 0.0f) return dspbr_splat(0.0f);
+  return b.f_ms * (dspbr_missing_m(b, v.z) * dspbr_missing_m(b, l.z) * b.ms_inv_norm);
+}
+DSPBR_FN float dspbr_multiscatter_weight(DspbrBsdf b, vec3 v) {
+  if (!(v.z > 0.0f) || b.ms_inv_norm == 0.0f) return 0.0f;
+  return max(0.0f, dspbr_mean(b.f_ms)) * dspbr_missing_m(b, v.z);
+}
+
+// ---- Diffuse base rho_d [B_u (1 - s) + s B_c] with translucency (spec eqs. diffuse, b_c) ----
+DSPBR_FN vec3 dspbr_diffuse_eval(DspbrBsdf b, vec3 v, vec3 l) {
+  if (!(v.z > 0.0f) || l.z == 0.0f) return dspbr_splat(0.0f);
+  float t = l.z > 0.0f ? 1.0f - b.translucency : b.translucency;  // T(v, l; l)
+  if (t == 0.0f) return dspbr_splat(0.0f);
+  float b_u = t * dspbr_inv_pi;
+  float b_c = dspbr_missing_base(b, v.z) * dspbr_missing_base(b, l.z) * b.diffuse_inv_norm * t;
+  return b.rho_d * (b_u * (1.0f - b.specular) + b.specular * b_c);
+}
+DSPBR_FN float dspbr_diffuse_pdf(DspbrBsdf b, vec3 v, vec3 l) {
+  if (!(v.z > 0.0f)) return 0.0f;
+  return (1.0f - b.translucency) * dspbr_cosine_hemisphere_pdf(l) + b.translucency * dspbr_cosine_hemisphere_pdf(-l);
+}
+DSPBR_FN float dspbr_diffuse_weight(DspbrBsdf b, vec3 v) {
+  if (!(v.z > 0.0f)) return 0.0f;
+  float s = b.specular;
+  float w = (1.0f - s) + s * dspbr_missing_base(b, v.z) * (b.diffuse_inv_norm > 0.0f ? 1.0f : 0.0f);
+  return max(0.0f, dspbr_mean(b.rho_d) * w);
+}
+
+// ---- Sheen M_b rho_b (spec "Sheen"), sampled uniformly over the hemisphere ----
+DSPBR_FN vec3 dspbr_sheen_eval(DspbrBsdf b, vec3 v, vec3 l) {
+  if (!(v.z > 0.0f) || !(l.z > 0.0f)) return dspbr_splat(0.0f);
+  float mb = b.sheen_model == DSPBR_SHEEN_ASH ? dspbr_sheen_brdf_ash(v, l, b.alpha_b)
+                                              : dspbr_sheen_brdf(v, l, b.alpha_b, b.sheen_lambda);
+  return b.sheen_color * mb;
+}
+DSPBR_FN float dspbr_sheen_weight(DspbrBsdf b, vec3 v) {
+  if (!(v.z > 0.0f)) return 0.0f;
+  return max(0.0f, dspbr_mean(b.sheen_color)) * max(dspbr_sheen_albedo(b, v.z), 1e-3f);
+}
+// ShinyCore's factor on the layers below: min(1 - rho_hat E_b(v.n), 1 - rho_hat E_b(l.n)).
+DSPBR_FN float dspbr_sheen_layer(DspbrBsdf b, float cos_v, float cos_l) {
+  float rho_hat = dspbr_max3(b.sheen_color);
+  return clamp(min(1.0f - rho_hat * dspbr_sheen_albedo(b, cos_v), 1.0f - rho_hat * dspbr_sheen_albedo(b, cos_l)), 0.0f,
+               1.0f);
+}

@@ -1,0 +1,93 @@
+// Small helpers of the shader library (common subset: shaders/README.md): constants, colour
+// reductions, Schlick's Fresnel and its variants (spec "Fresnel", "Energy Preservation"), frames.
+
+DSPBR_CONST float dspbr_pi = 3.14159265358979f;
+DSPBR_CONST float dspbr_inv_pi = 0.318309886183791f;
+
+DSPBR_FN vec3 dspbr_splat(float x) { return vec3(x, x, x); }
+DSPBR_FN float dspbr_mean(vec3 c) { return (c.x + c.y + c.z) * (1.0f / 3.0f); }
+DSPBR_FN float dspbr_max3(vec3 c) { return max(c.x, max(c.y, c.z)); }
+DSPBR_FN vec3 dspbr_max3v(vec3 a, vec3 b) { return vec3(max(a.x, b.x), max(a.y, b.y), max(a.z, b.z)); }
+// x when it is a finite number, else d (NaN and Inf inputs get a defined value).
+DSPBR_FN float dspbr_finite_or(float x, float d) { return (isnan(x) || isinf(x)) ? d : x; }
+// x clamped to [lo, hi]; NaN gives lo (a comparison with NaN is false).
+DSPBR_FN float dspbr_clamp_nan(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
+
+// Schlick's weight (1 - |cos|)^5 (spec "Fresnel").
+DSPBR_FN float dspbr_schlick_weight(float c) {
+  float m = 1.0f - min(1.0f, abs(c));
+  float m2 = m * m;
+  return m2 * m2 * m;
+}
+// F(cos; f0, f90) = f0 + (f90 - f0) (1 - |cos|)^5 (spec "Fresnel").
+DSPBR_FN vec3 dspbr_schlick(float c, vec3 f0, vec3 f90) { return f0 + (f90 - f0) * dspbr_schlick_weight(c); }
+DSPBR_FN float dspbr_schlick1(float c, float f0, float f90) { return f0 + (f90 - f0) * dspbr_schlick_weight(c); }
+// F_0 = ((eta_i - eta_o) / (eta_i + eta_o))^2 (spec "Dielectric BSDF for Transparent Surfaces").
+DSPBR_FN float dspbr_f0_from_ior(float eta_i, float eta_o) {
+  float r = (eta_i - eta_o) / (eta_i + eta_o);
+  return r * r;
+}
+// sin^2 of the transmitted angle, Snell's law (spec "Fresnel").
+DSPBR_FN float dspbr_sin2_transmitted(float c, float eta_i, float eta_o) {
+  float e = eta_i / eta_o;
+  return e * e * max(0.0f, 1.0f - c * c);
+}
+// F_d: Schlick on the side of the denser medium, 1 under total internal reflection (spec "Fresnel").
+DSPBR_FN vec3 dspbr_schlick_d(float c, vec3 f0, vec3 f90, float eta_i, float eta_o) {
+  if (eta_o >= eta_i) return dspbr_schlick(c, f0, f90);
+  float s2 = dspbr_sin2_transmitted(c, eta_i, eta_o);
+  if (s2 >= 1.0f) return dspbr_splat(1.0f);
+  return dspbr_schlick(sqrt(1.0f - s2), f0, f90);
+}
+// F_ms per channel (spec eq. multiscatter; dspbr_fresnel_ms of the generated lookups).
+DSPBR_FN vec3 dspbr_fresnel_ms3(vec3 f0, vec3 f90, float e_avg) {
+  return vec3(dspbr_fresnel_ms(f0.x, f90.x, e_avg), dspbr_fresnel_ms(f0.y, f90.y, e_avg),
+              dspbr_fresnel_ms(f0.z, f90.z, e_avg));
+}
+// F_c(cos) = 0.04 + 0.96 (1 - |cos|)^5, the clearcoat's Fresnel (spec "Clearcoat", eta = 1.5).
+DSPBR_FN float dspbr_clearcoat_fresnel(float c) { return dspbr_schlick1(c, 0.04f, 1.0f); }
+
+// An orthonormal frame (t, b, n); local coordinates: t = +x, b = +y, n = +z.
+struct DspbrFrame {
+  vec3 t;
+  vec3 b;
+  vec3 n;
+};
+DSPBR_FN vec3 dspbr_to_local(DspbrFrame f, vec3 w) { return vec3(dot(w, f.t), dot(w, f.b), dot(w, f.n)); }
+DSPBR_FN vec3 dspbr_to_world(DspbrFrame f, vec3 w) { return f.t * w.x + f.b * w.y + f.n * w.z; }
+DSPBR_FN DspbrFrame dspbr_identity_frame() {
+  DspbrFrame f;
+  f.t = vec3(1.0f, 0.0f, 0.0f);
+  f.b = vec3(0.0f, 1.0f, 0.0f);
+  f.n = vec3(0.0f, 0.0f, 1.0f);
+  return f;
+}
+// Frame around a unit normal (Duff et al. 2017, "Building an Orthonormal Basis, Revisited").
+DSPBR_FN DspbrFrame dspbr_frame_from_normal(vec3 n) {
+  float sgn = n.z >= 0.0f ? 1.0f : -1.0f;
+  float a = -1.0f / (sgn + n.z);
+  float b = n.x * n.y * a;
+  DspbrFrame f;
+  f.n = n;
+  f.t = vec3(1.0f + sgn * n.x * n.x * a, sgn * b, -sgn * n.x);
+  f.b = vec3(b, sgn + n.y * n.y * a, -n.y);
+  return f;
+}
+// Frame from a unit normal and a tangent not necessarily orthogonal to it (Gram-Schmidt); a
+// tangent parallel to the normal falls back to dspbr_frame_from_normal.
+DSPBR_FN DspbrFrame dspbr_frame_from_normal_tangent(vec3 n, vec3 tangent) {
+  vec3 t = tangent - n * dot(n, tangent);
+  float len = length(t);
+  if (!(len > 1e-6f)) return dspbr_frame_from_normal(n);
+  DspbrFrame f;
+  f.n = n;
+  f.t = t / len;
+  f.b = cross(n, f.t);
+  return f;
+}
+// A material normal made unit; a zero, NaN or infinite one is +z (the unperturbed normal).
+DSPBR_FN vec3 dspbr_unit_normal(vec3 n) {
+  float len = length(n);
+  if (!(len > 0.0f) || isinf(len)) return vec3(0.0f, 0.0f, 1.0f);
+  return n / len;
+}

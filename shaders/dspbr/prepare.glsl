@@ -1,0 +1,181 @@
+// dspbr_prepare: a material and the renderer's shading frame -> the prepared BSDF, a fixed set of
+// lobes with everything that does not depend on the directions computed once (spec "Putting It
+// All Together"; the reference's lobe assembly, src/dspbr/bsdf/lobe_assembly.cpp). No heap, no
+// recursion: it runs per hit in a path tracer and in a GPU kernel.
+
+// The lobes, in the order of the reference's lobe stack (its sampling order); slot
+// DSPBR_SLOT_PASS is the cut-out's pass-through l = -v.
+DSPBR_CONST int DSPBR_LOBE_CORE_REFLECTION = 0;  // M_r with the core's Fresnel
+DSPBR_CONST int DSPBR_LOBE_MULTISCATTER = 1;     // M_r,ms F_ms
+DSPBR_CONST int DSPBR_LOBE_TRANSMISSION = 2;     // M_t' (thin-walled) or M_t (volumetric)
+DSPBR_CONST int DSPBR_LOBE_DIFFUSE = 3;          // rho_d [B_u (1 - s) + s B_c], translucency
+DSPBR_CONST int DSPBR_LOBE_SHEEN = 4;            // M_b rho_b
+DSPBR_CONST int DSPBR_LOBE_CLEARCOAT = 5;        // M_c c F_c
+DSPBR_CONST int DSPBR_LOBE_COUNT = 6;
+DSPBR_CONST int DSPBR_SLOT_PASS = 6;
+DSPBR_CONST int DSPBR_SLOT_COUNT = 7;
+
+// Sample flags (the reference's LobeFlags).
+DSPBR_CONST uint DSPBR_FLAG_REFLECTION = 1u;
+DSPBR_CONST uint DSPBR_FLAG_TRANSMISSION = 2u;
+DSPBR_CONST uint DSPBR_FLAG_DELTA = 4u;
+DSPBR_CONST uint DSPBR_FLAG_GLOSSY = 8u;
+DSPBR_CONST uint DSPBR_FLAG_DIFFUSE = 16u;
+
+// Sheen models (the spec's Lambda fit, or the alternative visibility).
+DSPBR_CONST int DSPBR_SHEEN_MAIN = 0;
+DSPBR_CONST int DSPBR_SHEEN_ASH = 1;
+
+// What the material does not say: the sheen model, and the object's surface area for
+// emissionMode LUMINOUS_POWER (m^2).
+struct DspbrOptions {
+  int sheen_model;
+  float object_area_m2;
+};
+DSPBR_FN DspbrOptions dspbr_default_options() {
+  DspbrOptions o;
+  o.sheen_model = DSPBR_SHEEN_MAIN;
+  o.object_area_m2 = 1.0f;
+  return o;
+}
+
+// Each present lobe gets at least this fraction of the largest selection weight (the reference's
+// kMinSelectionFraction), and below this 1 - E_avg the compensation lobes vanish (kMinMissingEnergy).
+DSPBR_CONST float dspbr_min_selection = 1e-3f;
+DSPBR_CONST float dspbr_min_missing_energy = 1e-9f;
+// Relative IOR difference below which the interface does not bend light (kIndexMatched).
+DSPBR_CONST float dspbr_index_matched = 1e-7f;
+
+struct DspbrBsdf {
+  DspbrFrame frame;  // the renderer's shading frame (directions in and out are in its space)
+  DspbrFrame core;   // the core frame in frame's local coordinates: material normal, rotated tangent
+  DspbrFrame coat;   // the clearcoat frame (clearcoatNormal)
+  uint lobes;        // bit k: lobe k is present
+  uint delta;        // bit k: lobe k is a Dirac (perfectly smooth)
+  bool thin_walled;
+  float alpha_cut;  // cut-out opacity
+  float clearcoat;  // c
+  float eta;        // ior
+  DspbrGgx ggx;     // the core's anisotropic GGX
+  DspbrGgx coat_ggx;
+  // ThinCore / VolumetricCore weights: m, (1-m)(1-t), (1-m) t; s; l.
+  float w_metal;
+  float w_opaque;
+  float w_transp;
+  float specular;
+  float translucency;
+  vec3 rho;       // albedo
+  vec3 rho_sr0;   // (1-m) F_0 s rho_s + m rho (over the dielectric parts' weight)
+  vec3 rho_sr90;  // (1-m) s + m
+  vec3 rho_t;     // rho (1-m) t
+  vec3 f0_diel;   // F_0 rho_s
+  vec3 rho_d;     // (rho (1-l) + rho_l l) (1-m)(1-t)
+  float r_uv;     // sqrt(r_u r_v): the tables' roughness
+  float f0_max;   // max(F_0 rho_s): the coordinate of E(mu; r, f0)
+  vec3 f_ms;      // F_ms(rho_s,r,0, rho_s,r,90)
+  float ms_inv_norm;       // 1 / (pi (1 - E_m,avg)), 0 in the mirror limit
+  float diffuse_inv_norm;  // 1 / (pi (1 - E_avg(r, f0_max))), 0 when nothing is left
+  vec3 sheen_color;
+  float alpha_b;
+  int sheen_model;
+  DspbrSheenLambda sheen_lambda;
+  vec3 rho_e;  // emitted luminance factor (spec "Emission")
+};
+
+DSPBR_FN bool dspbr_has_lobe(DspbrBsdf b, int k) { return ((b.lobes >> uint(k)) & 1u) != 0u; }
+DSPBR_FN bool dspbr_is_delta_lobe(DspbrBsdf b, int k) { return ((b.delta >> uint(k)) & 1u) != 0u; }
+
+// t = t' cos(beta) - (n x t') sin(beta), beta = 2 pi anisotropyRotation (spec "Tangent Space").
+DSPBR_FN DspbrFrame dspbr_core_frame(DspbrMaterial m) {
+  vec3 n = dspbr_unit_normal(m.normal);
+  DspbrFrame base = dspbr_frame_from_normal_tangent(n, vec3(1.0f, 0.0f, 0.0f));
+  float beta = 2.0f * dspbr_pi * m.anisotropyRotation;
+  DspbrFrame f;
+  f.n = n;
+  f.t = normalize(base.t * cos(beta) - cross(n, base.t) * sin(beta));
+  f.b = cross(n, f.t);
+  return f;
+}
+
+// rho_e of spec "Emission": L_vc / pi (emittance, lx) or L_vc / (pi A) (power, lm), L_vc the colour
+// times the value, or normalised by the colour's luminance (linear sRGB, D65).
+DSPBR_FN vec3 dspbr_emission_rho_e(DspbrMaterial m, DspbrOptions o) {
+  if (!(m.emissionValue > 0.0f)) return dspbr_splat(0.0f);
+  vec3 l_vc = m.emissionColor * m.emissionValue;
+  if (m.emissionEnergyNormalization) {
+    float lum = 0.2126729f * m.emissionColor.x + 0.7151522f * m.emissionColor.y + 0.0721750f * m.emissionColor.z;
+    l_vc = lum > 0.0f ? m.emissionColor * (m.emissionValue / lum) : dspbr_splat(0.0f);
+  }
+  bool power = m.emissionMode == DSPBR_EMISSIONMODE_LUMINOUS_POWER;
+  float area = o.object_area_m2 > 0.0f ? o.object_area_m2 : 1.0f;
+  return l_vc * (power ? dspbr_inv_pi / area : dspbr_inv_pi);
+}
+
+DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions o) {
+  DspbrBsdf b;
+  b.frame = frame;
+  b.core = dspbr_core_frame(m);
+  b.coat = dspbr_frame_from_normal_tangent(dspbr_unit_normal(m.clearcoatNormal), vec3(1.0f, 0.0f, 0.0f));
+  b.thin_walled = m.thinWalled;
+  b.alpha_cut = dspbr_clamp_nan(m.cutoutOpacity, 0.0f, 1.0f);
+  b.clearcoat = m.clearcoat;
+  b.eta = m.ior;
+  // Anisotropic roughness (r_u, r_v) = r (1, 1 - o), alpha = r^2 (spec "Microfacet BSDF").
+  float r_u = m.roughness, r_v = m.roughness * (1.0f - m.anisotropy);
+  b.ggx = dspbr_ggx(r_u * r_u, r_v * r_v);
+  b.coat_ggx = dspbr_ggx(m.clearcoatRoughness * m.clearcoatRoughness, m.clearcoatRoughness * m.clearcoatRoughness);
+  b.r_uv = sqrt(r_u * r_v);
+  float metal = m.metallic, t = m.transparency, s = m.specular;
+  bool volumetric = !m.thinWalled;
+  b.w_metal = metal;
+  b.w_opaque = (1.0f - metal) * (1.0f - t);
+  b.w_transp = (1.0f - metal) * t;
+  b.specular = s;
+  b.translucency = m.translucency;
+  b.rho = m.albedo;
+  float F0 = dspbr_f0_from_ior(1.0f, b.eta);
+  b.f0_diel = m.specularTint * F0;
+  b.rho_sr0 = b.f0_diel * ((b.w_opaque + b.w_transp) * s) + m.albedo * b.w_metal;
+  b.rho_sr90 = dspbr_splat((b.w_opaque + b.w_transp) * s + b.w_metal);
+  b.rho_t = m.albedo * b.w_transp;
+  b.rho_d = (m.albedo * (1.0f - m.translucency) + m.translucencyColor * m.translucency) * b.w_opaque;
+  b.f0_max = dspbr_max3(b.f0_diel);
+  b.lobes = 0u;
+  b.delta = 0u;
+  bool mirror = b.ggx.mirror;
+  if (b.w_metal + b.w_opaque + b.w_transp > 0.0f) {
+    if (b.w_metal > 0.0f || s * (b.w_opaque + b.w_transp) > 0.0f) {
+      b.lobes |= 1u << uint(DSPBR_LOBE_CORE_REFLECTION);
+      if (mirror) b.delta |= 1u << uint(DSPBR_LOBE_CORE_REFLECTION);
+    }
+    // M_r,ms F_ms (spec eq. multiscatter); none for a mirror (E_m = 1).
+    b.f_ms = dspbr_fresnel_ms3(b.rho_sr0, b.rho_sr90, dspbr_clamp_nan(dspbr_ggx_E_avg(b.r_uv), 0.0f, 1.0f));
+    float missing_m = dspbr_ggx_E_avg_missing(b.r_uv);
+    b.ms_inv_norm = missing_m > dspbr_min_missing_energy ? 1.0f / (dspbr_pi * missing_m) : 0.0f;
+    if (dspbr_max3(b.f_ms) > 0.0f && !mirror) b.lobes |= 1u << uint(DSPBR_LOBE_MULTISCATTER);
+    if (b.w_transp > 0.0f && dspbr_max3(b.rho_t) > 0.0f) {
+      b.lobes |= 1u << uint(DSPBR_LOBE_TRANSMISSION);
+      bool matched = volumetric && abs(b.eta - 1.0f) < dspbr_index_matched;
+      if (mirror || matched) b.delta |= 1u << uint(DSPBR_LOBE_TRANSMISSION);
+    }
+    float missing_b = 1.0f - dspbr_base_E_avg(b.r_uv, b.f0_max);
+    b.diffuse_inv_norm = missing_b > dspbr_min_missing_energy ? 1.0f / (dspbr_pi * missing_b) : 0.0f;
+    if (b.w_opaque > 0.0f && dspbr_max3(b.rho_d) > 0.0f) b.lobes |= 1u << uint(DSPBR_LOBE_DIFFUSE);
+  } else {
+    b.f_ms = dspbr_splat(0.0f);
+    b.ms_inv_norm = 0.0f;
+    b.diffuse_inv_norm = 0.0f;
+  }
+  // Sheen (ShinyCore): alpha_b = r_b^2, at least dspbr_min_alpha_b.
+  b.sheen_color = m.sheenColor;
+  b.alpha_b = max(m.sheenRoughness * m.sheenRoughness, dspbr_min_alpha_b);
+  b.sheen_model = o.sheen_model;
+  b.sheen_lambda = dspbr_sheen_lambda_fit(b.alpha_b);
+  if (dspbr_max3(m.sheenColor) > 0.0f) b.lobes |= 1u << uint(DSPBR_LOBE_SHEEN);
+  if (b.clearcoat > 0.0f) {
+    b.lobes |= 1u << uint(DSPBR_LOBE_CLEARCOAT);
+    if (b.coat_ggx.mirror) b.delta |= 1u << uint(DSPBR_LOBE_CLEARCOAT);
+  }
+  b.rho_e = dspbr_emission_rho_e(m, o);
+  return b;
+}

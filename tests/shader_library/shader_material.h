@@ -1,0 +1,39 @@
+// Host-side helpers of the shader-library tests (tests/shader_library/): the reference material
+// (dspbr::Material) as the shader library's DspbrMaterial, field by field (the same names), its
+// packing into the float records the device kernels read (conformance.comp / .hlsl, in the order
+// of kPackedFields), and which components the library does not implement yet.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "dspbr.h"
+#include "dspbr/bsdf/lobe_assembly.h"
+#include "dspbr/conformance/vector.h"
+#include "dspbr/conformance/vector_set.h"
+#include "dspbr/material.h"
+
+namespace shader_test {
+
+dspbr_shader::DspbrMaterial to_shader_material(const dspbr::Material& m);
+dspbr_shader::DspbrOptions to_shader_options(const dspbr::BsdfOptions& o);
+
+// Components of the reference that the shader library does not implement yet (a vector with one
+// of them is reported "not supported", never judged).
+bool supported(const dspbr::conformance::Vector& v);
+
+// One vector's record for the device kernels: the material fields the BSDF reads, the options,
+// v and l (kRecordFloats floats).
+constexpr int kRecordFloats = 48;
+void pack_record(const dspbr::conformance::Vector& v, float* out);
+
+// Per-vector results of an implementation and the verdict against each vector's tolerances:
+// f cos (per channel) and the pdf. Prints a line per group and the failures (at most `show`);
+// returns the number of failing vectors among the supported ones.
+struct Outcome {
+  dspbr_shader::vec3 f_cos;
+  float pdf;
+};
+int judge(const std::vector<dspbr::conformance::Vector>& vectors, const std::vector<Outcome>& results,
+          const std::string& what, int show = 12);
+
+}  // namespace shader_test
