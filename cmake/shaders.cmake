@@ -1,0 +1,24 @@
+# The shader library (shaders/, docs/renderer.md): the DSPBR BSDF as one GLSL-style source that
+# compiles as C++17 (shaders/dspbr.h), GLSL 450 (dspbr.glsl) and HLSL (dspbr.hlsl), over the
+# generated lookups of luts/. Header-only: the CMake target dspbr::shaders (INTERFACE) gives C++
+# consumers its include folders; installed to <prefix>/share/dspbr/shaders (the body, the entries
+# and the lookup files together, so one include folder serves every language) and exported as the
+# package component `shaders` (find_package(dspbr COMPONENTS shaders)).
+add_library(dspbr_shaders INTERFACE)
+add_library(dspbr::shaders ALIAS dspbr_shaders)
+set_target_properties(dspbr_shaders PROPERTIES EXPORT_NAME shaders)
+target_include_directories(dspbr_shaders INTERFACE $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/shaders>
+                                                   $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/luts>
+                                                   $<INSTALL_INTERFACE:${CMAKE_INSTALL_DATADIR}/dspbr/shaders>)
+target_compile_features(dspbr_shaders INTERFACE cxx_std_17)
+if(DSPBR_INSTALL)
+  set(_dspbr_shader_dir ${CMAKE_INSTALL_DATADIR}/dspbr/shaders)
+  install(TARGETS dspbr_shaders EXPORT dspbr_shadersTargets)
+  install(EXPORT dspbr_shadersTargets NAMESPACE dspbr:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/dspbr)
+  install(FILES ${PROJECT_SOURCE_DIR}/shaders/dspbr.h ${PROJECT_SOURCE_DIR}/shaders/dspbr.glsl
+                ${PROJECT_SOURCE_DIR}/shaders/dspbr.hlsl ${PROJECT_SOURCE_DIR}/shaders/README.md
+                ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.h ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl
+                ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.hlsl
+          DESTINATION ${_dspbr_shader_dir})
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/shaders/dspbr DESTINATION ${_dspbr_shader_dir})
+endif()

@@ -1,0 +1,81 @@
+# The shader library (shaders/, docs/renderer.md) proven against the conformance vectors:
+# - shader_vectors (fixture): the default vector set (built-in and scene materials, no albedo)
+#   written once into the build folder;
+# - shader_material_generated: shaders/dspbr/material.glsl is what scripts/shaders/gen_material.py
+#   writes from data/dspbr/params-2025x.json;
+# - shader_cpp_warnings: the C++ entry compiles under strict warnings with -Werror (build step);
+# - shader_cpp_conformance: the C++ compile (float) over every vector;
+# - shader_glsl_compile / shader_hlsl_compile: the GLSL and HLSL kernels compile with no warning;
+# - shader_glsl_conformance / shader_hlsl_conformance: the kernels on the first Vulkan device
+#   (lavapipe here), tables as textures; skipped (77) without a device.
+set(_sl ${CMAKE_CURRENT_LIST_DIR}/shader_library)
+set(_sl_vectors ${PROJECT_BINARY_DIR}/shader-vectors/vectors.json)
+add_test(NAME shader_vectors
+         COMMAND sh -c "rm -rf shader-vectors && '$<TARGET_FILE:dspbr>' conformance generate --no-albedo --out shader-vectors > /dev/null"
+         WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
+set_tests_properties(shader_vectors PROPERTIES FIXTURES_SETUP shader_vectors TIMEOUT 300)
+
+find_package(Python3 COMPONENTS Interpreter QUIET)
+add_test(NAME shader_material_generated
+         COMMAND sh -c "/usr/bin/python3 '${PROJECT_SOURCE_DIR}/scripts/shaders/gen_material.py' \
+'${PROJECT_SOURCE_DIR}/data/dspbr/params-2025x.json' shader_material.glsl && \
+cmp shader_material.glsl '${PROJECT_SOURCE_DIR}/shaders/dspbr/material.glsl'"
+         WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
+
+add_executable(shader_cpp_warnings ${_sl}/shader_warnings.cpp)
+target_link_libraries(shader_cpp_warnings PRIVATE dspbr_shaders)
+target_compile_options(shader_cpp_warnings PRIVATE -Wall -Wextra -Wpedantic -Wconversion -Wdouble-promotion -Wshadow
+                       -Wfloat-conversion -Wsign-conversion -Werror)
+add_test(NAME shader_cpp_warnings COMMAND shader_cpp_warnings)
+
+add_library(dspbr_shader_test STATIC ${_sl}/shader_material.cpp)
+target_include_directories(dspbr_shader_test PUBLIC ${_sl})
+target_link_libraries(dspbr_shader_test PUBLIC dspbr_shaders dspbr_conformance)
+target_compile_options(dspbr_shader_test PRIVATE -Wall -Wextra)
+add_executable(shader_cpp_conformance ${_sl}/shader_cpp_conformance.cpp)
+target_link_libraries(shader_cpp_conformance PRIVATE dspbr_shader_test)
+target_compile_options(shader_cpp_conformance PRIVATE -Wall -Wextra)
+add_test(NAME shader_cpp_conformance COMMAND shader_cpp_conformance ${_sl_vectors})
+set_tests_properties(shader_cpp_conformance PROPERTIES FIXTURES_REQUIRED shader_vectors)
+
+if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
+  set(_sl_inc -I${PROJECT_SOURCE_DIR}/shaders -I${PROJECT_SOURCE_DIR}/luts -I${_sl})
+  file(GLOB _sl_deps ${PROJECT_SOURCE_DIR}/shaders/*.* ${PROJECT_SOURCE_DIR}/shaders/dspbr/*)
+  set(_sl_glsl ${PROJECT_BINARY_DIR}/shader_conformance_glsl.spv)
+  set(_sl_hlsl ${PROJECT_BINARY_DIR}/shader_conformance_hlsl.spv)
+  # HLSL: glslang's HLSL front end; the tables' registers t0.. shifted to bindings 2.. (after the
+  # two buffers).
+  set(_sl_hlsl_args -V -D -S comp -e main --shift-texture-binding 2 ${_sl_inc})
+  add_custom_command(OUTPUT ${_sl_glsl} ${_sl_hlsl}
+    COMMAND ${DSPBR_GLSLANG_VK} -V ${_sl_inc} -o ${_sl_glsl} ${_sl}/conformance.comp
+    COMMAND ${DSPBR_GLSLANG_VK} ${_sl_hlsl_args} -o ${_sl_hlsl} ${_sl}/conformance.hlsl
+    DEPENDS ${_sl}/conformance.comp ${_sl}/conformance.hlsl ${_sl}/kernel_common.glsl ${_sl_deps}
+            ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.hlsl
+    COMMENT "glslangValidator: the shader library's conformance kernels (GLSL, HLSL)" VERBATIM)
+  add_custom_target(shader_conformance_kernels ALL DEPENDS ${_sl_glsl} ${_sl_hlsl})
+  # No warning from either front end (glslang prints "WARNING:" lines and still succeeds).
+  string(REPLACE ";" " " _sl_inc_cmd "${_sl_inc}")
+  add_test(NAME shader_glsl_compile
+           COMMAND sh -c "out=$('${DSPBR_GLSLANG_VK}' -V ${_sl_inc_cmd} -o /dev/null '${_sl}/conformance.comp' 2>&1) && \
+! printf '%s' \"$out\" | grep -E 'WARNING|ERROR'")
+  string(REPLACE ";" " " _sl_hlsl_cmd "${_sl_hlsl_args}")
+  add_test(NAME shader_hlsl_compile
+           COMMAND sh -c "out=$('${DSPBR_GLSLANG_VK}' ${_sl_hlsl_cmd} -o /dev/null '${_sl}/conformance.hlsl' 2>&1) && \
+! printf '%s' \"$out\" | grep -E 'WARNING|ERROR'")
+  add_executable(shader_vk_conformance ${_sl}/shader_vk_conformance.cpp)
+  target_link_libraries(shader_vk_conformance PRIVATE dspbr_shader_test dspbr_vk_compute)
+  target_compile_options(shader_vk_conformance PRIVATE -Wall -Wextra)
+  add_dependencies(shader_vk_conformance shader_conformance_kernels)
+  foreach(lang glsl hlsl)
+    add_test(NAME shader_${lang}_conformance
+             COMMAND shader_vk_conformance ${PROJECT_BINARY_DIR}/shader_conformance_${lang}.spv ${_sl_vectors}
+                     ${PROJECT_SOURCE_DIR}/luts ${lang})
+    set_tests_properties(shader_${lang}_conformance PROPERTIES FIXTURES_REQUIRED shader_vectors SKIP_RETURN_CODE 77
+                         TIMEOUT 300)
+  endforeach()
+else()
+  foreach(t shader_glsl_compile shader_hlsl_compile shader_glsl_conformance shader_hlsl_conformance)
+    add_test(NAME ${t} COMMAND ${CMAKE_COMMAND} -E echo "Vulkan or glslangValidator not found: ${t} not run")
+    set_tests_properties(${t} PROPERTIES DISABLED TRUE)
+  endforeach()
+endif()
