@@ -32,6 +32,9 @@ add_library(dspbr_shader_test STATIC ${_sl}/shader_material.cpp)
 target_include_directories(dspbr_shader_test PUBLIC ${_sl})
 target_link_libraries(dspbr_shader_test PUBLIC dspbr_shaders dspbr_conformance)
 target_compile_options(dspbr_shader_test PRIVATE -Wall -Wextra)
+# The GoogleTest cases of tests/test_shader_library.cpp (chi-square, stability, reciprocity,
+# emission and delta lobes of the C++ compile) use the same helpers.
+target_link_libraries(dspbr_tests PRIVATE dspbr_shader_test)
 add_executable(shader_cpp_conformance ${_sl}/shader_cpp_conformance.cpp)
 target_link_libraries(shader_cpp_conformance PRIVATE dspbr_shader_test)
 target_compile_options(shader_cpp_conformance PRIVATE -Wall -Wextra)

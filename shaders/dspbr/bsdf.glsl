@@ -135,6 +135,11 @@ DSPBR_FN DspbrSelection dspbr_select(DspbrBsdf b, vec3 v, float eta_i, float eta
   return sel;
 }
 
+// Values of f below this are returned as 0: in float they are denormal, with fewer significant
+// bits than any check's tolerance (f * |cos| / pdf of such a value is not reproducible).
+DSPBR_CONST float dspbr_tiny = 1e-30f;
+DSPBR_FN float dspbr_flush_tiny(float x) { return x >= dspbr_tiny ? x : 0.0f; }
+
 // f(v, l) and the mixture pdf on one side (v in front, side coordinates).
 DSPBR_FN vec3 dspbr_eval_side(DspbrBsdf b, vec3 v, vec3 l, float eta_i, float eta_o) {
   DspbrLayers f = dspbr_layers(b, v, l);
@@ -142,7 +147,7 @@ DSPBR_FN vec3 dspbr_eval_side(DspbrBsdf b, vec3 v, vec3 l, float eta_i, float et
   for (int k = 0; k < DSPBR_LOBE_COUNT; ++k)
     if (dspbr_has_lobe(b, k) && !dspbr_is_delta_lobe(b, k))
       sum += dspbr_lobe_eval(b, k, v, l, eta_i, eta_o) * dspbr_layer_of(f, k);
-  return sum;
+  return vec3(dspbr_flush_tiny(sum.x), dspbr_flush_tiny(sum.y), dspbr_flush_tiny(sum.z));
 }
 DSPBR_FN float dspbr_pdf_side(DspbrBsdf b, DspbrSelection sel, vec3 v, vec3 l, float eta_i, float eta_o) {
   float p = 0.0f;

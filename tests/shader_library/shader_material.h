@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dspbr.h"
+#include "dspbr/bsdf/bsdf.h"
 #include "dspbr/bsdf/lobe_assembly.h"
 #include "dspbr/conformance/vector.h"
 #include "dspbr/conformance/vector_set.h"
@@ -35,5 +36,25 @@ struct Outcome {
 };
 int judge(const std::vector<dspbr::conformance::Vector>& vectors, const std::vector<Outcome>& results,
           const std::string& what, int show = 12);
+
+}  // namespace shader_test
+
+namespace shader_test {
+
+// The shader library's C++ compile behind the reference's Bsdf interface (double in and out,
+// float inside), so that the validation's checks (chi-square, stability, reciprocity) run on it.
+class ShaderBsdf : public dspbr::Bsdf {
+ public:
+  ShaderBsdf(const dspbr::Material& m, const dspbr::BsdfOptions& o);
+  dspbr::Rgb eval(const dspbr::Vec3& v, const dspbr::Vec3& l) const override;
+  double pdf(const dspbr::Vec3& v, const dspbr::Vec3& l) const override;
+  dspbr::BsdfSample sample(const dspbr::Vec3& v, const dspbr::Vec3& u) const override;
+  uint32_t flags() const override;
+  dspbr::Rgb emission(const dspbr::Vec3& v) const;
+  const dspbr_shader::DspbrBsdf& prepared() const { return b_; }
+
+ private:
+  dspbr_shader::DspbrBsdf b_;
+};
 
 }  // namespace shader_test

@@ -1,0 +1,194 @@
+// The shader library's C++ compile (shaders/dspbr.h, float) checked by the validation's own tools
+// against independent numbers: chi-square of its sampling against its pdf for every built-in
+// conformance material (the vector set's materials, one per group entry), no NaN, Inf or negative
+// value over the stability corners and random materials, reciprocity no worse than the
+// reference's (which the spec's model sets), emission and the delta lobes against the reference.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "dspbr/bsdf/material_bsdf.h"
+#include "dspbr/conformance/vector_set.h"
+#include "dspbr/rng.h"
+#include "dspbr/validate/chi2.h"
+#include "dspbr/validate/reciprocity.h"
+#include "dspbr/validate/stability.h"
+#include "shader_material.h"
+
+using namespace dspbr;
+using namespace dspbr::conformance;
+
+namespace {
+
+// One vector per built-in material (the kit's own materials: each component, the plain sets, the
+// combinations, the extremes).
+const std::vector<Vector>& materials() {
+  static const std::vector<Vector> set = [] {
+    GenerateSettings s;
+    s.directions = 1;
+    s.albedo = false;
+    std::vector<Vector> out;
+    std::set<std::string> seen;  // the extremes give several vectors per material
+    for (Vector& x : generate_vectors(s))
+      if (shader_test::supported(x) && seen.insert(x.id.substr(0, x.id.rfind('/'))).second) out.push_back(std::move(x));
+    return out;
+  }();
+  return set;
+}
+
+}  // namespace
+
+TEST(ShaderLibrary, SamplingMatchesPdfByChiSquare) {
+  const auto& set = materials();
+  ASSERT_GT(set.size(), 30u);
+  validate::Chi2Settings s;
+  s.samples = 100000;
+  s.theta_bins = 60;  // 30 bins are too coarse for the expected counts of the IOR-1.01 glass (its
+                      // transmission peak): the reference fails there too (p 1.6e-13), both pass at 60
+  s.consistency_tol = 1e-4;  // sample.pdf and weight against pdf() and f |cos| / pdf, in float
+  // Two views from above; volumes also from inside (a thin wall seen from below is the same lobes).
+  struct View {
+    std::size_t material;
+    double mu;
+  };
+  std::vector<View> views;
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    views.push_back({i, 0.7}), views.push_back({i, 0.2});
+    if (!vector_material(set[i]).thinWalled) views.push_back({i, -0.5});
+  }
+  s.num_tests = int(views.size());
+  int failed = 0;
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    const Vector& x = set[views[k].material];
+    const double mu = views[k].mu, st = std::sqrt(1 - mu * mu);
+    const shader_test::ShaderBsdf b(vector_material(x), vector_options(x));
+    s.stream = k;
+    const validate::Chi2Result r = validate::chi2_test(b, {st * 0.8, st * 0.6, mu}, s);
+    if (!r.passed()) {
+      ++failed;
+      ADD_FAILURE() << x.id << " at cos " << mu << ": p " << r.p_value << " (alpha " << r.alpha << "), outside "
+                    << r.outside_support << ", integral " << r.pdf_integral << " vs " << r.pdf_integral_expected << " +- "
+                    << r.pdf_integral_tol << ", pdf dev " << r.max_pdf_rel_dev << ", weight dev " << r.max_weight_rel_dev
+                    << ", non-finite " << r.non_finite;
+    }
+  }
+  EXPECT_EQ(failed, 0);
+}
+
+TEST(ShaderLibrary, NoNanInfOrNegativeAtTheCorners) {
+  // The parameter corners of the validation's stability sweep, and random materials.
+  std::vector<Material> corners;
+  auto add = [&](auto f) {
+    Material m;
+    f(m);
+    corners.push_back(m);
+  };
+  for (double r : {0.0, 1e-6, 1e-3, 1.0})
+    for (double a : {0.0, 1.0}) {
+      add([&](Material& m) { m.roughness = r, m.anisotropy = a, m.metallic = 1; });
+      add([&](Material& m) { m.roughness = r, m.anisotropy = a; });
+      add([&](Material& m) { m.roughness = r, m.anisotropy = a, m.transparency = 1; });
+      add([&](Material& m) { m.roughness = r, m.anisotropy = a, m.transparency = 1, m.thinWalled = false; });
+    }
+  for (double ior : {1.0, 1.0 + 1e-7, 1.01, 3.0, 10.0})
+    add([&](Material& m) { m.roughness = 0.3, m.transparency = 1, m.thinWalled = false, m.ior = ior; });
+  add([](Material& m) { m.sheenColor = {1, 1, 1}, m.sheenRoughness = 0; });
+  add([](Material& m) { m.sheenColor = {1, 1, 1}, m.sheenRoughness = 1; });
+  add([](Material& m) { m.clearcoat = 1, m.clearcoatRoughness = 0, m.clearcoatNormal = {1, 0, 1e-3}; });
+  add([](Material& m) { m.cutoutOpacity = 0, m.roughness = 0.5; });
+  add([](Material& m) { m.translucency = 1, m.roughness = 0.5, m.normal = {0.3, 0, 1}; });
+  add([](Material& m) { m.specular = 0, m.albedo = {0, 0, 0}; });
+  Pcg32 rng(7, 1);
+  auto u = [&] { return rng.next_double(); };
+  for (int i = 0; i < 200; ++i)
+    add([&](Material& m) {
+      m.albedo = Rgb(u(), u(), u()), m.metallic = u(), m.roughness = u();
+      m.anisotropy = u(), m.anisotropyRotation = u(), m.translucency = u();
+      m.transparency = u(), m.specular = u(), m.sheenColor = Rgb(u(), u(), 0.5);
+      m.sheenRoughness = u(), m.clearcoat = u(), m.clearcoatRoughness = u();
+      m.cutoutOpacity = u(), m.thinWalled = u() < 0.5, m.ior = 1 + 2 * u();
+    });
+  validate::StabilitySettings s;
+  s.random_directions = 300;
+  validate::StabilityCounts total;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    s.stream = i;
+    total += validate::stability_scan(shader_test::ShaderBsdf(corners[i], {}), s);
+  }
+  EXPECT_GT(total.evaluations, 100000u);
+  EXPECT_EQ(total.nan, 0u);
+  EXPECT_EQ(total.inf, 0u);
+  EXPECT_EQ(total.negative, 0u);
+  EXPECT_EQ(total.bad_direction, 0u);
+}
+
+TEST(ShaderLibrary, ReciprocalWhereTheReferenceIs) {
+  // The spec's model is not reciprocal everywhere (its layering takes the max of two Fresnels, the
+  // volumetric M_t follows an eta rule of its own): where the reference (double) is reciprocal to
+  // 1e-6, the library must be to float rounding (1e-3 relative, grazing pairs included).
+  validate::ReciprocitySettings s;
+  s.pairs = 2000;
+  int judged = 0;
+  for (const Vector& x : materials()) {
+    const Material m = vector_material(x);
+    s.eta_below = m.thinWalled ? 1.0 : m.ior;
+    const validate::ReciprocityResult lib = validate::reciprocity_check(shader_test::ShaderBsdf(m, vector_options(x)), s);
+    const validate::ReciprocityResult ref =
+        validate::reciprocity_check(MaterialBsdf(m, LutSet::builtin(), vector_options(x)), s);
+    const std::pair<const validate::ReciprocityStats*, const validate::ReciprocityStats*> kinds[] = {
+        {&lib.reflection_upper, &ref.reflection_upper},
+        {&lib.reflection_lower, &ref.reflection_lower},
+        {&lib.transmission_eta2, &ref.transmission_eta2}};
+    for (const auto& [a, b] : kinds) {
+      if (b->pairs == 0 || b->max_rel_dev > 1e-6) continue;
+      ++judged;
+      EXPECT_LE(a->max_rel_dev, 1e-3) << x.id << " at v " << a->worst_v.x << " " << a->worst_v.y << " " << a->worst_v.z;
+    }
+  }
+  EXPECT_GT(judged, 30);
+}
+
+TEST(ShaderLibrary, EmissionAndDeltaLobesAsTheVectors) {
+  GenerateSettings g;
+  g.directions = 4;
+  g.albedo = false;
+  int emission = 0, delta = 0;
+  for (const Vector& x : generate_vectors(g)) {
+    if (!shader_test::supported(x)) continue;
+    const shader_test::ShaderBsdf b(vector_material(x), vector_options(x));
+    if (x.emission) {
+      ++emission;
+      const Rgb e = b.emission(x.v);
+      EXPECT_TRUE(x.emission_tolerance.admits(e.r, x.emission->r) && x.emission_tolerance.admits(e.g, x.emission->g) &&
+                  x.emission_tolerance.admits(e.b, x.emission->b))
+          << x.id << ": " << e.r << " " << e.g << " " << e.b << " expected " << x.emission->r;
+    }
+    // The delta lobes at v: the sampler's lobe choice swept over 8192 values; weight x probability
+    // of a delta sample is its lobe's reflectance or transmittance (docs/bsdf.md, "Conventions").
+    std::map<std::tuple<long, long, long>, std::pair<Vec3, Rgb>> found;
+    for (int k = 0; k < 8192; ++k) {
+      const BsdfSample s = b.sample(x.v, {(k + 0.5) / 8192, 0.5, 0.5});
+      if (!s.valid || !(s.flags & kLobeDelta)) continue;
+      const auto key = std::make_tuple(std::lround(s.l.x * 1e4), std::lround(s.l.y * 1e4), std::lround(s.l.z * 1e4));
+      found[key] = {s.l, s.weight * s.pdf};
+    }
+    EXPECT_EQ(found.size(), x.delta.size()) << x.id;
+    for (const DeltaExpectation& d : x.delta) {
+      ++delta;
+      bool matched = false;
+      for (const auto& [key, lobe] : found) {
+        if (length(lobe.first - d.l) > 1e-4) continue;
+        matched = true;
+        const Tolerance t{1e-5, 1e-4};  // float directions and Fresnel
+        EXPECT_TRUE(t.admits(lobe.second.r, d.value.r) && t.admits(lobe.second.g, d.value.g) &&
+                    t.admits(lobe.second.b, d.value.b))
+            << x.id << ": delta lobe " << lobe.second.r << " expected " << d.value.r;
+      }
+      EXPECT_TRUE(matched) << x.id << ": no delta sample towards " << d.l.x << " " << d.l.y << " " << d.l.z;
+    }
+  }
+  EXPECT_GE(emission, 8);  // the two emitting materials at four views
+  EXPECT_GT(delta, 10);
+}
