@@ -13,6 +13,7 @@
 #include "dspbr/ggx.glsl"
 #include "dspbr/sheen.glsl"
 #include "dspbr/sampling.glsl"
+#include "dspbr/thin_film.glsl"
 #include "dspbr/prepare.glsl"
 #include "dspbr/lobes.glsl"
 #include "dspbr/bsdf.glsl"

@@ -4,23 +4,55 @@
 // reference's lobes compute them (src/dspbr/bsdf/*.cpp). eta_i: the IOR on v's side, eta_o: the
 // other side (they differ from 1 only for the volumetric transmission seen from inside).
 
-// ---- Fresnel factors of the core (spec "Putting It All Together": ThinCore / VolumetricCore) ----
+// ---- Fresnel factors of the core (spec "Putting It All Together": ThinCore / VolumetricCore,
+// ThinFilmOver*) ----
+// The film's R over the base IOR at a cosine on v's side: through the base from inside a volume
+// (a lossless stack reflects equally from both sides at corresponding angles; 1 under total
+// internal reflection).
+DSPBR_FN vec3 dspbr_film(DspbrBsdf b, float c, float eta_base) {
+  return dspbr_thin_film_reflectance(c, eta_base, b.film_thickness, b.film_ior);
+}
+DSPBR_FN vec3 dspbr_film_side(DspbrBsdf b, float c, float eta_i, float eta_o) {
+  if (eta_i <= eta_o) return dspbr_film(b, c, b.eta);
+  float s2 = dspbr_sin2_transmitted(c, eta_i, eta_o);
+  if (s2 >= 1.0f) return dspbr_splat(1.0f);
+  return dspbr_film(b, sqrt(1.0f - s2), b.eta);
+}
 // M_r's factor. Thin-walled: F(rho_s,r,0, rho_s,r,90); volumetric: m F(rho, 1) + (1-m)(1-t) s
-// F(F_0 rho_s, 1) + (1-m) t s F_d(F_0 rho_s, 1).
+// F(F_0 rho_s, 1) + (1-m) t s F_d(F_0 rho_s, 1); with a film of weight i, (1-i) that + i [m R(eta_rho)
+// + (1-m)(1-t) R(eta) + (1-m) t R(eta, seen from v's side)] (docs/bsdf.md).
 DSPBR_FN vec3 dspbr_core_reflection_factor(DspbrBsdf b, float c, float eta_i, float eta_o) {
-  if (b.thin_walled) return dspbr_schlick(c, b.rho_sr0, b.rho_sr90);
   vec3 one = dspbr_splat(1.0f);
   vec3 f = dspbr_splat(0.0f);
-  if (b.w_metal > 0.0f) f = dspbr_schlick(c, b.rho, one) * b.w_metal;
-  if (b.w_opaque > 0.0f) f += dspbr_schlick(c, b.f0_diel, one) * (b.w_opaque * b.specular);
-  if (b.w_transp > 0.0f) f += dspbr_schlick_d(c, b.f0_diel, one, eta_i, eta_o) * (b.w_transp * b.specular);
+  if (b.thin_walled) {
+    f = dspbr_schlick(c, b.rho_sr0, b.rho_sr90);
+  } else {
+    if (b.w_metal > 0.0f) f = dspbr_schlick(c, b.rho, one) * b.w_metal;
+    if (b.w_opaque > 0.0f) f += dspbr_schlick(c, b.f0_diel, one) * (b.w_opaque * b.specular);
+    if (b.w_transp > 0.0f) f += dspbr_schlick_d(c, b.f0_diel, one, eta_i, eta_o) * (b.w_transp * b.specular);
+  }
+  if (b.film_weight > 0.0f) {
+    bool transp_sees_eta = b.thin_walled || eta_i <= eta_o;
+    vec3 r_eta = dspbr_splat(0.0f), r_transp = dspbr_splat(0.0f);
+    if (b.w_opaque > 0.0f || (b.w_transp > 0.0f && transp_sees_eta)) r_eta = dspbr_film(b, c, b.eta);
+    if (b.w_transp > 0.0f) r_transp = transp_sees_eta ? r_eta : dspbr_film_side(b, c, eta_i, eta_o);
+    vec3 fr = r_eta * b.w_opaque + r_transp * b.w_transp;
+    if (b.w_metal > 0.0f) fr += dspbr_film(b, c, b.film_eta_rho) * b.w_metal;
+    f = f * (1.0f - b.film_weight) + fr * b.film_weight;
+  }
   return f;
 }
-// M_t' of ThinCore: rho_t (1 - s F(F_0 rho_s, 1)); M_t of VolumetricCore: rho_t (1 - s F_d(F_0 rho_s, 1)).
+// M_t' of ThinCore: rho_t (1 - s F(F_0 rho_s, 1)); M_t of VolumetricCore: rho_t (1 - s F_d(F_0 rho_s,
+// 1)); with a film (1-i) that + i rho_t (1 - R).
 DSPBR_FN vec3 dspbr_core_transmission_factor(DspbrBsdf b, float c, float eta_i, float eta_o) {
   vec3 one = dspbr_splat(1.0f);
   vec3 f = b.thin_walled ? dspbr_schlick(c, b.f0_diel, one) : dspbr_schlick_d(c, b.f0_diel, one, eta_i, eta_o);
-  return b.rho_t * (one - f * b.specular);
+  vec3 t = b.rho_t * (one - f * b.specular);
+  if (b.film_weight > 0.0f) {
+    vec3 r = b.thin_walled ? dspbr_film(b, c, b.eta) : dspbr_film_side(b, c, eta_i, eta_o);
+    t = t * (1.0f - b.film_weight) + b.rho_t * (one - r) * b.film_weight;
+  }
+  return t;
 }
 // The factor of a lobe built on reflection (core reflection, thin transmission, clearcoat).
 DSPBR_FN vec3 dspbr_lobe_factor(DspbrBsdf b, int k, float c, float eta_i, float eta_o) {
@@ -122,7 +154,13 @@ DSPBR_FN vec3 dspbr_diffuse_eval(DspbrBsdf b, vec3 v, vec3 l) {
   if (t == 0.0f) return dspbr_splat(0.0f);
   float b_u = t * dspbr_inv_pi;
   float b_c = dspbr_missing_base(b, v.z) * dspbr_missing_base(b, l.z) * b.diffuse_inv_norm * t;
-  return b.rho_d * (b_u * (1.0f - b.specular) + b.specular * b_c);
+  vec3 base = dspbr_splat((1.0f - b.film_weight) * (b_u * (1.0f - b.specular) + b.specular * b_c));
+  if (b.film_weight > 0.0f) {
+    // ThinFilmOver*: + i B_u (1 - max(R(v.n), R(l.n))).
+    vec3 r = dspbr_max3v(dspbr_film(b, v.z, b.eta), dspbr_film(b, abs(l.z), b.eta));
+    base += (dspbr_splat(1.0f) - r) * (b.film_weight * b_u);
+  }
+  return b.rho_d * base;
 }
 DSPBR_FN float dspbr_diffuse_pdf(DspbrBsdf b, vec3 v, vec3 l) {
   if (!(v.z > 0.0f)) return 0.0f;
@@ -131,7 +169,8 @@ DSPBR_FN float dspbr_diffuse_pdf(DspbrBsdf b, vec3 v, vec3 l) {
 DSPBR_FN float dspbr_diffuse_weight(DspbrBsdf b, vec3 v) {
   if (!(v.z > 0.0f)) return 0.0f;
   float s = b.specular;
-  float w = (1.0f - s) + s * dspbr_missing_base(b, v.z) * (b.diffuse_inv_norm > 0.0f ? 1.0f : 0.0f);
+  float w = (1.0f - b.film_weight) * ((1.0f - s) + s * dspbr_missing_base(b, v.z) * (b.diffuse_inv_norm > 0.0f ? 1.0f : 0.0f));
+  if (b.film_weight > 0.0f) w += b.film_weight * (1.0f - dspbr_mean(dspbr_film(b, v.z, b.eta)));
   return max(0.0f, dspbr_mean(b.rho_d) * w);
 }
 

@@ -80,6 +80,12 @@ struct DspbrBsdf {
   int sheen_model;
   DspbrSheenLambda sheen_lambda;
   vec3 rho_e;  // emitted luminance factor (spec "Emission")
+  // Thin film over the core (spec "Thin Film"): weight i, thickness (um), film IOR, and the
+  // equivalent IOR of the metal base (-1: a mirror).
+  float film_weight;
+  float film_thickness;
+  float film_ior;
+  float film_eta_rho;
 };
 
 DSPBR_FN bool dspbr_has_lobe(DspbrBsdf b, int k) { return ((b.lobes >> uint(k)) & 1u) != 0u; }
@@ -140,11 +146,15 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
   b.rho_t = m.albedo * b.w_transp;
   b.rho_d = (m.albedo * (1.0f - m.translucency) + m.translucencyColor * m.translucency) * b.w_opaque;
   b.f0_max = dspbr_max3(b.f0_diel);
+  b.film_weight = m.thinFilm;
+  b.film_thickness = m.thinFilmThickness;
+  b.film_ior = m.thinFilmIor;
+  b.film_eta_rho = dspbr_thin_film_metal_eta(m.albedo);
   b.lobes = 0u;
   b.delta = 0u;
   bool mirror = b.ggx.mirror;
   if (b.w_metal + b.w_opaque + b.w_transp > 0.0f) {
-    if (b.w_metal > 0.0f || s * (b.w_opaque + b.w_transp) > 0.0f) {
+    if (b.w_metal > 0.0f || s * (b.w_opaque + b.w_transp) > 0.0f || b.film_weight > 0.0f) {
       b.lobes |= 1u << uint(DSPBR_LOBE_CORE_REFLECTION);
       if (mirror) b.delta |= 1u << uint(DSPBR_LOBE_CORE_REFLECTION);
     }

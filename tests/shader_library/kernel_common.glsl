@@ -33,6 +33,9 @@ DSPBR_FN void dspbr_test_run(uint i) {
   DspbrOptions o = dspbr_default_options();
   o.sheen_model = int(rec[k]); k += 1u;
   o.object_area_m2 = rec[k]; k += 1u;
+  m.thinFilm = rec[k]; k += 1u;
+  m.thinFilmThickness = rec[k]; k += 1u;
+  m.thinFilmIor = rec[k]; k += 1u;
   vec3 v = dspbr_test_vec3(k); k += 3u;
   vec3 l = dspbr_test_vec3(k);
   DspbrBsdf b = dspbr_prepare(m, dspbr_identity_frame(), o);

@@ -65,7 +65,7 @@ dspbr_shader::DspbrOptions to_shader_options(const dspbr::BsdfOptions& o) {
 
 bool supported(const dspbr::conformance::Vector& v) {
   for (const std::string& c : v.components)
-    if (c == "thin_film" || c == "flakes" || c == "dispersion") return false;
+    if (c == "flakes" || c == "dispersion") return false;
   return true;
 }
 
@@ -82,6 +82,7 @@ void pack_record(const dspbr::conformance::Vector& x, float* out) {
   put(m.clearcoatRoughness), put3(m.clearcoatNormal), put3(m.emissionColor), put(m.emissionValue);
   put(float(m.emissionMode)), put(m.emissionEnergyNormalization ? 1.0f : 0.0f), put(m.thinWalled ? 1.0f : 0.0f);
   put(m.ior), put(float(o.sheen_model)), put(o.object_area_m2);
+  put(m.thinFilm), put(m.thinFilmThickness), put(m.thinFilmIor);
   put3(vec3(float(x.v.x), float(x.v.y), float(x.v.z))), put3(vec3(float(x.l.x), float(x.l.y), float(x.l.z)));
   while (i < kRecordFloats) put(0.0f);
 }

@@ -1,0 +1,122 @@
+// The shader library's C++ compile (shaders/dspbr.h, float, renderer-layout tables) per hit, as a
+// path tracer pays it: prepare + eval, prepare alone, eval and sample of a prepared BSDF, for the
+// params-2025x.json subtypes the library implements, against a bare isotropic GGX reflection eval
+// (D, height-correlated G2, Schlick F) in float in the same run.
+//   dspbr_bench --benchmark_filter='BM_Shader'
+// Ratios and the table: scripts/bench_shader.py, docs/renderer.md ("Cost").
+#include <benchmark/benchmark.h>
+
+#include <string>
+#include <vector>
+
+#include "dspbr.h"
+#include "dspbr/params/material_instance.h"
+#include "dspbr/params/param_defs.h"
+#include "dspbr/rng.h"
+
+namespace {
+
+using namespace dspbr_shader;
+
+DspbrMaterial subtype(const std::string& id) {
+  static const dspbr::ParamDefs defs = dspbr::default_param_defs();
+  const dspbr::Material m = dspbr::material_from_instance(defs, nlohmann::json{{"material", id}});
+  DspbrMaterial s = dspbr_default_material();
+  auto v3 = [](const dspbr::Rgb& c) { return vec3(float(c.r), float(c.g), float(c.b)); };
+  s.albedo = v3(m.albedo), s.metallic = float(m.metallic), s.roughness = float(m.roughness);
+  s.anisotropy = float(m.anisotropy), s.specular = float(m.specular), s.specularTint = v3(m.specularTint);
+  s.transparency = float(m.transparency), s.thinWalled = m.thinWalled, s.ior = float(m.ior);
+  s.sheenColor = v3(m.sheenColor), s.sheenRoughness = float(m.sheenRoughness);
+  s.clearcoat = float(m.clearcoat), s.clearcoatRoughness = float(m.clearcoatRoughness);
+  return s;
+}
+
+// The materials: three subtypes at their defaults, and a coated plastic.
+DspbrMaterial material(int index) {
+  switch (index) {
+    case 0: return subtype("plastic");
+    case 1: return subtype("metal");
+    case 2: return subtype("glass");
+    default: {
+      DspbrMaterial m = subtype("plastic");
+      m.clearcoat = 1.0f, m.clearcoatRoughness = 0.1f;
+      return m;
+    }
+  }
+}
+const char* kNames[] = {"plastic", "metal", "glass", "coated_plastic"};
+
+struct Inputs {
+  std::vector<vec3> v, l, u;
+  Inputs() {
+    dspbr::Pcg32 rng(11, 0);
+    auto dir = [&] {
+      const float z = float(rng.next_double()), phi = float(6.283185307 * rng.next_double());
+      const float s = std::sqrt(1.0f - z * z);
+      return vec3(s * std::cos(phi), s * std::sin(phi), z);
+    };
+    for (int i = 0; i < 1024; ++i) {
+      v.push_back(dir()), l.push_back(dir());
+      u.push_back(vec3(float(rng.next_double()), float(rng.next_double()), float(rng.next_double())));
+    }
+  }
+};
+const Inputs& inputs() {
+  static const Inputs in;
+  return in;
+}
+
+void bare_ggx(benchmark::State& state) {
+  const float a = subtype("plastic").roughness;
+  const DspbrGgx g = dspbr_ggx(a * a, a * a);
+  const Inputs& in = inputs();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const vec3 v = in.v[i & 1023], l = in.l[i & 1023];
+    const vec3 h = normalize(v + l);
+    benchmark::DoNotOptimize(dspbr_ggx_M_r(g, v, l, h) * dspbr_schlick1(dot(v, h), 0.04f, 1.0f));
+    ++i;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+enum class What { PrepareEval, Prepare, Eval, Sample };
+
+void run(benchmark::State& state, int index, What what) {
+  const DspbrMaterial m = material(index);
+  const DspbrFrame f = dspbr_identity_frame();
+  const DspbrOptions o = dspbr_default_options();
+  const DspbrBsdf prepared = dspbr_prepare(m, f, o);
+  const Inputs& in = inputs();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const vec3 v = in.v[i & 1023], l = in.l[i & 1023];
+    switch (what) {
+      case What::PrepareEval: {
+        // A textured material: one prepare per hit (the material varies), then one eval.
+        const DspbrBsdf b = dspbr_prepare(m, f, o);
+        benchmark::DoNotOptimize(dspbr_eval(b, v, l));
+        break;
+      }
+      case What::Prepare: benchmark::DoNotOptimize(dspbr_prepare(m, f, o)); break;
+      case What::Eval: benchmark::DoNotOptimize(dspbr_eval(prepared, v, l)); break;
+      case What::Sample: benchmark::DoNotOptimize(dspbr_sample(prepared, v, in.u[i & 1023])); break;
+    }
+    ++i;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+[[maybe_unused]] const bool registered = [] {
+  benchmark::RegisterBenchmark("BM_Shader/bare_ggx", bare_ggx);
+  for (int m = 0; m < 4; ++m) {
+    const std::string name = kNames[m];
+    benchmark::RegisterBenchmark(("BM_Shader/prepare_eval/" + name).c_str(), run, m, What::PrepareEval);
+    benchmark::RegisterBenchmark(("BM_Shader/prepare/" + name).c_str(), run, m, What::Prepare);
+    benchmark::RegisterBenchmark(("BM_Shader/eval/" + name).c_str(), run, m, What::Eval);
+    benchmark::RegisterBenchmark(("BM_Shader/sample/" + name).c_str(), run, m, What::Sample);
+  }
+  return true;
+}();
+
+}  // namespace

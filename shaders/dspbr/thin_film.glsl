@@ -1,0 +1,111 @@
+// Thin-film iridescence R(cos theta, eta_base, d, eta_film): the Airy-summed reflectance of a
+// dielectric film between air and a base, integrated over the visible spectrum to linear sRGB
+// (spec "Thin Film"; Belcour & Barla 2017), as the reference's spectral quadrature computes it
+// (src/dspbr/bsdf/thin_film.cpp). Legal films (eta_film >= 1, bases eta >= 1) keep every wave
+// propagating, so the Airy sum is real. A base of eta_base < 0 stands for a perfect mirror (the
+// equivalent IOR of a metal of albedo 1): R = 1.
+
+// Exact unpolarised Fresnel reflectance of air | eta (Born & Wolf 1.5.2); 1 under total internal
+// reflection and at grazing incidence, 0 for eta = 1.
+DSPBR_FN float dspbr_fresnel_exact(float cos_theta, float eta) {
+  float c1 = min(1.0f, abs(cos_theta));
+  if (eta == 1.0f) return 0.0f;
+  if (eta < 0.0f || c1 == 0.0f) return 1.0f;
+  float s2 = (1.0f - c1 * c1) / (eta * eta);
+  if (s2 >= 1.0f) return 1.0f;
+  float c2 = sqrt(1.0f - s2);
+  float rs = (c1 - eta * c2) / (c1 + eta * c2);
+  float rp = (eta * c1 - c2) / (eta * c1 + c2);
+  return 0.5f * (rs * rs + rp * rp);
+}
+
+// The equivalent IOR of a metal base, (1 + sqrt(max rho)) / (1 - sqrt(max rho)) (spec "Thin
+// Film"); -1 (a mirror) for max rho >= 1.
+DSPBR_FN float dspbr_thin_film_metal_eta(vec3 rho) {
+  float s = sqrt(clamp(dspbr_max3(rho), 0.0f, 1.0f));
+  return s >= 1.0f ? -1.0f : (1.0f + s) / (1.0f - s);
+}
+
+// Wyman, Sloan & Shirley 2013 multi-lobe fit of the CIE 1931 2 deg colour-matching functions.
+DSPBR_FN float dspbr_wss_lobe(float x, float mu, float s1, float s2) {
+  float t = (x - mu) / (x < mu ? s1 : s2);
+  return exp(-0.5f * t * t);
+}
+DSPBR_FN vec3 dspbr_cie1931_cmf(float l) {
+  float x = 1.056f * dspbr_wss_lobe(l, 599.8f, 37.9f, 31.0f) + 0.362f * dspbr_wss_lobe(l, 442.0f, 16.0f, 26.7f) -
+            0.065f * dspbr_wss_lobe(l, 501.1f, 20.4f, 26.2f);
+  float y = 0.821f * dspbr_wss_lobe(l, 568.8f, 46.9f, 40.5f) + 0.286f * dspbr_wss_lobe(l, 530.9f, 16.3f, 31.1f);
+  float z = 1.217f * dspbr_wss_lobe(l, 437.0f, 11.8f, 36.0f) + 0.681f * dspbr_wss_lobe(l, 459.0f, 26.0f, 13.8f);
+  return vec3(x, y, z);
+}
+
+// The six-node Gauss-Legendre rule on [-1, 1] (nodes x_i, weights w_i), i = 0..5.
+DSPBR_FN float dspbr_gl6_x(int i) {
+  float a = i == 0 || i == 5 ? 0.9324695142f : (i == 1 || i == 4 ? 0.6612093865f : 0.2386191861f);
+  return i < 3 ? -a : a;
+}
+DSPBR_FN float dspbr_gl6_w(int i) {
+  return i == 0 || i == 5 ? 0.1713244924f : (i == 1 || i == 4 ? 0.3607615730f : 0.4679139346f);
+}
+// The kinks of the CMF fit (its lobe centres) bound the spectral panels, 360..830 nm.
+DSPBR_FN float dspbr_cmf_edge(int e) {
+  if (e == 0) return 360.0f;
+  if (e == 1) return 437.0f;
+  if (e == 2) return 442.0f;
+  if (e == 3) return 459.0f;
+  if (e == 4) return 501.1f;
+  if (e == 5) return 530.9f;
+  if (e == 6) return 568.8f;
+  if (e == 7) return 599.8f;
+  return 830.0f;
+}
+
+// R as linear sRGB in [0, 1] (E-white normalised XYZ -> Bradford to D65 -> IEC 61966-2-1 sRGB,
+// rows scaled so that XYZ = (1, 1, 1) maps to (1, 1, 1), as the reference's colour transform).
+DSPBR_FN vec3 dspbr_thin_film_reflectance(float cos_theta, float eta_base, float thickness_um, float eta_film) {
+  float c1 = min(1.0f, abs(cos_theta));
+  if (eta_base < 0.0f) return dspbr_splat(1.0f);
+  if (!(thickness_um > 0.0f) || eta_film == 1.0f) return dspbr_splat(dspbr_fresnel_exact(c1, eta_base));
+  if (c1 == 0.0f) return dspbr_splat(1.0f);
+  // Amplitudes [s, p] of air | film and film | base, and the round-trip phase times lambda.
+  float s2_1 = 1.0f - c1 * c1;
+  float c2 = sqrt(max(0.0f, 1.0f - s2_1 / (eta_film * eta_film)));
+  float c3 = sqrt(max(0.0f, 1.0f - s2_1 / (eta_base * eta_base)));
+  float r12s = (c1 - eta_film * c2) / (c1 + eta_film * c2);
+  float r12p = (eta_film * c1 - c2) / (eta_film * c1 + c2);
+  float r23s = (eta_film * c2 - eta_base * c3) / (eta_film * c2 + eta_base * c3);
+  float r23p = (eta_base * c2 - eta_film * c3) / (eta_base * c2 + eta_film * c3);
+  float phase_nm = 4.0f * dspbr_pi * eta_film * (thickness_um * 1000.0f) * c2;
+  // Panel width: the coarsest of 16, 8, ..., 1/64 nm on which the phase turns by at most two
+  // resonance widths (1 - |r12 r23|) per panel at 360 nm (the reference's rule ladder).
+  float width = 1.0f - max(abs(r12s * r23s), abs(r12p * r23p));
+  float rate = phase_nm / (360.0f * 360.0f);
+  float panel = 16.0f;
+  for (int k = 0; k < 10 && rate * panel > 2.0f * width; ++k) panel *= 0.5f;
+  vec3 xyz = dspbr_splat(0.0f), norm = dspbr_splat(0.0f);
+  for (int e = 0; e < 8; ++e) {
+    float a = dspbr_cmf_edge(e), b = dspbr_cmf_edge(e + 1);
+    int panels = int(ceil((b - a) / panel));
+    float h = (b - a) / float(panels);
+    for (int p = 0; p < panels; ++p) {
+      float mid = a + (float(p) + 0.5f) * h;
+      for (int i = 0; i < 6; ++i) {
+        float lambda = mid + 0.5f * h * dspbr_gl6_x(i);
+        vec3 w = dspbr_cie1931_cmf(lambda) * (0.5f * h * dspbr_gl6_w(i));
+        // Airy sum (BB17 eq. 2) per polarisation: |r12 + r23 e^{i phi}|^2 / |1 + r12 r23 e^{i phi}|^2.
+        float cphi = cos(phase_nm / lambda);
+        float rs = (r12s * r12s + r23s * r23s + 2.0f * r12s * r23s * cphi) /
+                   (1.0f + r12s * r12s * r23s * r23s + 2.0f * r12s * r23s * cphi);
+        float rp = (r12p * r12p + r23p * r23p + 2.0f * r12p * r23p * cphi) /
+                   (1.0f + r12p * r12p * r23p * r23p + 2.0f * r12p * r23p * cphi);
+        xyz += w * clamp(0.5f * (rs + rp), 0.0f, 1.0f);
+        norm += w;
+      }
+    }
+  }
+  xyz = xyz / norm;
+  vec3 rgb = vec3(3.146250862f * xyz.x - 1.666123795f * xyz.y - 0.480127066f * xyz.z,
+                  -0.995535012f * xyz.x + 1.955763473f * xyz.y + 0.039771539f * xyz.z,
+                  0.063597844f * xyz.x - 0.214596549f * xyz.y + 1.150998705f * xyz.z);
+  return vec3(clamp(rgb.x, 0.0f, 1.0f), clamp(rgb.y, 0.0f, 1.0f), clamp(rgb.z, 0.0f, 1.0f));
+}
