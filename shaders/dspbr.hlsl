@@ -13,6 +13,7 @@
 #include "dspbr/sheen.glsl"
 #include "dspbr/sampling.glsl"
 #include "dspbr/thin_film.glsl"
+#include "dspbr/flakes.glsl"
 #include "dspbr/prepare.glsl"
 #include "dspbr/lobes.glsl"
 #include "dspbr/bsdf.glsl"

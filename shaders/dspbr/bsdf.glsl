@@ -54,7 +54,7 @@ DSPBR_FN DspbrLayers dspbr_layers(DspbrBsdf b, vec3 v, vec3 l) {
 }
 DSPBR_FN float dspbr_layer_of(DspbrLayers f, int k) {
   if (k == DSPBR_LOBE_CLEARCOAT) return f.coat;
-  if (k == DSPBR_LOBE_SHEEN) return f.sheen;
+  if (k == DSPBR_LOBE_SHEEN || k == DSPBR_LOBE_FLAKE) return f.sheen;
   return f.core;
 }
 DSPBR_FN vec3 dspbr_flip_z(vec3 w) { return vec3(w.x, w.y, -w.z); }
@@ -75,6 +75,7 @@ DSPBR_FN vec3 dspbr_lobe_eval(DspbrBsdf b, int k, vec3 v, vec3 l, float eta_i, f
     return dspbr_reflection_eval(b, k, vc, dspbr_flip_z(lc), eta_i, eta_o);  // M_t' = M_r(v, l mirrored)
   }
   if (k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_eval(b, vc, lc);
+  if (k == DSPBR_LOBE_FLAKE) return dspbr_flake_eval(b, vc, lc);
   return dspbr_sheen_eval(b, vc, lc);
 }
 
@@ -89,6 +90,7 @@ DSPBR_FN float dspbr_lobe_pdf(DspbrBsdf b, int k, vec3 v, vec3 l, float eta_i, f
     return dspbr_ggx_reflection_pdf(b.ggx, vc, dspbr_flip_z(lc));
   }
   if (k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_pdf(b, vc, lc);
+  if (k == DSPBR_LOBE_FLAKE) return dspbr_flake_pdf(b, vc, lc);
   if (!(vc.z > 0.0f)) return 0.0f;
   return k == DSPBR_LOBE_MULTISCATTER ? dspbr_cosine_hemisphere_pdf(lc) : dspbr_uniform_hemisphere_pdf(lc);
 }
@@ -102,13 +104,14 @@ DSPBR_FN float dspbr_lobe_weight(DspbrBsdf b, int k, vec3 v, float eta_i, float 
   if (k == DSPBR_LOBE_TRANSMISSION)
     return b.thin_walled ? dspbr_reflection_weight(b, k, vc, eta_i, eta_o) : dspbr_volumetric_weight(b, vc, eta_i, eta_o);
   if (k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_weight(b, vc);
+  if (k == DSPBR_LOBE_FLAKE) return dspbr_flake_weight(b, vc);
   return dspbr_sheen_weight(b, vc);
 }
 
 // The selection probabilities of the slots at v (side coordinates): the lobes, then the cut-out's
 // pass-through (1 - alpha).
 struct DspbrSelection {
-  float p[7];
+  float p[8];
 };
 DSPBR_FN DspbrSelection dspbr_select(DspbrBsdf b, vec3 v, float eta_i, float eta_o) {
   DspbrSelection sel;
@@ -214,6 +217,7 @@ DSPBR_FN bool dspbr_lobe_sample(DspbrBsdf b, int k, vec3 vk, vec3 u, float eta_i
     if (!(dot(vk, h) > 0.0f) || !dspbr_refract(vk, h, eta, l)) return false;
     return dspbr_volumetric_pdf(b, vk, l, eta_i, eta_o) > 0.0f;
   }
+  if (k == DSPBR_LOBE_FLAKE) return dspbr_flake_sample(b, vk, u.y, u.z, l, lw);
   if (k == DSPBR_LOBE_SHEEN) {
     l = dspbr_sample_uniform_hemisphere(u.y, u.z);
     return l.z > 0.0f;

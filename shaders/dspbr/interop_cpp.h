@@ -30,6 +30,7 @@ inline vec3& operator*=(vec3& a, vec3 b) { return a = a * b; }
 inline vec3& operator*=(vec3& a, float s) { return a = a * s; }
 
 inline float abs(float x) { return std::fabs(x); }
+inline int abs(int x) { return x < 0 ? -x : x; }
 inline float sqrt(float x) { return std::sqrt(x); }
 inline float pow(float x, float y) { return std::pow(x, y); }
 inline float exp(float x) { return std::exp(x); }

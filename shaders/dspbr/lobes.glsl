@@ -191,3 +191,43 @@ DSPBR_FN float dspbr_sheen_layer(DspbrBsdf b, float cos_v, float cos_l) {
   return clamp(min(1.0f - rho_hat * dspbr_sheen_albedo(b, cos_v), 1.0f - rho_hat * dspbr_sheen_albedo(b, cos_l)), 0.0f,
                1.0f);
 }
+
+// ---- The flake c_f B_f (spec "Flake BSDF", "Flip-Flop Effect"): a cone around reflect(v, n_f) ----
+// B_f = 1 / Omega_cone inside the cone, 0 outside, for a flake facing v; 0 for a mirror flake.
+DSPBR_FN float dspbr_flake_cone(DspbrBsdf b, vec3 v, vec3 l) {
+  if (dspbr_is_delta_lobe(b, DSPBR_LOBE_FLAKE) || !(dot(v, b.flake_normal) > 0.0f)) return 0.0f;
+  vec3 r = dspbr_reflect(v, b.flake_normal);
+  return dot(l, r) > 1.0f - b.flake_one_minus_cos ? 1.0f / (2.0f * dspbr_pi * b.flake_one_minus_cos) : 0.0f;
+}
+DSPBR_FN vec3 dspbr_flake_eval(DspbrBsdf b, vec3 v, vec3 l) {
+  if (!(v.z > 0.0f) || !(l.z > 0.0f)) return dspbr_splat(0.0f);
+  float bf = dspbr_flake_cone(b, v, l);
+  if (bf == 0.0f) return dspbr_splat(0.0f);
+  return dspbr_flake_tint(v, l, b.flake_color, b.flip_flop, b.flip_flop_color) * bf;
+}
+DSPBR_FN float dspbr_flake_pdf(DspbrBsdf b, vec3 v, vec3 l) {
+  if (!(v.z > 0.0f) || !(l.z > 0.0f)) return 0.0f;
+  return dspbr_flake_cone(b, v, l);
+}
+DSPBR_FN float dspbr_flake_weight(DspbrBsdf b, vec3 v) {
+  if (!(v.z > 0.0f) || !(dot(v, b.flake_normal) > 0.0f)) return 0.0f;
+  vec3 r = dspbr_reflect(v, b.flake_normal);
+  return max(0.0f, dspbr_mean(dspbr_flake_tint(v, r, b.flake_color, b.flip_flop, b.flip_flop_color))) * max(r.z, 0.0f);
+}
+// A direction uniform in the cone (1 - cos = u1 (1 - cos theta_cone)), or the mirror direction of a
+// mirror flake with its reflectance lw = c_f l.n (the cone's limit).
+DSPBR_FN bool dspbr_flake_sample(DspbrBsdf b, vec3 v, float u1, float u2, DSPBR_OUT(vec3) l, DSPBR_OUT(vec3) lw) {
+  l = vec3(0.0f, 0.0f, 1.0f);
+  lw = dspbr_splat(0.0f);
+  if (!(v.z > 0.0f) || !(dot(v, b.flake_normal) > 0.0f)) return false;
+  vec3 r = normalize(dspbr_reflect(v, b.flake_normal));
+  if (dspbr_is_delta_lobe(b, DSPBR_LOBE_FLAKE)) {
+    l = r;
+    lw = dspbr_flake_tint(v, l, b.flake_color, b.flip_flop, b.flip_flop_color) * l.z;
+    return l.z > 0.0f;
+  }
+  float omc = u1 * b.flake_one_minus_cos;
+  float sn = sqrt(max(0.0f, omc * (2.0f - omc))), phi = 2.0f * dspbr_pi * u2;
+  l = dspbr_to_world(dspbr_frame_from_normal(r), vec3(sn * cos(phi), sn * sin(phi), 1.0f - omc));
+  return dspbr_flake_pdf(b, v, l) > 0.0f;
+}

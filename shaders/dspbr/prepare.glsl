@@ -11,9 +11,10 @@ DSPBR_CONST int DSPBR_LOBE_TRANSMISSION = 2;     // M_t' (thin-walled) or M_t (v
 DSPBR_CONST int DSPBR_LOBE_DIFFUSE = 3;          // rho_d [B_u (1 - s) + s B_c], translucency
 DSPBR_CONST int DSPBR_LOBE_SHEEN = 4;            // M_b rho_b
 DSPBR_CONST int DSPBR_LOBE_CLEARCOAT = 5;        // M_c c F_c
-DSPBR_CONST int DSPBR_LOBE_COUNT = 6;
-DSPBR_CONST int DSPBR_SLOT_PASS = 6;
-DSPBR_CONST int DSPBR_SLOT_COUNT = 7;
+DSPBR_CONST int DSPBR_SLOT_PASS = 6;             // (not a lobe: the cut-out's pass-through)
+DSPBR_CONST int DSPBR_LOBE_FLAKE = 7;            // c_f B_f: the opaque flake replaces the layers below
+DSPBR_CONST int DSPBR_LOBE_COUNT = 8;            // lobe indices 0..7, 6 excepted
+DSPBR_CONST int DSPBR_SLOT_COUNT = 8;
 
 // Sample flags (the reference's LobeFlags).
 DSPBR_CONST uint DSPBR_FLAG_REFLECTION = 1u;
@@ -26,16 +27,21 @@ DSPBR_CONST uint DSPBR_FLAG_DIFFUSE = 16u;
 DSPBR_CONST int DSPBR_SHEEN_MAIN = 0;
 DSPBR_CONST int DSPBR_SHEEN_ASH = 1;
 
-// What the material does not say: the sheen model, and the object's surface area for
-// emissionMode LUMINOUS_POWER (m^2).
+// What the material does not say: the sheen model, the object's surface area for emissionMode
+// LUMINOUS_POWER (m^2), and for the flakes the shading point and the bumped normal in object
+// space (metres; spec "Flake Texture").
 struct DspbrOptions {
   int sheen_model;
   float object_area_m2;
+  vec3 position;
+  vec3 object_normal;
 };
 DSPBR_FN DspbrOptions dspbr_default_options() {
   DspbrOptions o;
   o.sheen_model = DSPBR_SHEEN_MAIN;
   o.object_area_m2 = 1.0f;
+  o.position = vec3(0.0f, 0.0f, 0.0f);
+  o.object_normal = vec3(0.0f, 0.0f, 1.0f);
   return o;
 }
 
@@ -86,6 +92,13 @@ struct DspbrBsdf {
   float film_thickness;
   float film_ior;
   float film_eta_rho;
+  // The flake at the shading point (when opaque): its normal in the core frame, 1 - cos theta_cone,
+  // its colour and the flip-flop effect.
+  vec3 flake_normal;
+  float flake_one_minus_cos;
+  vec3 flake_color;
+  float flip_flop;
+  vec3 flip_flop_color;
 };
 
 DSPBR_FN bool dspbr_has_lobe(DspbrBsdf b, int k) { return ((b.lobes >> uint(k)) & 1u) != 0u; }
@@ -152,8 +165,23 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
   b.film_eta_rho = dspbr_thin_film_metal_eta(m.albedo);
   b.lobes = 0u;
   b.delta = 0u;
+  // GlitteryCore: an opaque flake at the shading point replaces the core and the sheen.
+  DspbrFlake flake;
+  flake.opacity = 0.0f;
+  flake.normal = vec3(0.0f, 0.0f, 1.0f);
+  if (m.flakeCoverage > 0.0f) flake = dspbr_flake_at(o.position, o.object_normal, m.flakeCoverage, m.flakeSize, m.flakeRoughness);
+  bool flake_opaque = flake.opacity > 0.0f;
+  b.flake_normal = flake.normal;
+  b.flake_one_minus_cos = dspbr_flake_one_minus_cos_cone(m.flakeRoughness);
+  b.flake_color = m.flakeColor;
+  b.flip_flop = m.flipFlop;
+  b.flip_flop_color = m.flipFlopColor;
+  if (flake_opaque) {
+    b.lobes |= 1u << uint(DSPBR_LOBE_FLAKE);
+    if (b.flake_one_minus_cos < dspbr_flake_delta_cone) b.delta |= 1u << uint(DSPBR_LOBE_FLAKE);
+  }
   bool mirror = b.ggx.mirror;
-  if (b.w_metal + b.w_opaque + b.w_transp > 0.0f) {
+  if (!flake_opaque && b.w_metal + b.w_opaque + b.w_transp > 0.0f) {
     if (b.w_metal > 0.0f || s * (b.w_opaque + b.w_transp) > 0.0f || b.film_weight > 0.0f) {
       b.lobes |= 1u << uint(DSPBR_LOBE_CORE_REFLECTION);
       if (mirror) b.delta |= 1u << uint(DSPBR_LOBE_CORE_REFLECTION);
@@ -181,7 +209,7 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
   b.alpha_b = max(m.sheenRoughness * m.sheenRoughness, dspbr_min_alpha_b);
   b.sheen_model = o.sheen_model;
   b.sheen_lambda = dspbr_sheen_lambda_fit(b.alpha_b);
-  if (dspbr_max3(m.sheenColor) > 0.0f) b.lobes |= 1u << uint(DSPBR_LOBE_SHEEN);
+  if (dspbr_max3(m.sheenColor) > 0.0f && !flake_opaque) b.lobes |= 1u << uint(DSPBR_LOBE_SHEEN);
   if (b.clearcoat > 0.0f) {
     b.lobes |= 1u << uint(DSPBR_LOBE_CLEARCOAT);
     if (b.coat_ggx.mirror) b.delta |= 1u << uint(DSPBR_LOBE_CLEARCOAT);

@@ -5,7 +5,7 @@
 DSPBR_FN vec3 dspbr_test_vec3(uint k) { return vec3(rec[k], rec[k + 1u], rec[k + 2u]); }
 
 DSPBR_FN void dspbr_test_run(uint i) {
-  uint k = i * 48u;
+  uint k = i * 64u;
   DspbrMaterial m = dspbr_default_material();
   m.albedo = dspbr_test_vec3(k); k += 3u;
   m.metallic = rec[k]; k += 1u;
@@ -36,6 +36,14 @@ DSPBR_FN void dspbr_test_run(uint i) {
   m.thinFilm = rec[k]; k += 1u;
   m.thinFilmThickness = rec[k]; k += 1u;
   m.thinFilmIor = rec[k]; k += 1u;
+  m.flakeCoverage = rec[k]; k += 1u;
+  m.flakeColor = dspbr_test_vec3(k); k += 3u;
+  m.flakeSize = rec[k]; k += 1u;
+  m.flakeRoughness = rec[k]; k += 1u;
+  m.flipFlop = rec[k]; k += 1u;
+  m.flipFlopColor = dspbr_test_vec3(k); k += 3u;
+  o.position = dspbr_test_vec3(k); k += 3u;
+  o.object_normal = dspbr_test_vec3(k); k += 3u;
   vec3 v = dspbr_test_vec3(k); k += 3u;
   vec3 l = dspbr_test_vec3(k);
   DspbrBsdf b = dspbr_prepare(m, dspbr_identity_frame(), o);

@@ -60,12 +60,14 @@ dspbr_shader::DspbrOptions to_shader_options(const dspbr::BsdfOptions& o) {
   dspbr_shader::DspbrOptions s = dspbr_shader::dspbr_default_options();
   s.sheen_model = o.sheen_model == dspbr::SheenModel::Ash ? dspbr_shader::DSPBR_SHEEN_ASH : dspbr_shader::DSPBR_SHEEN_MAIN;
   s.object_area_m2 = float(o.object_area_m2);
+  s.position = vec3(float(o.position.x), float(o.position.y), float(o.position.z));
+  s.object_normal = vec3(float(o.object_normal.x), float(o.object_normal.y), float(o.object_normal.z));
   return s;
 }
 
 bool supported(const dspbr::conformance::Vector& v) {
   for (const std::string& c : v.components)
-    if (c == "flakes" || c == "dispersion") return false;
+    if (c == "dispersion") return false;
   return true;
 }
 
@@ -83,6 +85,8 @@ void pack_record(const dspbr::conformance::Vector& x, float* out) {
   put(float(m.emissionMode)), put(m.emissionEnergyNormalization ? 1.0f : 0.0f), put(m.thinWalled ? 1.0f : 0.0f);
   put(m.ior), put(float(o.sheen_model)), put(o.object_area_m2);
   put(m.thinFilm), put(m.thinFilmThickness), put(m.thinFilmIor);
+  put(m.flakeCoverage), put3(m.flakeColor), put(m.flakeSize), put(m.flakeRoughness), put(m.flipFlop);
+  put3(m.flipFlopColor), put3(o.position), put3(o.object_normal);
   put3(vec3(float(x.v.x), float(x.v.y), float(x.v.z))), put3(vec3(float(x.l.x), float(x.l.y), float(x.l.z)));
   while (i < kRecordFloats) put(0.0f);
 }

@@ -24,7 +24,7 @@ bool supported(const dspbr::conformance::Vector& v);
 
 // One vector's record for the device kernels: the material fields the BSDF reads, the options,
 // v and l (kRecordFloats floats).
-constexpr int kRecordFloats = 48;
+constexpr int kRecordFloats = 64;
 void pack_record(const dspbr::conformance::Vector& v, float* out);
 
 // Per-vector results of an implementation and the verdict against each vector's tolerances:

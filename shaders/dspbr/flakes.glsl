@@ -1,0 +1,175 @@
+// Procedural flakes (spec "Flakes": Flake Texture, Flake BSDF, Flip-Flop Effect), as the reference
+// computes them (src/dspbr/bsdf/flakes.cpp): the triplanar Voronoi grid with its per-cell PCG32
+// (seeded through SplitMix64 by the cell's indices), the flake normal drawn from GGX, the cone BSDF
+// of one flake and the flip-flop tint. The 64-bit arithmetic of the generator is written with two
+// 32-bit words (the common subset has no 64-bit integers); the random numbers keep 24 bits.
+
+struct DspbrU64 {
+  uint hi;
+  uint lo;
+};
+DSPBR_FN DspbrU64 dspbr_u64(uint hi, uint lo) {
+  DspbrU64 r;
+  r.hi = hi;
+  r.lo = lo;
+  return r;
+}
+DSPBR_FN DspbrU64 dspbr_u64_add(DspbrU64 a, DspbrU64 b) {
+  uint lo = a.lo + b.lo;
+  return dspbr_u64(a.hi + b.hi + (lo < a.lo ? 1u : 0u), lo);
+}
+DSPBR_FN DspbrU64 dspbr_u64_xor(DspbrU64 a, DspbrU64 b) { return dspbr_u64(a.hi ^ b.hi, a.lo ^ b.lo); }
+// a >> n for 0 < n < 64.
+DSPBR_FN DspbrU64 dspbr_u64_shr(DspbrU64 a, uint n) {
+  if (n >= 32u) return dspbr_u64(0u, n == 32u ? a.hi : a.hi >> (n - 32u));
+  return dspbr_u64(a.hi >> n, (a.lo >> n) | (a.hi << (32u - n)));
+}
+// The full 64-bit product of two 32-bit words, from 16-bit halves.
+DSPBR_FN DspbrU64 dspbr_mul32(uint a, uint b) {
+  uint a0 = a & 0xFFFFu, a1 = a >> 16u, b0 = b & 0xFFFFu, b1 = b >> 16u;
+  uint p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+  uint mid = (p00 >> 16u) + (p01 & 0xFFFFu) + (p10 & 0xFFFFu);
+  return dspbr_u64(p11 + (p01 >> 16u) + (p10 >> 16u) + (mid >> 16u), (p00 & 0xFFFFu) | (mid << 16u));
+}
+// The low 64 bits of a * b.
+DSPBR_FN DspbrU64 dspbr_u64_mul(DspbrU64 a, DspbrU64 b) {
+  DspbrU64 m = dspbr_mul32(a.lo, b.lo);
+  m.hi += a.hi * b.lo + a.lo * b.hi;
+  return m;
+}
+// SplitMix64 (Steele et al. 2014).
+DSPBR_FN DspbrU64 dspbr_splitmix64(DspbrU64 x) {
+  x = dspbr_u64_add(x, dspbr_u64(0x9e3779b9u, 0x7f4a7c15u));
+  x = dspbr_u64_mul(dspbr_u64_xor(x, dspbr_u64_shr(x, 30u)), dspbr_u64(0xbf58476du, 0x1ce4e5b9u));
+  x = dspbr_u64_mul(dspbr_u64_xor(x, dspbr_u64_shr(x, 27u)), dspbr_u64(0x94d049bbu, 0x133111ebu));
+  return dspbr_u64_xor(x, dspbr_u64_shr(x, 31u));
+}
+// PCG32 (O'Neill 2014) with the reference's seeding (src/dspbr/rng.h).
+struct DspbrPcg32 {
+  DspbrU64 state;
+  DspbrU64 inc;
+};
+DSPBR_FN uint dspbr_pcg32_next(DSPBR_INOUT(DspbrPcg32) g) {
+  DspbrU64 old = g.state;
+  g.state = dspbr_u64_add(dspbr_u64_mul(old, dspbr_u64(0x5851f42du, 0x4c957f2du)), g.inc);
+  uint x = dspbr_u64_shr(dspbr_u64_xor(dspbr_u64_shr(old, 18u), old), 27u).lo;
+  uint rot = old.hi >> 27u;
+  return (x >> rot) | (x << ((32u - rot) & 31u));
+}
+DSPBR_FN DspbrPcg32 dspbr_pcg32(DspbrU64 seed, DspbrU64 stream) {
+  DspbrPcg32 g;
+  DspbrU64 s = dspbr_splitmix64(dspbr_u64_xor(stream, dspbr_u64(0x5851f42du, 0x4c957f2du)));
+  g.inc = dspbr_u64((s.hi << 1u) | (s.lo >> 31u), (s.lo << 1u) | 1u);
+  g.state = dspbr_u64(0u, 0u);
+  dspbr_pcg32_next(g);
+  g.state = dspbr_u64_add(g.state, dspbr_splitmix64(seed));
+  dspbr_pcg32_next(g);
+  return g;
+}
+// The reference's next_double (two words, 53 bits) to the 24 bits a float holds: [0, 1 - 2^-24].
+DSPBR_FN float dspbr_pcg32_float(DSPBR_INOUT(DspbrPcg32) g) {
+  uint hi = dspbr_pcg32_next(g);
+  dspbr_pcg32_next(g);
+  return float(hi >> 8u) * (1.0f / 16777216.0f);
+}
+
+// Omega_cone = 2 pi (1 - cos theta_cone) (spec "Flake BSDF"); alpha_cone^2 = min(Omega(cos 7 deg) /
+// (4 pi - Omega(cos 7 deg)), r_f^2 / 2) (spec eq. alpha-cone; tan^2(3.5 deg) when unclamped).
+DSPBR_FN float dspbr_flake_alpha_cone2(float r_f) { return min(0.0037408661f, 0.5f * r_f * r_f); }
+// 1 - cos theta_cone = 2 alpha_cone^2 / (1 + alpha_cone^2), kept as such (no cancellation).
+DSPBR_FN float dspbr_flake_one_minus_cos_cone(float r_f) {
+  float a2 = dspbr_flake_alpha_cone2(r_f);
+  return 2.0f * a2 / (1.0f + a2);
+}
+// The cone is a Dirac (a mirror flake) below this 1 - cos theta_cone (the reference's kFlakeDeltaConeEps).
+DSPBR_CONST float dspbr_flake_delta_cone = 1e-10f;
+
+// The flake under a shading point (spec Listing "flakes", the Voronoi-nearest of the flakes of the
+// cells around it): opacity o_f in {0, 1} and the normal n_f in the core's local frame.
+struct DspbrFlake {
+  float opacity;
+  vec3 normal;
+};
+DSPBR_FN float dspbr_frac(float x) {
+  float f = x - floor(x);
+  return f < 1.0f ? f : 0.0f;
+}
+DSPBR_FN float dspbr_sgn(float x) { return x < 0.0f ? -1.0f : 1.0f; }
+
+// The flakes of grid cell (ii, jj) (unwrapped; hashed modulo res) against the best found so far.
+DSPBR_FN void dspbr_flake_probe(int ii, int jj, int res, float gx, float gy, float coverage, DSPBR_INOUT(float) best_d2,
+                                DSPBR_INOUT(float) best_xi3, DSPBR_INOUT(float) best_xi4,
+                                DSPBR_INOUT(float) opacity) {
+  // The cell modulo res (|offset| <= 2 < res: one wrap; no % of a negative number).
+  int wi = ii < 0 ? ii + res : (ii >= res ? ii - res : ii);
+  int wj = jj < 0 ? jj + res : (jj >= res ? jj - res : jj);
+  DspbrPcg32 g = dspbr_pcg32(dspbr_u64(0u, uint(wi)), dspbr_u64(0u, uint(wj)));
+  for (int k = 0; k < 4; ++k) {  // k = 4 flakes per cell, 5 numbers each (spec generate_flake)
+    float xi1 = dspbr_pcg32_float(g), xi2 = dspbr_pcg32_float(g);
+    float xi3 = dspbr_pcg32_float(g), xi4 = dspbr_pcg32_float(g);
+    float xi5 = dspbr_pcg32_float(g);
+    float dx = gx - (float(ii) + xi1), dy = gy - (float(jj) + xi2);
+    float d2 = dx * dx + dy * dy;
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      best_xi3 = xi3;
+      best_xi4 = xi4;
+      opacity = xi5 < coverage ? 1.0f : 0.0f;  // O_f(f, xi_5)
+    }
+  }
+}
+
+// p: the shading point in object space (m); n: the bumped normal in object space.
+DSPBR_FN DspbrFlake dspbr_flake_at(vec3 p, vec3 n, float coverage, float size_mm, float r_f) {
+  DspbrFlake out_f;
+  out_f.opacity = 0.0f;
+  out_f.normal = vec3(0.0f, 0.0f, 1.0f);
+  if (!(size_mm > 0.0f) || isnan(p.x + p.y + p.z) || isinf(p.x + p.y + p.z)) return out_f;
+  // res = max(4, ceil(sqrt(N / 4))), N = 1 / (3 sqrt(3) / 2 (s_f / 2000)^2) flakes per m^2, capped
+  // at 2^23 cells per side (float resolves no finer grid at p in [-1, 1] m).
+  float r = size_mm / 2000.0f;
+  float count = 1.0f / (1.5f * sqrt(3.0f) * r * r);
+  int res = int(min(max(4.0f, ceil(sqrt(count / 4.0f))), 8388608.0f));
+  // Triplanar mapping T_map(p, n) (spec eq. tr-mapping).
+  float ax = abs(n.x), ay = abs(n.y), az = abs(n.z), u, v;
+  if (ax > ay && ax > az) {
+    u = dspbr_frac(dspbr_sgn(p.x) * p.y + 0.5f);
+    v = dspbr_frac(p.z + 0.5f);
+  } else if (ay > ax && ay > az) {
+    u = dspbr_frac(-dspbr_sgn(p.y) * p.x + 0.5f);
+    v = dspbr_frac(p.z + 0.5f);
+  } else {
+    u = dspbr_frac(dspbr_sgn(p.z) * p.x + 0.5f);
+    v = dspbr_frac(p.y + 0.5f);
+  }
+  float gx = u * float(res), gy = v * float(res);
+  int i = min(int(floor(gx)), res - 1), j = min(int(floor(gy)), res - 1);
+  float best_d2 = 3.402823466e38f, xi3 = 0.0f, xi4 = 0.0f, opacity = 0.0f;
+  for (int di = -1; di <= 1; ++di)
+    for (int dj = -1; dj <= 1; ++dj) dspbr_flake_probe(i + di, j + dj, res, gx, gy, coverage, best_d2, xi3, xi4, opacity);
+  // The 3x3 block is exact unless the nearest flake is farther than its border; 5x5 always is.
+  float fx = gx - float(i), fy = gy - float(j);
+  float margin = 1.0f + min(min(fx, 1.0f - fx), min(fy, 1.0f - fy));
+  if (best_d2 > margin * margin) {
+    for (int di = -2; di <= 2; ++di)
+      for (int dj = -2; dj <= 2; ++dj)
+        if (max(abs(di), abs(dj)) == 2) dspbr_flake_probe(i + di, j + dj, res, gx, gy, coverage, best_d2, xi3, xi4, opacity);
+  }
+  // K(r_f, xi_3, xi_4): cos^2 theta = (1 - xi) / (1 - (1 - alpha^2) xi), alpha = alpha_ggx =
+  // sqrt(r_f^2 - alpha_cone^2) (spec eq. roughness-distribution).
+  float a2 = max(0.0f, r_f * r_f - dspbr_flake_alpha_cone2(r_f));
+  float w = (1.0f - xi3) / (1.0f - (1.0f - a2) * xi3);
+  float s = sqrt(max(0.0f, 1.0f - w)), phi = 2.0f * dspbr_pi * xi4;
+  out_f.normal = vec3(s * cos(phi), s * sin(phi), sqrt(max(0.0f, w)));
+  out_f.opacity = opacity;
+  return out_f;
+}
+
+// Flip-flop tint c_f = rho_f + (rho_ff - rho_f) (v.h_r)^(1 / f_f^2) (spec "Flip-Flop Effect").
+DSPBR_FN vec3 dspbr_flake_tint(vec3 v, vec3 l, vec3 rho_f, float f_f, vec3 rho_ff) {
+  if (!(f_f > 0.0f)) return rho_f;
+  vec3 hs = v + l;
+  float len = length(hs);
+  float vh = len > 0.0f ? clamp(dot(v, hs) / len, 0.0f, 1.0f) : 0.0f;
+  return rho_f + (rho_ff - rho_f) * pow(vh, 1.0f / (f_f * f_f));
+}
