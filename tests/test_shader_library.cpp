@@ -55,8 +55,13 @@ TEST(ShaderLibrary, SamplingMatchesPdfByChiSquare) {
   };
   std::vector<View> views;
   for (std::size_t i = 0; i < set.size(); ++i) {
-    views.push_back({i, 0.7}), views.push_back({i, 0.2});
-    if (!vector_material(set[i]).thinWalled) views.push_back({i, -0.5});
+    // A thin film costs spectral quadratures per pdf call (6.8 us each): one view, 30 theta bins
+    // and the consistency of every 20th sample for those (the expected counts call pdf ~10^5 times).
+    const Material m = vector_material(set[i]);
+    views.push_back({i, 0.7});
+    if (m.thinFilm > 0) continue;
+    views.push_back({i, 0.2});
+    if (!m.thinWalled) views.push_back({i, -0.5});
   }
   s.num_tests = int(views.size());
   int failed = 0;
@@ -65,7 +70,9 @@ TEST(ShaderLibrary, SamplingMatchesPdfByChiSquare) {
     const double mu = views[k].mu, st = std::sqrt(1 - mu * mu);
     const shader_test::ShaderBsdf b(vector_material(x), vector_options(x));
     s.stream = k;
-    const validate::Chi2Result r = validate::chi2_test(b, {st * 0.8, st * 0.6, mu}, s);
+    validate::Chi2Settings sk = s;
+    if (vector_material(x).thinFilm > 0) sk.theta_bins = 30, sk.consistency_stride = 20;  // see above
+    const validate::Chi2Result r = validate::chi2_test(b, {st * 0.8, st * 0.6, mu}, sk);
     if (!r.passed()) {
       ++failed;
       ADD_FAILURE() << x.id << " at cos " << mu << ": p " << r.p_value << " (alpha " << r.alpha << "), outside "
