@@ -15,6 +15,7 @@
 #include "dspbr/sampling.glsl"
 #include "dspbr/thin_film.glsl"
 #include "dspbr/flakes.glsl"
+#include "dspbr/volume.glsl"
 #include "dspbr/prepare.glsl"
 #include "dspbr/lobes.glsl"
 #include "dspbr/bsdf.glsl"

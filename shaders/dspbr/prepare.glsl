@@ -28,11 +28,13 @@ DSPBR_CONST int DSPBR_SHEEN_MAIN = 0;
 DSPBR_CONST int DSPBR_SHEEN_ASH = 1;
 
 // What the material does not say: the sheen model, the object's surface area for emissionMode
-// LUMINOUS_POWER (m^2), and for the flakes the shading point and the bumped normal in object
+// LUMINOUS_POWER (m^2), the wavelength of a spectral renderer's path (nm; > 0 with abbeNumber > 0:
+// the dispersive IOR), and for the flakes the shading point and the bumped normal in object
 // space (metres; spec "Flake Texture").
 struct DspbrOptions {
   int sheen_model;
   float object_area_m2;
+  float wavelength_nm;
   vec3 position;
   vec3 object_normal;
 };
@@ -40,6 +42,7 @@ DSPBR_FN DspbrOptions dspbr_default_options() {
   DspbrOptions o;
   o.sheen_model = DSPBR_SHEEN_MAIN;
   o.object_area_m2 = 1.0f;
+  o.wavelength_nm = 0.0f;
   o.position = vec3(0.0f, 0.0f, 0.0f);
   o.object_normal = vec3(0.0f, 0.0f, 1.0f);
   return o;
@@ -138,7 +141,7 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
   b.thin_walled = m.thinWalled;
   b.alpha_cut = dspbr_clamp_nan(m.cutoutOpacity, 0.0f, 1.0f);
   b.clearcoat = m.clearcoat;
-  b.eta = m.ior;
+  b.eta = dspbr_dispersion_ior(m.ior, m.abbeNumber, o.wavelength_nm);
   // Anisotropic roughness (r_u, r_v) = r (1, 1 - o), alpha = r^2 (spec "Microfacet BSDF").
   float r_u = m.roughness, r_v = m.roughness * (1.0f - m.anisotropy);
   b.ggx = dspbr_ggx(r_u * r_u, r_v * r_v);

@@ -1,7 +1,7 @@
 // Host-side helpers of the shader-library tests (tests/shader_library/): the reference material
 // (dspbr::Material) as the shader library's DspbrMaterial, field by field (the same names), its
-// packing into the float records the device kernels read (conformance.comp / .hlsl, in the order
-// of kPackedFields), and which components the library does not implement yet.
+// packing into the float records the device kernels read (kernel_common.glsl, in pack_record's
+// order), the verdict on a set of results, and the library behind the reference's Bsdf interface.
 #pragma once
 #include <string>
 #include <vector>
@@ -17,10 +17,6 @@ namespace shader_test {
 
 dspbr_shader::DspbrMaterial to_shader_material(const dspbr::Material& m);
 dspbr_shader::DspbrOptions to_shader_options(const dspbr::BsdfOptions& o);
-
-// Components of the reference that the shader library does not implement yet (a vector with one
-// of them is reported "not supported", never judged).
-bool supported(const dspbr::conformance::Vector& v);
 
 // One vector's record for the device kernels: the material fields the BSDF reads, the options,
 // v and l (kRecordFloats floats).
