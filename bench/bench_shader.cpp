@@ -80,6 +80,17 @@ void bare_ggx(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// One thin-film reflectance R (0.4 um film of IOR 1.3 over IOR 1.5, the parameter defaults) at
+// 64 angles in turn: the spectral quadrature a film costs per Fresnel factor.
+void thin_film_R(benchmark::State& state) {
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(dspbr_thin_film_reflectance(0.05f + 0.9f * float(i & 63) / 64.0f, 1.5f, 0.4f, 1.3f));
+    ++i;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 enum class What { PrepareEval, Prepare, Eval, Sample };
 
 void run(benchmark::State& state, int index, What what) {
@@ -109,6 +120,7 @@ void run(benchmark::State& state, int index, What what) {
 
 [[maybe_unused]] const bool registered = [] {
   benchmark::RegisterBenchmark("BM_Shader/bare_ggx", bare_ggx);
+  benchmark::RegisterBenchmark("BM_Shader/thin_film_R", thin_film_R);
   for (int m = 0; m < 4; ++m) {
     const std::string name = kNames[m];
     benchmark::RegisterBenchmark(("BM_Shader/prepare_eval/" + name).c_str(), run, m, What::PrepareEval);

@@ -1,5 +1,8 @@
 #!/usr/bin/python3
-"""The reference BSDF's speed as ratios to the bare GGX eval (docs/bsdf.md, "Speed").
+"""The reference BSDF's (or with --shader the shader library's) speed as ratios to the bare GGX eval.
+
+docs/bsdf.md, "Speed"; with --shader, docs/renderer.md, "Cost" (the C++ compile of shaders/dspbr.h,
+BM_Shader/*, against a bare float GGX eval in the same run).
 
 Runs build/dspbr_bench on the BSDF benchmarks and the table lookups with random interleaving
 (every repetition of every benchmark in a shuffled order, so that a slow spell of the machine
@@ -7,7 +10,7 @@ spreads over all of them) and prints a Markdown table: the median CPU time over 
 its ratio to the median of BM_Eval/bare_ggx, the spread of the ratio (each repetition of a
 benchmark against the bare median), the target and whether the median holds it.
 
-    /usr/bin/python3 scripts/bench_ratios.py [--bench build/dspbr_bench] [--repetitions 10]
+    /usr/bin/python3 scripts/bench_ratios.py [--bench build/dspbr_bench] [--repetitions 10] [--shader]
 """
 import argparse
 import json
@@ -32,6 +35,9 @@ LOOKUPS = {"BM_FitLutTableLookup/0": "published", "BM_FitLutTableLookup/1": "ren
            "BM_LookupGeneratedC": "generated C", "BM_FitLutBilinearFloat": "float bilinear, published 32x32"}
 LOOKUPS_PER_ITERATION = 1024  # bench/bench_fits.cpp: 1024 (mu, r) per iteration
 FILTER = "BM_(Eval|Sample)/[a-z_]*$|BM_FitLutTableLookup|BM_SliceLookup|BM_WarpGgxCos|BM_LookupGeneratedC|BM_FitLutBilinearFloat"
+# --shader: the shader library per hit (prepare + eval as a textured material pays it).
+SHADER_TARGETS = {"BM_Shader/prepare_eval/plastic": 6, "BM_Shader/prepare_eval/metal": 5}
+SHADER_FILTER = "BM_Shader/"
 
 
 def fmt_ns(ns):
@@ -43,7 +49,10 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--bench", default=os.path.join(here, "build", "dspbr_bench"), help="dspbr_bench binary")
     ap.add_argument("--repetitions", type=int, default=10, help="repetitions per benchmark (default 10)")
+    ap.add_argument("--shader", action="store_true", help="the shader library's C++ compile (BM_Shader/*)")
     args = ap.parse_args()
+    bare_name = "BM_Shader/bare_ggx" if args.shader else "BM_Eval/bare_ggx"
+    targets = SHADER_TARGETS if args.shader else RATIO_TARGETS
     if not os.access(args.bench, os.X_OK):
         print(f"bench_ratios: {args.bench}: not an executable (build it: cmake --build build --target dspbr_bench)",
               file=sys.stderr)
@@ -53,7 +62,7 @@ def main():
         return 2
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "bench.json")
-        run = subprocess.run([args.bench, f"--benchmark_filter={FILTER}", f"--benchmark_repetitions={args.repetitions}",
+        run = subprocess.run([args.bench, f"--benchmark_filter={SHADER_FILTER if args.shader else FILTER}", f"--benchmark_repetitions={args.repetitions}",
                         "--benchmark_enable_random_interleaving=true", f"--benchmark_out={out}",
                         "--benchmark_out_format=json"], stdout=subprocess.DEVNULL,
                              stderr=subprocess.PIPE, text=True)
@@ -67,17 +76,17 @@ def main():
     for b in data["benchmarks"]:
         if b.get("run_type") == "iteration":
             runs.setdefault(b["run_name"], []).append(b["cpu_time"])  # ns (the benchmarks' default unit)
-    bare = statistics.median(runs["BM_Eval/bare_ggx"])
-    print(f"bare GGX eval: median {fmt_ns(bare)} over {len(runs['BM_Eval/bare_ggx'])} repetitions\n")
+    bare = statistics.median(runs[bare_name])
+    print(f"bare GGX eval: median {fmt_ns(bare)} over {len(runs[bare_name])} repetitions\n")
     print("| benchmark | median CPU time | ratio to bare_ggx | ratio range | target | held |")
     print("|---|---:|---:|---:|---:|:---:|")
     # bare_ggx, then the evals, then the samples, each in name order
     order = sorted((n for n in runs if n not in LOOKUPS),
-                   key=lambda n: (n != "BM_Eval/bare_ggx", not n.startswith("BM_Eval/"), n))
+                   key=lambda n: (n != bare_name, not n.startswith("BM_Eval/"), n))
     for name in order:
         times = runs[name]
         med = statistics.median(times)
-        target = RATIO_TARGETS.get(name)
+        target = targets.get(name)
         held = "" if target is None else ("yes" if med / bare <= target else "no")
         print(f"| `{name}` | {fmt_ns(med)} | {med / bare:.2f} | {min(times) / bare:.2f}–{max(times) / bare:.2f} | "
               f"{'≤ ' + str(target) if target else ''} | {held} |")

@@ -12,6 +12,7 @@ PKGS=(build-essential cmake pkg-config
       python3-dev pybind11-dev python3-pybind11 python3-pytest
       python3-venv python3-pip python3-setuptools python3-wheel mypy  # pip install . (pyproject.toml), stubs
       mesa-vulkan-drivers libvulkan-dev  # lavapipe: the shader tests on a Vulkan driver (tests/vulkan.cmake)
+      spirv-tools  # spirv-opt / spirv-dis: the shader library's SPIR-V cost (scripts/shaders/spirv_cost.sh)
       clang libclang-rt-14-dev)  # libFuzzer + sanitizers (fuzz/, CTest fuzz_short)
 missing=()
 for p in "${PKGS[@]}"; do

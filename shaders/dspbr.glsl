@@ -1,11 +1,16 @@
 // The DSPBR 2025x BSDF for GLSL 450 (Vulkan, OpenGL 4.5): the shader library's body
 // (shaders/dspbr/*.glsl, the same source the C++ and HLSL entries compile). The including shader
 // enables `#extension GL_GOOGLE_include_directive : require` and puts this folder and the
-// generated lookups' folder on the include path; the tables are textures when
-// DSPBR_LOOKUP_TEXTURES is defined (bindings: dspbr_lookup.glsl), constant arrays otherwise.
+// generated lookups' folder on the include path; the tables are textures (bindings:
+// dspbr_lookup.glsl) unless DSPBR_LOOKUP_ARRAYS is defined.
 // Usage: docs/renderer.md.
 #ifndef DSPBR_GLSL_INCLUDED
 #define DSPBR_GLSL_INCLUDED
+// The tables: textures unless DSPBR_LOOKUP_ARRAYS asks for constant arrays (slow to compile on
+// some drivers: docs/renderer.md, "Tables").
+#if !defined(DSPBR_LOOKUP_ARRAYS) && !defined(DSPBR_LOOKUP_TEXTURES)
+#define DSPBR_LOOKUP_TEXTURES
+#endif
 #include "dspbr_lookup.glsl"
 #include "dspbr/interop.glsl"
 #include "dspbr/math.glsl"

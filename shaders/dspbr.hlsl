@@ -1,10 +1,14 @@
 // The DSPBR 2025x BSDF for HLSL (Shader Model 6; here compiled to SPIR-V by glslang's HLSL front
 // end): the shader library's body (shaders/dspbr/*.glsl, the same source the C++ and GLSL entries
 // compile). Include path: this folder and the generated lookups' folder; the tables are
-// textures when DSPBR_LOOKUP_TEXTURES is defined (registers: dspbr_lookup.hlsl), constant arrays
-// otherwise. Usage: docs/renderer.md.
+// textures (registers: dspbr_lookup.hlsl) unless DSPBR_LOOKUP_ARRAYS is defined. Usage: docs/renderer.md.
 #ifndef DSPBR_HLSL_INCLUDED
 #define DSPBR_HLSL_INCLUDED
+// The tables: textures unless DSPBR_LOOKUP_ARRAYS asks for constant arrays (slow to compile on
+// some drivers: docs/renderer.md, "Tables").
+#if !defined(DSPBR_LOOKUP_ARRAYS) && !defined(DSPBR_LOOKUP_TEXTURES)
+#define DSPBR_LOOKUP_TEXTURES
+#endif
 #include "dspbr_lookup.hlsl"
 #include "dspbr/interop.hlsl"
 #include "dspbr/math.glsl"
