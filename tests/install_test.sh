@@ -20,6 +20,8 @@ dspbr="$prefix/bin/dspbr"
 for f in bin/dspbr lib/libdspbr_core.a lib/libdspbr_lutgen.a lib/libdspbr_formats.a lib/libdspbr_validate.a \
          lib/libdspbr_fit.a lib/libdspbr_conformance.a lib/cmake/dspbr/dspbr_coreTargets.cmake lib/cmake/dspbr/dspbrConfig.cmake lib/cmake/dspbr/dspbrConfigVersion.cmake \
          lib/cmake/dspbr/dspbrTargets.cmake lib/pkgconfig/dspbr.pc include/dspbr/bsdf/material_bsdf.h \
+         lib/cmake/dspbr/dspbr_shadersTargets.cmake share/dspbr/shaders/dspbr.h share/dspbr/shaders/dspbr.glsl \
+         share/dspbr/shaders/dspbr.hlsl share/dspbr/shaders/dspbr/bsdf.glsl share/dspbr/shaders/dspbr_lookup.glsl \
          include/dspbr/version.h include/dspbr/luts/pbrlut.hpp include/dspbr/luts/dspbr_lookup.h \
          include/dspbr/luts/dspbr_lookup.glsl include/dspbr/luts/dspbr_lookup.hlsl \
          include/dspbr/luts/dspbr_glass_lookup.h include/dspbr/luts/dspbr_glass_lookup.glsl \
@@ -81,6 +83,7 @@ step "examples/ against the moved prefix (CMake package)"
 "$cmake" --build ex -j2 > ex-build.log
 ./ex/bsdf_example
 ./ex/core_renderer > /dev/null
+./ex/shader_furnace
 
 step "COMPONENTS core alone from the moved prefix: only dspbr::core defined, no Ceres/OpenImageIO/TBB/glog linked"
 "$cmake" -S "$src/examples" -B ex-core -DCMAKE_PREFIX_PATH="$prefix" -DDSPBR_COMPONENTS=core > ex-core-configure.log
@@ -89,18 +92,18 @@ step "COMPONENTS core alone from the moved prefix: only dspbr::core defined, no 
 bash "$src/tests/core_links_alone.sh" ex-core/core_renderer > /dev/null
 
 step "each component on its own from the moved prefix; an unknown one is refused"
-for c in core lutgen formats validate fit conformance; do
+for c in core lutgen formats validate fit conformance shaders; do
   mkdir -p "comp-$c"
   printf 'cmake_minimum_required(VERSION 3.20)\nproject(c LANGUAGES CXX)\nfind_package(dspbr CONFIG REQUIRED COMPONENTS %s)\nif(NOT TARGET dspbr::%s)\n  message(FATAL_ERROR "no dspbr::%s")\nendif()\n' \
     "$c" "$c" "$c" > "comp-$c/CMakeLists.txt"
   "$cmake" -S "comp-$c" -B "comp-$c/b" -DCMAKE_PREFIX_PATH="$prefix" > "comp-$c.log" || { cat "comp-$c.log"; exit 1; }
 done
 mkdir -p comp-bad
-printf 'cmake_minimum_required(VERSION 3.20)\nproject(c LANGUAGES CXX)\nfind_package(dspbr CONFIG REQUIRED COMPONENTS shaders)\n' > comp-bad/CMakeLists.txt
+printf 'cmake_minimum_required(VERSION 3.20)\nproject(c LANGUAGES CXX)\nfind_package(dspbr CONFIG REQUIRED COMPONENTS nonsense)\n' > comp-bad/CMakeLists.txt
 if "$cmake" -S comp-bad -B comp-bad/b -DCMAKE_PREFIX_PATH="$prefix" > comp-bad.log 2>&1; then
   echo "an unknown component was accepted"; exit 1
 fi
-grep -q "unknown dspbr component 'shaders'" comp-bad.log || { cat comp-bad.log; exit 1; }
+grep -q "unknown dspbr component 'nonsense'" comp-bad.log || { cat comp-bad.log; exit 1; }
 
 step "conformance kit from the moved prefix: generate (the installed scenes), the C harness, check (HTML)"
 "$dspbr" conformance generate --directions 2 --no-albedo --out C > conformance.log
