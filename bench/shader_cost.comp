@@ -4,6 +4,9 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
+#ifdef DSPBR_USE_SPECIALIZATION  // a `dspbr shader` header on the include path
+#include "dspbr_specialization.h"
+#endif
 #include "dspbr.glsl"
 layout(std430, binding = 20) readonly buffer In { float x[]; };
 layout(std430, binding = 21) writeonly buffer Out { float o[]; };

@@ -13,6 +13,7 @@
 #endif
 #include "dspbr_lookup.glsl"
 #include "dspbr/interop.glsl"
+#include "dspbr/features.glsl"
 #include "dspbr/math.glsl"
 #include "dspbr/material.glsl"
 #include "dspbr/ggx.glsl"

@@ -8,6 +8,7 @@
 #include "dspbr/interop_cpp.h"
 
 namespace dspbr_shader {
+#include "dspbr/features.glsl"
 #include "dspbr/math.glsl"
 #include "dspbr/material.glsl"
 #include "dspbr/ggx.glsl"

@@ -11,6 +11,7 @@
 #endif
 #include "dspbr_lookup.hlsl"
 #include "dspbr/interop.hlsl"
+#include "dspbr/features.glsl"
 #include "dspbr/math.glsl"
 #include "dspbr/material.glsl"
 #include "dspbr/ggx.glsl"

@@ -82,3 +82,13 @@ else()
     set_tests_properties(${t} PROPERTIES DISABLED TRUE)
   endforeach()
 endif()
+
+# `dspbr shader --scene` for every validation scene: each header compiles (C++, -Werror) and the
+# GLSL kernel specialised by it passes that scene's vectors on the device.
+if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
+  add_test(NAME shader_scene_specializations
+           COMMAND bash ${_sl}/specializations.sh $<TARGET_FILE:dspbr> $<TARGET_FILE:shader_vk_conformance>
+                   ${_sl_vectors} ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/shader-specializations)
+  set_tests_properties(shader_scene_specializations PROPERTIES FIXTURES_REQUIRED shader_vectors SKIP_RETURN_CODE 77
+                       TIMEOUT 900)
+endif()

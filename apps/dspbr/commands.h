@@ -53,5 +53,6 @@ void add_fit_command(CLI::App& app);       // cmd_fit.cpp      (Ceres fits)
 void add_params_command(CLI::App& app);    // cmd_params.cpp   (parameter JSON, instances)
 void add_scene_command(CLI::App& app);     // cmd_scene.cpp    (glTF scenes)
 void add_conformance_command(CLI::App& app);  // cmd_conformance.cpp (conformance vectors, checker)
+void add_shader_command(CLI::App& app);       // cmd_shader.cpp   (shader library specialisation)
 
 }  // namespace dspbr::cli

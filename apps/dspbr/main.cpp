@@ -91,6 +91,7 @@ int main(int argc, char** argv) {
   dspbr::cli::add_params_command(app);
   dspbr::cli::add_scene_command(app);
   dspbr::cli::add_conformance_command(app);
+  dspbr::cli::add_shader_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -46,10 +46,10 @@ DSPBR_FN DspbrLayers dspbr_layers(DspbrBsdf b, vec3 v, vec3 l) {
   float s = b.alpha_cut;
   f.coat = s;
   float below = s;
-  if (b.clearcoat > 0.0f)
+  if (DSPBR_HAS_CLEARCOAT != 0 && b.clearcoat > 0.0f)
     below *= 1.0f - b.clearcoat * max(dspbr_clearcoat_fresnel(dot(v, b.coat.n)), dspbr_clearcoat_fresnel(dot(l, b.coat.n)));
   f.sheen = below;
-  f.core = dspbr_has_lobe(b, DSPBR_LOBE_SHEEN) ? below * dspbr_sheen_layer(b, dot(v, b.core.n), dot(l, b.core.n)) : below;
+  f.core = DSPBR_HAS_SHEEN != 0 && dspbr_has_lobe(b, DSPBR_LOBE_SHEEN) ? below * dspbr_sheen_layer(b, dot(v, b.core.n), dot(l, b.core.n)) : below;
   return f;
 }
 DSPBR_FN float dspbr_layer_of(DspbrLayers f, int k) {
@@ -61,7 +61,7 @@ DSPBR_FN vec3 dspbr_flip_z(vec3 w) { return vec3(w.x, w.y, -w.z); }
 
 // f of lobe k (no layer factor) for v, l in the side's coordinates.
 DSPBR_FN vec3 dspbr_lobe_eval(DspbrBsdf b, int k, vec3 v, vec3 l, float eta_i, float eta_o) {
-  if (k == DSPBR_LOBE_CLEARCOAT) {
+  if (DSPBR_HAS_CLEARCOAT != 0 && k == DSPBR_LOBE_CLEARCOAT) {
     // The coat reflects: nothing towards the other side of the core's surface.
     if (!(dot(l, b.core.n) > 0.0f)) return dspbr_splat(0.0f);
     return dspbr_reflection_eval(b, k, dspbr_to_local(b.coat, v), dspbr_to_local(b.coat, l), eta_i, eta_o);
@@ -69,43 +69,49 @@ DSPBR_FN vec3 dspbr_lobe_eval(DspbrBsdf b, int k, vec3 v, vec3 l, float eta_i, f
   vec3 vc = dspbr_to_local(b.core, v), lc = dspbr_to_local(b.core, l);
   if (k == DSPBR_LOBE_CORE_REFLECTION) return dspbr_reflection_eval(b, k, vc, lc, eta_i, eta_o);
   if (k == DSPBR_LOBE_MULTISCATTER) return dspbr_multiscatter_eval(b, vc, lc);
-  if (k == DSPBR_LOBE_TRANSMISSION) {
-    if (!b.thin_walled) return dspbr_volumetric_eval(b, vc, lc, eta_i, eta_o);
+  if (DSPBR_HAS_VOLUMETRIC_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && !b.thin_walled)
+    return dspbr_volumetric_eval(b, vc, lc, eta_i, eta_o);
+  if (DSPBR_HAS_THIN_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && b.thin_walled) {
     if (!(lc.z < 0.0f)) return dspbr_splat(0.0f);
     return dspbr_reflection_eval(b, k, vc, dspbr_flip_z(lc), eta_i, eta_o);  // M_t' = M_r(v, l mirrored)
   }
-  if (k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_eval(b, vc, lc);
-  if (k == DSPBR_LOBE_FLAKE) return dspbr_flake_eval(b, vc, lc);
-  return dspbr_sheen_eval(b, vc, lc);
+  if (DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_eval(b, vc, lc);
+  if (DSPBR_HAS_FLAKES != 0 && k == DSPBR_LOBE_FLAKE) return dspbr_flake_eval(b, vc, lc);
+  if (DSPBR_HAS_SHEEN != 0 && k == DSPBR_LOBE_SHEEN) return dspbr_sheen_eval(b, vc, lc);
+  return dspbr_splat(0.0f);
 }
 
 // The density with which lobe k samples l.
 DSPBR_FN float dspbr_lobe_pdf(DspbrBsdf b, int k, vec3 v, vec3 l, float eta_i, float eta_o) {
-  if (k == DSPBR_LOBE_CLEARCOAT)
+  if (DSPBR_HAS_CLEARCOAT != 0 && k == DSPBR_LOBE_CLEARCOAT)
     return dspbr_ggx_reflection_pdf(b.coat_ggx, dspbr_to_local(b.coat, v), dspbr_to_local(b.coat, l));
   vec3 vc = dspbr_to_local(b.core, v), lc = dspbr_to_local(b.core, l);
   if (k == DSPBR_LOBE_CORE_REFLECTION) return dspbr_ggx_reflection_pdf(b.ggx, vc, lc);
-  if (k == DSPBR_LOBE_TRANSMISSION) {
-    if (!b.thin_walled) return dspbr_volumetric_pdf(b, vc, lc, eta_i, eta_o);
+  if (DSPBR_HAS_VOLUMETRIC_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && !b.thin_walled)
+    return dspbr_volumetric_pdf(b, vc, lc, eta_i, eta_o);
+  if (DSPBR_HAS_THIN_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && b.thin_walled)
     return dspbr_ggx_reflection_pdf(b.ggx, vc, dspbr_flip_z(lc));
-  }
-  if (k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_pdf(b, vc, lc);
-  if (k == DSPBR_LOBE_FLAKE) return dspbr_flake_pdf(b, vc, lc);
+  if (DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_pdf(b, vc, lc);
+  if (DSPBR_HAS_FLAKES != 0 && k == DSPBR_LOBE_FLAKE) return dspbr_flake_pdf(b, vc, lc);
   if (!(vc.z > 0.0f)) return 0.0f;
-  return k == DSPBR_LOBE_MULTISCATTER ? dspbr_cosine_hemisphere_pdf(lc) : dspbr_uniform_hemisphere_pdf(lc);
+  if (k == DSPBR_LOBE_MULTISCATTER) return dspbr_cosine_hemisphere_pdf(lc);
+  return DSPBR_HAS_SHEEN != 0 && k == DSPBR_LOBE_SHEEN ? dspbr_uniform_hemisphere_pdf(lc) : 0.0f;
 }
 
 // The selection weight of lobe k at v, without its layer factor.
 DSPBR_FN float dspbr_lobe_weight(DspbrBsdf b, int k, vec3 v, float eta_i, float eta_o) {
-  if (k == DSPBR_LOBE_CLEARCOAT) return dspbr_reflection_weight(b, k, dspbr_to_local(b.coat, v), eta_i, eta_o);
+  if (DSPBR_HAS_CLEARCOAT != 0 && k == DSPBR_LOBE_CLEARCOAT) return dspbr_reflection_weight(b, k, dspbr_to_local(b.coat, v), eta_i, eta_o);
   vec3 vc = dspbr_to_local(b.core, v);
   if (k == DSPBR_LOBE_CORE_REFLECTION) return dspbr_reflection_weight(b, k, vc, eta_i, eta_o);
   if (k == DSPBR_LOBE_MULTISCATTER) return dspbr_multiscatter_weight(b, vc);
-  if (k == DSPBR_LOBE_TRANSMISSION)
-    return b.thin_walled ? dspbr_reflection_weight(b, k, vc, eta_i, eta_o) : dspbr_volumetric_weight(b, vc, eta_i, eta_o);
-  if (k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_weight(b, vc);
-  if (k == DSPBR_LOBE_FLAKE) return dspbr_flake_weight(b, vc);
-  return dspbr_sheen_weight(b, vc);
+  if (DSPBR_HAS_VOLUMETRIC_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && !b.thin_walled)
+    return dspbr_volumetric_weight(b, vc, eta_i, eta_o);
+  if (DSPBR_HAS_THIN_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && b.thin_walled)
+    return dspbr_reflection_weight(b, k, vc, eta_i, eta_o);
+  if (DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_weight(b, vc);
+  if (DSPBR_HAS_FLAKES != 0 && k == DSPBR_LOBE_FLAKE) return dspbr_flake_weight(b, vc);
+  if (DSPBR_HAS_SHEEN != 0 && k == DSPBR_LOBE_SHEEN) return dspbr_sheen_weight(b, vc);
+  return 0.0f;
 }
 
 // The selection probabilities of the slots at v (side coordinates): the lobes, then the cut-out's
@@ -217,8 +223,8 @@ DSPBR_FN bool dspbr_lobe_sample(DspbrBsdf b, int k, vec3 vk, vec3 u, float eta_i
     if (!(dot(vk, h) > 0.0f) || !dspbr_refract(vk, h, eta, l)) return false;
     return dspbr_volumetric_pdf(b, vk, l, eta_i, eta_o) > 0.0f;
   }
-  if (k == DSPBR_LOBE_FLAKE) return dspbr_flake_sample(b, vk, u.y, u.z, l, lw);
-  if (k == DSPBR_LOBE_SHEEN) {
+  if (DSPBR_HAS_FLAKES != 0 && k == DSPBR_LOBE_FLAKE) return dspbr_flake_sample(b, vk, u.y, u.z, l, lw);
+  if (DSPBR_HAS_SHEEN != 0 && k == DSPBR_LOBE_SHEEN) {
     l = dspbr_sample_uniform_hemisphere(u.y, u.z);
     return l.z > 0.0f;
   }
@@ -291,7 +297,7 @@ DSPBR_FN DspbrSample dspbr_sample(DspbrBsdf b, vec3 v_in, vec3 u) {
 // Emitted radiance L_e(v) = rho_e (1 - c F_c(v.n_c)) for v above the core's surface, times the
 // cut-out opacity (spec "Emission"; cd/m^2).
 DSPBR_FN vec3 dspbr_emission(DspbrBsdf b, vec3 v_in) {
-  if (!(dspbr_max3(b.rho_e) > 0.0f)) return dspbr_splat(0.0f);
+  if (DSPBR_HAS_EMISSION == 0 || !(dspbr_max3(b.rho_e) > 0.0f)) return dspbr_splat(0.0f);
   vec3 vc = dspbr_to_local(b.core, dspbr_to_local(b.frame, v_in));
   if (!(vc.z > 0.0f)) return dspbr_splat(0.0f);
   float fc = dspbr_clearcoat_fresnel(dot(vc, dspbr_to_local(b.core, b.coat.n)));

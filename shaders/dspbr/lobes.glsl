@@ -31,7 +31,7 @@ DSPBR_FN vec3 dspbr_core_reflection_factor(DspbrBsdf b, float c, float eta_i, fl
     if (b.w_opaque > 0.0f) f += dspbr_schlick(c, b.f0_diel, one) * (b.w_opaque * b.specular);
     if (b.w_transp > 0.0f) f += dspbr_schlick_d(c, b.f0_diel, one, eta_i, eta_o) * (b.w_transp * b.specular);
   }
-  if (b.film_weight > 0.0f) {
+  if (DSPBR_HAS_THIN_FILM != 0 && b.film_weight > 0.0f) {
     bool transp_sees_eta = b.thin_walled || eta_i <= eta_o;
     vec3 r_eta = dspbr_splat(0.0f), r_transp = dspbr_splat(0.0f);
     if (b.w_opaque > 0.0f || (b.w_transp > 0.0f && transp_sees_eta)) r_eta = dspbr_film(b, c, b.eta);
@@ -48,7 +48,7 @@ DSPBR_FN vec3 dspbr_core_transmission_factor(DspbrBsdf b, float c, float eta_i, 
   vec3 one = dspbr_splat(1.0f);
   vec3 f = b.thin_walled ? dspbr_schlick(c, b.f0_diel, one) : dspbr_schlick_d(c, b.f0_diel, one, eta_i, eta_o);
   vec3 t = b.rho_t * (one - f * b.specular);
-  if (b.film_weight > 0.0f) {
+  if (DSPBR_HAS_THIN_FILM != 0 && b.film_weight > 0.0f) {
     vec3 r = b.thin_walled ? dspbr_film(b, c, b.eta) : dspbr_film_side(b, c, eta_i, eta_o);
     t = t * (1.0f - b.film_weight) + b.rho_t * (one - r) * b.film_weight;
   }
@@ -155,7 +155,7 @@ DSPBR_FN vec3 dspbr_diffuse_eval(DspbrBsdf b, vec3 v, vec3 l) {
   float b_u = t * dspbr_inv_pi;
   float b_c = dspbr_missing_base(b, v.z) * dspbr_missing_base(b, l.z) * b.diffuse_inv_norm * t;
   vec3 base = dspbr_splat((1.0f - b.film_weight) * (b_u * (1.0f - b.specular) + b.specular * b_c));
-  if (b.film_weight > 0.0f) {
+  if (DSPBR_HAS_THIN_FILM != 0 && b.film_weight > 0.0f) {
     // ThinFilmOver*: + i B_u (1 - max(R(v.n), R(l.n))).
     vec3 r = dspbr_max3v(dspbr_film(b, v.z, b.eta), dspbr_film(b, abs(l.z), b.eta));
     base += (dspbr_splat(1.0f) - r) * (b.film_weight * b_u);
@@ -170,7 +170,7 @@ DSPBR_FN float dspbr_diffuse_weight(DspbrBsdf b, vec3 v) {
   if (!(v.z > 0.0f)) return 0.0f;
   float s = b.specular;
   float w = (1.0f - b.film_weight) * ((1.0f - s) + s * dspbr_missing_base(b, v.z) * (b.diffuse_inv_norm > 0.0f ? 1.0f : 0.0f));
-  if (b.film_weight > 0.0f) w += b.film_weight * (1.0f - dspbr_mean(dspbr_film(b, v.z, b.eta)));
+  if (DSPBR_HAS_THIN_FILM != 0 && b.film_weight > 0.0f) w += b.film_weight * (1.0f - dspbr_mean(dspbr_film(b, v.z, b.eta)));
   return max(0.0f, dspbr_mean(b.rho_d) * w);
 }
 

@@ -140,8 +140,9 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
   b.coat = dspbr_frame_from_normal_tangent(dspbr_unit_normal(m.clearcoatNormal), vec3(1.0f, 0.0f, 0.0f));
   b.thin_walled = m.thinWalled;
   b.alpha_cut = dspbr_clamp_nan(m.cutoutOpacity, 0.0f, 1.0f);
-  b.clearcoat = m.clearcoat;
-  b.eta = dspbr_dispersion_ior(m.ior, m.abbeNumber, o.wavelength_nm);
+  // A component compiled out (features.glsl) has weight 0, as in the reference's component masks.
+  b.clearcoat = DSPBR_HAS_CLEARCOAT != 0 ? m.clearcoat : 0.0f;
+  b.eta = DSPBR_HAS_DISPERSION != 0 ? dspbr_dispersion_ior(m.ior, m.abbeNumber, o.wavelength_nm) : m.ior;
   // Anisotropic roughness (r_u, r_v) = r (1, 1 - o), alpha = r^2 (spec "Microfacet BSDF").
   float r_u = m.roughness, r_v = m.roughness * (1.0f - m.anisotropy);
   b.ggx = dspbr_ggx(r_u * r_u, r_v * r_v);
@@ -149,20 +150,21 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
   b.r_uv = sqrt(r_u * r_v);
   float metal = m.metallic, t = m.transparency, s = m.specular;
   bool volumetric = !m.thinWalled;
-  b.w_metal = metal;
-  b.w_opaque = (1.0f - metal) * (1.0f - t);
-  b.w_transp = (1.0f - metal) * t;
+  bool transp_on = volumetric ? DSPBR_HAS_VOLUMETRIC_TRANSPARENT != 0 : DSPBR_HAS_THIN_TRANSPARENT != 0;
+  b.w_metal = DSPBR_HAS_METALLIC != 0 ? metal : 0.0f;
+  b.w_opaque = DSPBR_HAS_OPAQUE_DIELECTRIC != 0 ? (1.0f - metal) * (1.0f - t) : 0.0f;
+  b.w_transp = transp_on ? (1.0f - metal) * t : 0.0f;
   b.specular = s;
-  b.translucency = m.translucency;
+  b.translucency = DSPBR_HAS_TRANSLUCENCY != 0 ? m.translucency : 0.0f;
   b.rho = m.albedo;
   float F0 = dspbr_f0_from_ior(1.0f, b.eta);
   b.f0_diel = m.specularTint * F0;
   b.rho_sr0 = b.f0_diel * ((b.w_opaque + b.w_transp) * s) + m.albedo * b.w_metal;
   b.rho_sr90 = dspbr_splat((b.w_opaque + b.w_transp) * s + b.w_metal);
   b.rho_t = m.albedo * b.w_transp;
-  b.rho_d = (m.albedo * (1.0f - m.translucency) + m.translucencyColor * m.translucency) * b.w_opaque;
+  b.rho_d = (m.albedo * (1.0f - b.translucency) + m.translucencyColor * b.translucency) * b.w_opaque;
   b.f0_max = dspbr_max3(b.f0_diel);
-  b.film_weight = m.thinFilm;
+  b.film_weight = DSPBR_HAS_THIN_FILM != 0 ? m.thinFilm : 0.0f;
   b.film_thickness = m.thinFilmThickness;
   b.film_ior = m.thinFilmIor;
   b.film_eta_rho = dspbr_thin_film_metal_eta(m.albedo);
@@ -172,7 +174,7 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
   DspbrFlake flake;
   flake.opacity = 0.0f;
   flake.normal = vec3(0.0f, 0.0f, 1.0f);
-  if (m.flakeCoverage > 0.0f) flake = dspbr_flake_at(o.position, o.object_normal, m.flakeCoverage, m.flakeSize, m.flakeRoughness);
+  if (DSPBR_HAS_FLAKES != 0 && m.flakeCoverage > 0.0f) flake = dspbr_flake_at(o.position, o.object_normal, m.flakeCoverage, m.flakeSize, m.flakeRoughness);
   bool flake_opaque = flake.opacity > 0.0f;
   b.flake_normal = flake.normal;
   b.flake_one_minus_cos = dspbr_flake_one_minus_cos_cone(m.flakeRoughness);
@@ -199,7 +201,8 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
       bool matched = volumetric && abs(b.eta - 1.0f) < dspbr_index_matched;
       if (mirror || matched) b.delta |= 1u << uint(DSPBR_LOBE_TRANSMISSION);
     }
-    float missing_b = 1.0f - dspbr_base_E_avg(b.r_uv, b.f0_max);
+    // B_c's normalisation (reads GGX_B_avg: only with the opaque dielectric compiled in).
+    float missing_b = DSPBR_HAS_OPAQUE_DIELECTRIC != 0 ? 1.0f - dspbr_base_E_avg(b.r_uv, b.f0_max) : 0.0f;
     b.diffuse_inv_norm = missing_b > dspbr_min_missing_energy ? 1.0f / (dspbr_pi * missing_b) : 0.0f;
     if (b.w_opaque > 0.0f && dspbr_max3(b.rho_d) > 0.0f) b.lobes |= 1u << uint(DSPBR_LOBE_DIFFUSE);
   } else {
@@ -212,11 +215,11 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
   b.alpha_b = max(m.sheenRoughness * m.sheenRoughness, dspbr_min_alpha_b);
   b.sheen_model = o.sheen_model;
   b.sheen_lambda = dspbr_sheen_lambda_fit(b.alpha_b);
-  if (dspbr_max3(m.sheenColor) > 0.0f && !flake_opaque) b.lobes |= 1u << uint(DSPBR_LOBE_SHEEN);
+  if (DSPBR_HAS_SHEEN != 0 && dspbr_max3(m.sheenColor) > 0.0f && !flake_opaque) b.lobes |= 1u << uint(DSPBR_LOBE_SHEEN);
   if (b.clearcoat > 0.0f) {
     b.lobes |= 1u << uint(DSPBR_LOBE_CLEARCOAT);
     if (b.coat_ggx.mirror) b.delta |= 1u << uint(DSPBR_LOBE_CLEARCOAT);
   }
-  b.rho_e = dspbr_emission_rho_e(m, o);
+  b.rho_e = DSPBR_HAS_EMISSION != 0 ? dspbr_emission_rho_e(m, o) : dspbr_splat(0.0f);
   return b;
 }

@@ -5,6 +5,9 @@
 layout(local_size_x = 64) in;
 #define DSPBR_LOOKUP_TEXTURES
 #define DSPBR_LOOKUP_BINDING_BASE 2
+#ifdef DSPBR_USE_SPECIALIZATION  // a `dspbr shader` header on the include path (specializations.sh)
+#include "dspbr_specialization.h"
+#endif
 #include "dspbr.glsl"
 layout(std430, set = 0, binding = 0) readonly buffer Records { float rec[]; };
 layout(std430, set = 0, binding = 1) writeonly buffer Results { float res[]; };
