@@ -1,17 +1,19 @@
 # The shader library (shaders/, docs/renderer.md) proven against the conformance vectors:
-# - shader_vectors (fixture): the default vector set (built-in and scene materials, no albedo)
+# - shader_vectors (fixture): the default vector set (built-in and scene materials, with albedos)
 #   written once into the build folder;
 # - shader_material_generated: shaders/dspbr/material.glsl is what scripts/shaders/gen_material.py
 #   writes from data/dspbr/params-2025x.json;
 # - shader_cpp_warnings: the C++ entry compiles under strict warnings with -Werror (build step);
-# - shader_cpp_conformance: the C++ compile (float) over every vector;
+# - shader_cpp_conformance: the C++ compile (float) over every vector, its results judged by
+#   `dspbr conformance check` (f cos, pdf, albedo, emission, Dirac lobes);
 # - shader_glsl_compile / shader_hlsl_compile: the GLSL and HLSL kernels compile with no warning;
 # - shader_glsl_conformance / shader_hlsl_conformance: the kernels on the first Vulkan device
-#   (lavapipe here), tables as textures; skipped (77) without a device.
+#   (lavapipe here), tables as textures, judged by `dspbr conformance check` (f cos, pdf, albedo,
+#   emission); skipped (77) without a device.
 set(_sl ${CMAKE_CURRENT_LIST_DIR}/shader_library)
 set(_sl_vectors ${PROJECT_BINARY_DIR}/shader-vectors/vectors.json)
 add_test(NAME shader_vectors
-         COMMAND sh -c "rm -rf shader-vectors && '$<TARGET_FILE:dspbr>' conformance generate --no-albedo --out shader-vectors > /dev/null"
+         COMMAND sh -c "rm -rf shader-vectors && '$<TARGET_FILE:dspbr>' conformance generate --out shader-vectors > /dev/null"
          WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
 set_tests_properties(shader_vectors PROPERTIES FIXTURES_SETUP shader_vectors TIMEOUT 300)
 
@@ -38,7 +40,10 @@ target_link_libraries(dspbr_tests PRIVATE dspbr_shader_test)
 add_executable(shader_cpp_conformance ${_sl}/shader_cpp_conformance.cpp)
 target_link_libraries(shader_cpp_conformance PRIVATE dspbr_shader_test)
 target_compile_options(shader_cpp_conformance PRIVATE -Wall -Wextra)
-add_test(NAME shader_cpp_conformance COMMAND shader_cpp_conformance ${_sl_vectors})
+add_test(NAME shader_cpp_conformance
+         COMMAND sh -c "'$<TARGET_FILE:shader_cpp_conformance>' '${_sl_vectors}' shader-results-cpp.json && \
+'$<TARGET_FILE:dspbr>' conformance check '${_sl_vectors}' shader-results-cpp.json --no-html --out shader-check-cpp"
+         WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
 set_tests_properties(shader_cpp_conformance PROPERTIES FIXTURES_REQUIRED shader_vectors)
 
 if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
@@ -52,7 +57,7 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
   add_custom_command(OUTPUT ${_sl_glsl} ${_sl_hlsl}
     COMMAND ${DSPBR_GLSLANG_VK} -V ${_sl_inc} -o ${_sl_glsl} ${_sl}/conformance.comp
     COMMAND ${DSPBR_GLSLANG_VK} ${_sl_hlsl_args} -o ${_sl_hlsl} ${_sl}/conformance.hlsl
-    DEPENDS ${_sl}/conformance.comp ${_sl}/conformance.hlsl ${_sl}/kernel_common.glsl ${_sl_deps}
+    DEPENDS ${_sl}/conformance.comp ${_sl}/conformance.hlsl ${_sl}/kernel_common.glsl ${_sl}/albedo.glsl ${_sl_deps}
             ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.hlsl
     COMMENT "glslangValidator: the shader library's conformance kernels (GLSL, HLSL)" VERBATIM)
   add_custom_target(shader_conformance_kernels ALL DEPENDS ${_sl_glsl} ${_sl_hlsl})
@@ -70,9 +75,12 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
   target_compile_options(shader_vk_conformance PRIVATE -Wall -Wextra)
   add_dependencies(shader_vk_conformance shader_conformance_kernels)
   foreach(lang glsl hlsl)
+    # The runner exits 77 without a device: the checker runs only after it passed.
     add_test(NAME shader_${lang}_conformance
-             COMMAND shader_vk_conformance ${PROJECT_BINARY_DIR}/shader_conformance_${lang}.spv ${_sl_vectors}
-                     ${PROJECT_SOURCE_DIR}/luts ${lang})
+             COMMAND sh -c "'$<TARGET_FILE:shader_vk_conformance>' '${PROJECT_BINARY_DIR}/shader_conformance_${lang}.spv' \
+'${_sl_vectors}' '${PROJECT_SOURCE_DIR}/luts' ${lang} --results shader-results-${lang}.json && \
+'$<TARGET_FILE:dspbr>' conformance check '${_sl_vectors}' shader-results-${lang}.json --no-html --out shader-check-${lang}"
+             WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
     set_tests_properties(shader_${lang}_conformance PROPERTIES FIXTURES_REQUIRED shader_vectors SKIP_RETURN_CODE 77
                          TIMEOUT 300)
   endforeach()

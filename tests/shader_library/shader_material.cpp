@@ -2,6 +2,14 @@
 
 #include <cstdio>
 #include <map>
+#include <nlohmann/json.hpp>
+
+#include "dspbr/io/atomic_file.h"
+
+namespace dspbr_shader {
+#include "albedo.glsl"
+}  // namespace dspbr_shader
+static_assert(shader_test::kAlbedoNodes == dspbr_shader::DSPBR_TEST_ALBEDO_NODES, "albedo.glsl's node count");
 
 namespace shader_test {
 
@@ -84,6 +92,94 @@ void pack_record(const dspbr::conformance::Vector& x, float* out) {
   put3(m.flipFlopColor), put3(o.position), put3(o.object_normal);
   put3(vec3(float(x.v.x), float(x.v.y), float(x.v.z))), put3(vec3(float(x.l.x), float(x.l.y), float(x.l.z)));
   while (i < kRecordFloats) put(0.0f);
+}
+
+std::vector<float> delta_samples(const dspbr_shader::DspbrBsdf& b, vec3 v) {
+  std::vector<float> out(std::size_t(kDeltaChoices) * 7);
+  for (int k = 0; k < kDeltaChoices; ++k) {
+    const dspbr_shader::DspbrSample d =
+        dspbr_shader::dspbr_sample(b, v, vec3((float(k) + 0.5f) / float(kDeltaChoices), 0.5f, 0.5f));
+    const bool delta = d.valid && (d.flags & dspbr_shader::DSPBR_FLAG_DELTA) != 0u;
+    const vec3 value = d.weight * d.pdf;
+    float* o = &out[std::size_t(k) * 7];
+    o[0] = delta ? 1.0f : 0.0f, o[1] = d.l.x, o[2] = d.l.y, o[3] = d.l.z, o[4] = value.x, o[5] = value.y, o[6] = value.z;
+  }
+  return out;
+}
+
+std::vector<dspbr::conformance::DeltaExpectation> delta_lobes(const float* samples) {
+  std::vector<dspbr::conformance::DeltaExpectation> out;
+  bool in_run = false;
+  vec3 run_l;
+  for (int k = 0; k < kDeltaChoices; ++k) {
+    const float* s = &samples[std::size_t(k) * 7];
+    const bool delta = s[0] > 0.5f;
+    const vec3 l(s[1], s[2], s[3]);
+    if (delta && !(in_run && dspbr_shader::dot(l, run_l) > 0.999999f))
+      out.push_back({{double(l.x), double(l.y), double(l.z)}, {double(s[4]), double(s[5]), double(s[6])}});
+    in_run = delta;
+    run_l = l;
+  }
+  return out;
+}
+
+// The albedo from its node sums and Dirac lobes.
+static std::optional<vec3> albedo_from(const float* nodes, const std::vector<dspbr::conformance::DeltaExpectation>& delta) {
+  vec3 a;
+  for (int n = 0; n < kAlbedoNodes; ++n) a += vec3(nodes[3 * n], nodes[3 * n + 1], nodes[3 * n + 2]);
+  for (const auto& d : delta) a += vec3(float(d.value.r), float(d.value.g), float(d.value.b));
+  return a;
+}
+
+Outcome evaluate(const dspbr::conformance::Vector& x) {
+  const dspbr_shader::DspbrBsdf b =
+      dspbr_shader::dspbr_prepare(to_shader_material(dspbr::conformance::vector_material(x)),
+                                  dspbr_shader::dspbr_identity_frame(),
+                                  to_shader_options(dspbr::conformance::vector_options(x)));
+  const vec3 v(float(x.v.x), float(x.v.y), float(x.v.z)), l(float(x.l.x), float(x.l.y), float(x.l.z));
+  Outcome r;
+  r.f_cos = dspbr_shader::dspbr_eval(b, v, l) * std::abs(l.z);
+  r.pdf = dspbr_shader::dspbr_pdf(b, v, l);
+  r.delta = delta_lobes(delta_samples(b, v).data());
+  if (x.albedo) {
+    std::vector<float> nodes(std::size_t(kAlbedoNodes) * 3);
+    for (int n = 0; n < kAlbedoNodes; ++n) {
+      const vec3 s = dspbr_shader::dspbr_test_albedo_node(b, v, n);
+      nodes[3 * n] = s.x, nodes[3 * n + 1] = s.y, nodes[3 * n + 2] = s.z;
+    }
+    r.albedo = albedo_from(nodes.data(), *r.delta);
+  }
+  if (x.emission) r.emission = dspbr_shader::dspbr_emission(b, v);
+  return r;
+}
+
+Outcome outcome_from_device(const dspbr::conformance::Vector& x, const float* f, const float* nodes, const float* samples) {
+  Outcome r;
+  r.f_cos = vec3(f[0], f[1], f[2]);
+  r.pdf = f[3];
+  if (x.albedo && nodes && samples) r.albedo = albedo_from(nodes, delta_lobes(samples));
+  if (x.emission) r.emission = vec3(f[7], f[8], f[9]);
+  return r;
+}
+
+void write_results(const std::string& path, const std::vector<dspbr::conformance::Vector>& vectors,
+                   const std::vector<Outcome>& results) {
+  using J = nlohmann::ordered_json;
+  auto rgb = [](vec3 c) { return J::array({double(c.x), double(c.y), double(c.z)}); };
+  J list = J::array();
+  for (std::size_t k = 0; k < vectors.size(); ++k) {
+    const Outcome& o = results[k];
+    J r{{"id", vectors[k].id}, {"f_cos", rgb(o.f_cos)}, {"pdf", double(o.pdf)}};
+    if (o.albedo) r["albedo"] = rgb(*o.albedo);
+    if (o.emission) r["emission"] = rgb(*o.emission);
+    if (o.delta) {
+      r["delta"] = J::array();
+      for (const auto& d : *o.delta)
+        r["delta"].push_back({{"l", {d.l.x, d.l.y, d.l.z}}, {"value", {d.value.r, d.value.g, d.value.b}}});
+    }
+    list.push_back(std::move(r));
+  }
+  dspbr::write_text_atomically(path, J{{"results", list}}.dump() + "\n");
 }
 
 int judge(const std::vector<dspbr::conformance::Vector>& vectors, const std::vector<Outcome>& results,

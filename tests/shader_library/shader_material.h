@@ -3,6 +3,7 @@
 // packing into the float records the device kernels read (kernel_common.glsl, in pack_record's
 // order), the verdict on a set of results, and the library behind the reference's Bsdf interface.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,19 +20,44 @@ dspbr_shader::DspbrMaterial to_shader_material(const dspbr::Material& m);
 dspbr_shader::DspbrOptions to_shader_options(const dspbr::BsdfOptions& o);
 
 // One vector's record for the device kernels: the material fields the BSDF reads, the options,
-// v and l (kRecordFloats floats).
+// v and l (kRecordFloats floats). The kernels write kResultFloats floats per vector in mode 0
+// (kernel_common.glsl).
 constexpr int kRecordFloats = 64;
+constexpr int kResultFloats = 10;
+constexpr int kAlbedoNodes = 256;  // albedo.glsl's DSPBR_TEST_ALBEDO_NODES
 void pack_record(const dspbr::conformance::Vector& v, float* out);
 
-// Per-vector results of an implementation and the verdict against each vector's tolerances:
-// f cos (per channel) and the pdf. Prints a line per group and the failures (at most `show`);
-// returns the number of failing vectors among the supported ones.
+// An implementation's results for one vector (the checker's Result, in float).
 struct Outcome {
   dspbr_shader::vec3 f_cos;
   float pdf;
+  std::optional<dspbr_shader::vec3> albedo, emission;
+  std::optional<std::vector<dspbr::conformance::DeltaExpectation>> delta;
 };
+// The C++ compile's results for a vector: f cos and pdf; the albedo, the emission and the Dirac
+// lobes where the vector gives them.
+Outcome evaluate(const dspbr::conformance::Vector& x);
+// A device kernel's results for a vector: kResultFloats floats of mode 0, and where the vector
+// gives an albedo its kAlbedoNodes node sums (mode 1, 3 floats each) and its kDeltaChoices
+// samples (mode 2, 7 floats each; kernel_common.glsl).
+constexpr int kDeltaChoices = 8192;
+Outcome outcome_from_device(const dspbr::conformance::Vector& x, const float* r, const float* nodes, const float* samples);
+// The results file `dspbr conformance check` reads (JSON, docs/conformance.md "Results").
+void write_results(const std::string& path, const std::vector<dspbr::conformance::Vector>& vectors,
+                   const std::vector<Outcome>& results);
+// The verdict on f cos and the pdf against each vector's tolerances, for a subset of the vectors
+// (the checker wants every vector): prints a line per group and the failures (at most `show`);
+// returns the number of failing vectors.
 int judge(const std::vector<dspbr::conformance::Vector>& vectors, const std::vector<Outcome>& results,
           const std::string& what, int show = 12);
+
+// The Dirac lobes from the samples at kDeltaChoices stratified lobe choices (u = ((k + 0.5) /
+// kDeltaChoices, 0.5, 0.5)), each as 7 floats: 1 for a Dirac sample, l, weight x pdf. A lobe's
+// choices are one run of equal directions; weight x probability of any of its samples is its
+// reflectance or transmittance (docs/bsdf.md, "Conventions").
+std::vector<dspbr::conformance::DeltaExpectation> delta_lobes(const float* samples);
+// The same samples from the C++ compile.
+std::vector<float> delta_samples(const dspbr_shader::DspbrBsdf& b, dspbr_shader::vec3 v);
 
 }  // namespace shader_test
 

@@ -25,7 +25,7 @@ for key in $(printf '%s\n' "${!scenes_of[@]}" | sort); do
   glslangValidator -V -DDSPBR_USE_SPECIALIZATION -I"$dir" -I"$src/shaders" -I"$src/luts" \
       -I"$src/tests/shader_library" -o "$dir/kernel.spv" "$src/tests/shader_library/conformance.comp" > /dev/null
   set +e
-  out=$("$runner" "$dir/kernel.spv" "$vectors" "$src/luts" "glsl[$components]" "${scenes_of[$key]}")
+  out=$("$runner" "$dir/kernel.spv" "$vectors" "$src/luts" "glsl[$components]" --ids "${scenes_of[$key]}" --no-albedo)
   rc=$?
   set -e
   [ $rc -eq 77 ] && { echo "no Vulkan device: skipped"; exit 77; }
