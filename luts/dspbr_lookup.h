@@ -14,7 +14,9 @@
 
 #define DSPBR_LOOKUP_FLOATS 5184
 
-static inline float dspbr_lut_clampf(float x, float lo, float hi) { return x < lo ? lo : (x > hi ? hi : x); }
+// x clamped to [lo, hi], NaN to lo: no NaN reaches a cell index (a NaN argument reads the
+// table at the low end of its axis; docs/luts.md, "NaN and infinite arguments").
+static inline float dspbr_lut_clampf(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
 static const float dspbr_GGX_E_table[2048] = {
   0.999472797f, 0.999472797f, 0.999472797f, 0.999472797f, 0.999146819f, 0.998664856f, 0.998073757f, 0.997372329f,
   0.996559143f, 0.995632529f, 0.994590759f, 0.993431628f, 0.992152929f, 0.990752339f, 0.989227057f, 0.987574458f,
@@ -698,9 +700,9 @@ static inline float dspbr_lut_interp_dspbr_GGX_E(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 63.0f;
   int i = (int)(c0);
-  if (i > 30) i = 30;
+  i = i < 0 ? 0 : (i > 30 ? 30 : i);
   int j = (int)(c1);
-  if (j > 62) j = 62;
+  j = j < 0 ? 0 : (j > 62 ? 62 : j);
   float f0 = c0 - (float)(i), f1 = c1 - (float)(j);
   float r1 = dspbr_lut_row_dspbr_GGX_E(i, j, f1), r2 = dspbr_lut_row_dspbr_GGX_E(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_GGX_E(i > 0 ? i - 1 : 0, j, f1);
@@ -720,9 +722,9 @@ static inline float dspbr_lut_interp_dspbr_GGX_beta(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = (int)(c0);
-  if (i > 30) i = 30;
+  i = i < 0 ? 0 : (i > 30 ? 30 : i);
   int j = (int)(c1);
-  if (j > 30) j = 30;
+  j = j < 0 ? 0 : (j > 30 ? 30 : j);
   float f0 = c0 - (float)(i), f1 = c1 - (float)(j);
   float r1 = dspbr_lut_row_dspbr_GGX_beta(i, j, f1), r2 = dspbr_lut_row_dspbr_GGX_beta(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_GGX_beta(i > 0 ? i - 1 : 0, j, f1);
@@ -734,7 +736,7 @@ static inline float dspbr_lut_interp_dspbr_GGX_beta(float x0, float x1) {
 static inline float dspbr_lut_interp_dspbr_GGX_E_avg(float x) {
   float c = dspbr_lut_clampf(x, 0.0f, 1.0f) * 31.0f;
   int i = (int)(c);
-  if (i > 30) i = 30;
+  i = i < 0 ? 0 : (i > 30 ? 30 : i);
   float f = c - (float)(i);
   float p1 = dspbr_GGX_E_avg_at(i), p2 = dspbr_GGX_E_avg_at(i + 1);
   float q0 = dspbr_GGX_E_avg_at(i > 0 ? i - 1 : 0), q3 = dspbr_GGX_E_avg_at(i + 2 < 32 ? i + 2 : 32 - 1);
@@ -745,7 +747,7 @@ static inline float dspbr_lut_interp_dspbr_GGX_E_avg(float x) {
 static inline float dspbr_lut_interp_dspbr_GGX_B_avg(float x) {
   float c = dspbr_lut_clampf(x, 0.0f, 1.0f) * 31.0f;
   int i = (int)(c);
-  if (i > 30) i = 30;
+  i = i < 0 ? 0 : (i > 30 ? 30 : i);
   float f = c - (float)(i);
   float p1 = dspbr_GGX_B_avg_at(i), p2 = dspbr_GGX_B_avg_at(i + 1);
   float q0 = dspbr_GGX_B_avg_at(i > 0 ? i - 1 : 0), q3 = dspbr_GGX_B_avg_at(i + 2 < 32 ? i + 2 : 32 - 1);
@@ -764,9 +766,9 @@ static inline float dspbr_lut_interp_dspbr_Sheen_E(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = (int)(c0);
-  if (i > 30) i = 30;
+  i = i < 0 ? 0 : (i > 30 ? 30 : i);
   int j = (int)(c1);
-  if (j > 30) j = 30;
+  j = j < 0 ? 0 : (j > 30 ? 30 : j);
   float f0 = c0 - (float)(i), f1 = c1 - (float)(j);
   float r1 = dspbr_lut_row_dspbr_Sheen_E(i, j, f1), r2 = dspbr_lut_row_dspbr_Sheen_E(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_Sheen_E(i > 0 ? i - 1 : 0, j, f1);
@@ -786,9 +788,9 @@ static inline float dspbr_lut_interp_dspbr_Sheen_ash_E(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = (int)(c0);
-  if (i > 30) i = 30;
+  i = i < 0 ? 0 : (i > 30 ? 30 : i);
   int j = (int)(c1);
-  if (j > 30) j = 30;
+  j = j < 0 ? 0 : (j > 30 ? 30 : j);
   float f0 = c0 - (float)(i), f1 = c1 - (float)(j);
   float r1 = dspbr_lut_row_dspbr_Sheen_ash_E(i, j, f1), r2 = dspbr_lut_row_dspbr_Sheen_ash_E(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_Sheen_ash_E(i > 0 ? i - 1 : 0, j, f1);

@@ -74,11 +74,11 @@ std::string interp_function_3d(const WarpedTable& t) {
       "  float c1 = clamp(x1, 0.0f, 1.0f) * {5};\n"
       "  float c2 = clamp(x2, 0.0f, 1.0f) * {6};\n"
       "  int p = int(c0);\n"
-      "  if (p > {7}) p = {7};\n"
+      "  p = p < 0 ? 0 : (p > {7} ? {7} : p);\n"
       "  int i = int(c1);\n"
-      "  if (i > {8}) i = {8};\n"
+      "  i = i < 0 ? 0 : (i > {8} ? {8} : i);\n"
       "  int j = int(c2);\n"
-      "  if (j > {9}) j = {9};\n"
+      "  j = j < 0 ? 0 : (j > {9} ? {9} : j);\n"
       "  float f0 = c0 - float(p), f1 = c1 - float(i), f2 = c2 - float(j);\n"
       "  float s1 = dspbr_lut_plane_{0}(p, i, j, f1, f2), s2 = dspbr_lut_plane_{0}(p + 1, i, j, f1, f2);\n"
       "  float q0 = dspbr_lut_plane_{0}(p > 0 ? p - 1 : 0, i, j, f1, f2);\n"
@@ -100,7 +100,7 @@ std::string interp_function(const WarpedTable& t) {
         "float dspbr_lut_interp_{0}(float x) {{\n"
         "  float c = clamp(x, 0.0f, 1.0f) * {1};\n"
         "  int i = int(c);\n"
-        "  if (i > {2}) i = {2};\n"
+        "  i = i < 0 ? 0 : (i > {2} ? {2} : i);\n"
         "  float f = c - float(i);\n"
         "  float p1 = {0}_at(i), p2 = {0}_at(i + 1);\n"
         "  float q0 = {0}_at(i > 0 ? i - 1 : 0), q3 = {0}_at(i + 2 < {3} ? i + 2 : {3} - 1);\n"
@@ -127,9 +127,9 @@ std::string interp_function(const WarpedTable& t) {
       "  float c0 = clamp(x0, 0.0f, 1.0f) * {1};\n"
       "  float c1 = clamp(x1, 0.0f, 1.0f) * {2};\n"
       "  int i = int(c0);\n"
-      "  if (i > {3}) i = {3};\n"
+      "  i = i < 0 ? 0 : (i > {3} ? {3} : i);\n"
       "  int j = int(c1);\n"
-      "  if (j > {4}) j = {4};\n"
+      "  j = j < 0 ? 0 : (j > {4} ? {4} : j);\n"
       "  float f0 = c0 - float(i), f1 = c1 - float(j);\n"
       "  float r1 = dspbr_lut_row_{0}(i, j, f1), r2 = dspbr_lut_row_{0}(i + 1, j, f1);\n"
       "  float q0 = dspbr_lut_row_{0}(i > 0 ? i - 1 : 0, j, f1);\n"
@@ -312,6 +312,19 @@ std::string glass_api_functions(const RendererLuts& L) {
 }
 
 // GLSL body text -> C: math functions, casts, static inline.
+// The generated code's clamp: NaN gives the low end (a comparison with NaN is false), where the
+// built-in clamp (GLSL, HLSL) is undefined for NaN and a NaN cell coordinate would index a table
+// out of its bounds. Every argument reaches a table through it; the cell index is also clamped to
+// [0, N - 2].
+constexpr const char* kClampComment =
+    "// x clamped to [lo, hi], NaN to lo: no NaN reaches a cell index (a NaN argument reads the\n"
+    "// table at the low end of its axis; docs/luts.md, \"NaN and infinite arguments\").\n";
+
+// GLSL / HLSL: the body's clamp is the NaN-safe dspbr_lut_clamp.
+std::string nan_safe_clamps(const std::string& glsl) {
+  return std::regex_replace(glsl, std::regex("\\bclamp\\("), "dspbr_lut_clamp(");
+}
+
 std::string to_c(const std::string& glsl) {
   std::string s = glsl;
   const std::pair<const char*, const char*> fns[] = {
@@ -417,7 +430,7 @@ std::string file_text(const RendererLuts& L, LookupDialect dialect, const std::s
   o << "#define " << f.floats_macro << " " << f.floats << "\n\n";
   if (dialect == LookupDialect::C) {
     if (f.binding_offset == 0)
-      o << "static inline float dspbr_lut_clampf(float x, float lo, float hi) { return x < lo ? lo : (x > hi ? hi : x); }\n";
+      o << kClampComment << "static inline float dspbr_lut_clampf(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }\n";
     for (const char* n : f.tables) {
       const WarpedTable& t = *L.table(n);
       o << "static const float " << ident(t) << "_table[" << t.size() << "] = {";
@@ -433,6 +446,7 @@ std::string file_text(const RendererLuts& L, LookupDialect dialect, const std::s
       o << "#endif\n";
       if (glsl) o << "#ifndef DSPBR_LOOKUP_BINDING_BASE\n#define DSPBR_LOOKUP_BINDING_BASE 0\n#endif\n";
       else o << "#ifndef DSPBR_LOOKUP_REGISTER_SPACE\n#define DSPBR_LOOKUP_REGISTER_SPACE space0\n#endif\n";
+      o << kClampComment << "float dspbr_lut_clamp(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }\n";
     }
     o << "#ifdef DSPBR_LOOKUP_TEXTURES\n";
     binding = f.binding_offset;
@@ -458,7 +472,7 @@ std::string file_text(const RendererLuts& L, LookupDialect dialect, const std::s
   std::string body = f.helpers;
   for (const char* n : f.tables) body += interp_function(*L.table(n));
   body += f.api;
-  o << "\n" << (dialect == LookupDialect::C ? to_c(body) : body);
+  o << "\n" << (dialect == LookupDialect::C ? to_c(body) : nan_safe_clamps(body));
   o << "\n#endif\n";
   return o.str();
 }
