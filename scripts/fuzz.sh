@@ -25,7 +25,10 @@ if ((build)); then
   cxx="${FUZZ_CXX:-$(command -v clang++ || true)}"
   [ -n "$cxx" ] || { echo "fuzz: clang++ not found (Debian: clang, libclang-rt-14-dev)" >&2; exit 1; }
   cmake -S "$here/fuzz" -B "$work/build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-  cmake --build "$work/build" -j "${FUZZ_JOBS:-2}"
+  # FUZZ_JOBS, else the jobs of the make that runs this (its jobserver), else every core.
+  jobs=()
+  if [ -n "${FUZZ_JOBS:-}" ]; then jobs=(-j "$FUZZ_JOBS"); elif [[ "${MAKEFLAGS:-}" != *jobserver* ]]; then jobs=(-j "$(nproc)"); fi
+  cmake --build "$work/build" "${jobs[@]}"
 fi
 ((run)) || exit 0
 
