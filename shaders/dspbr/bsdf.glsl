@@ -166,27 +166,38 @@ DSPBR_FN float dspbr_pdf_side(DspbrBsdf b, DspbrSelection sel, vec3 v, vec3 l, f
   return p;
 }
 
+// v and l in the side's coordinates (the frame's local ones, both negated for a viewer on the
+// back) and the side's IORs.
+struct DspbrSide {
+  vec3 v;
+  vec3 l;
+  float eta_i;
+  float eta_o;
+};
+DSPBR_FN DspbrSide dspbr_side(DspbrBsdf b, vec3 v_in, vec3 l_in) {
+  DspbrSide s;
+  s.v = dspbr_to_local(b.frame, v_in);
+  s.l = dspbr_to_local(b.frame, l_in);
+  bool back = dspbr_back_side(b, s.v);
+  if (back) {
+    s.v = -s.v;
+    s.l = -s.l;
+  }
+  s.eta_i = dspbr_eta_i(b, back);
+  s.eta_o = dspbr_eta_o(b, back);
+  return s;
+}
+
 // f(v, l) without the cosine (delta lobes excluded).
 DSPBR_FN vec3 dspbr_eval(DspbrBsdf b, vec3 v_in, vec3 l_in) {
-  vec3 v = dspbr_to_local(b.frame, v_in), l = dspbr_to_local(b.frame, l_in);
-  bool back = dspbr_back_side(b, v);
-  if (back) {
-    v = -v;
-    l = -l;
-  }
-  return dspbr_eval_side(b, v, l, dspbr_eta_i(b, back), dspbr_eta_o(b, back));
+  DspbrSide s = dspbr_side(b, v_in, l_in);
+  return dspbr_eval_side(b, s.v, s.l, s.eta_i, s.eta_o);
 }
 
 // The solid-angle density with which dspbr_sample produces l through its non-delta lobes.
 DSPBR_FN float dspbr_pdf(DspbrBsdf b, vec3 v_in, vec3 l_in) {
-  vec3 v = dspbr_to_local(b.frame, v_in), l = dspbr_to_local(b.frame, l_in);
-  bool back = dspbr_back_side(b, v);
-  if (back) {
-    v = -v;
-    l = -l;
-  }
-  float eta_i = dspbr_eta_i(b, back), eta_o = dspbr_eta_o(b, back);
-  return dspbr_pdf_side(b, dspbr_select(b, v, eta_i, eta_o), v, l, eta_i, eta_o);
+  DspbrSide s = dspbr_side(b, v_in, l_in);
+  return dspbr_pdf_side(b, dspbr_select(b, s.v, s.eta_i, s.eta_o), s.v, s.l, s.eta_i, s.eta_o);
 }
 
 // A direction from lobe k in the lobe's own frame (v_k: v in that frame); lw: a delta lobe's
