@@ -48,7 +48,7 @@ TEST(Cli, UnknownSubcommandSuggestsTheNearestName) {
   expect_usage_error("valdate --quick", "unknown subcommand 'valdate'; did you mean 'validate'?");
   expect_usage_error("params lst", "unknown subcommand 'lst'; did you mean 'list'?");
   expect_usage_error("scene analyse x.gltf", "unknown subcommand 'analyse'; did you mean 'analyze'?");
-  expect_usage_error("render", "unknown subcommand 'render' (choose from lut, eval, sample, validate, fit, params, scene, conformance)");
+  expect_usage_error("render", "unknown subcommand 'render' (choose from lut, eval, sample, validate, fit, params, scene, conformance, shader)");
 }
 
 TEST(Cli, DirectoryGivenAsAFileIsNamed) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <functional>
 #include <stdexcept>
@@ -201,7 +202,11 @@ Rgb albedo_quadrature(const MaterialBsdf& b, const Vec3& v, int mu_panels, int p
 // The material with every number rounded to single precision: what an implementation in float
 // reads (the tolerance's input part, docs/conformance.md "Tolerances").
 Material float_rounded(Material m) {
-  auto f = [](double& x) { x = double(float(x)); };
+  // Beyond the float range the value becomes +-inf (a double -> float conversion out of range is
+  // undefined behaviour).
+  auto f = [](double& x) {
+    x = std::abs(x) <= double(std::numeric_limits<float>::max()) ? double(float(x)) : std::copysign(HUGE_VAL, x);
+  };
   auto c = [&](Rgb& x) { f(x.r), f(x.g), f(x.b); };
   auto v = [&](Vec3& x) { f(x.x), f(x.y), f(x.z); };
   c(m.albedo), f(m.metallic), f(m.roughness), f(m.anisotropy), f(m.anisotropyRotation), v(m.normal);

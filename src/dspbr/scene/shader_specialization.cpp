@@ -4,6 +4,8 @@
 #include <cctype>
 
 #include "dspbr/component.h"
+#include "dspbr/tables/renderer_luts.h"
+#include "dspbr/tables/table_registry.h"
 #include "dspbr/version.h"
 
 namespace dspbr {
@@ -19,15 +21,19 @@ std::vector<ShaderTexture> shader_textures(uint32_t c) {
   // Every core lobe (metal, dielectric, transparent) has the multiple-scattering term: E_m and
   // its average. The opaque dielectric's B_c reads E(mu; r, f0) = f0 E_m + (1 - f0) beta E_m +
   // F_ms (1 - E_m) and its average (GGX_beta, GGX_B_avg); the sheen's layering reads E_b of the
-  // model chosen at run time (both tables).
-  std::vector<ShaderTexture> t;
+  // model chosen at run time (both tables). The texture index is the table's place in the
+  // generated lookup (RendererLuts::names(), the order of dspbr_lookup.glsl's bindings).
   const bool core = c & (kMetallic | kOpaqueDielectric | kThinTransparent | kVolumetricTransparent);
-  const bool base = c & kOpaqueDielectric;
-  if (core) t.push_back({"GGX_E", 0});
-  if (base) t.push_back({"GGX_beta", 1});
-  if (core) t.push_back({"GGX_E_avg", 2});
-  if (base) t.push_back({"GGX_B_avg", 3});
-  if (c & kSheen) t.push_back({"Sheen_E", 4}), t.push_back({"Sheen_ash_E", 5});
+  const bool base = c & kOpaqueDielectric, sheen = c & kSheen;
+  std::vector<ShaderTexture> t;
+  const std::vector<const char*>& order = RendererLuts::names();
+  for (int k = 0; k < int(order.size()); ++k) {
+    const std::string name = order[size_t(k)];
+    const bool needed = ((name == lut_name(Lut::GgxE) || name == lut_name(Lut::GgxEAvg)) && core) ||
+                        ((name == lut_name(Lut::GgxBeta) || name == lut_name(Lut::GgxBAvg)) && base) ||
+                        ((name == lut_name(Lut::SheenE) || name == lut_name(Lut::SheenAshE)) && sheen);
+    if (needed) t.push_back({name, k});
+  }
   return t;
 }
 
