@@ -38,7 +38,7 @@ target_compile_options(dspbr_shader_test PRIVATE -Wall -Wextra)
 # emission and delta lobes of the C++ compile) use the same helpers.
 target_link_libraries(dspbr_tests PRIVATE dspbr_shader_test)
 add_executable(shader_cpp_conformance ${_sl}/shader_cpp_conformance.cpp)
-target_link_libraries(shader_cpp_conformance PRIVATE dspbr_shader_test)
+target_link_libraries(shader_cpp_conformance PRIVATE dspbr_shader_test TBB::tbb)
 target_compile_options(shader_cpp_conformance PRIVATE -Wall -Wextra)
 add_test(NAME shader_cpp_conformance
          COMMAND sh -c "'$<TARGET_FILE:shader_cpp_conformance>' '${_sl_vectors}' shader-results-cpp.json && \

@@ -58,6 +58,7 @@ DSPBR_FN void dspbr_test_run(uint id, uint mode) {
   vec3 v = dspbr_test_vec3(k); k += 3u;
   vec3 l = dspbr_test_vec3(k);
   DspbrBsdf b = dspbr_prepare(m, dspbr_identity_frame(), o);
+#ifndef DSPBR_TEST_NO_ALBEDO  // (specializations.sh: mode 0 alone, a smaller kernel)
   if (mode == 1u) {
     vec3 a = dspbr_test_albedo_node(b, v, int(id % uint(DSPBR_TEST_ALBEDO_NODES)));
     res[3u * id] = a.x;
@@ -78,6 +79,7 @@ DSPBR_FN void dspbr_test_run(uint id, uint mode) {
     res[7u * id + 6u] = value.z;
     return;
   }
+#endif
   uint r = 10u * i;
   vec3 f = dspbr_eval(b, v, l) * abs(l.z);
   vec3 e = dspbr_emission(b, v);
