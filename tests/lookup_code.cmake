@@ -26,3 +26,15 @@ if(DSPBR_GLSLANG)
 else()
   message(WARNING "glslangValidator not found (Debian: glslang-tools): shader compile tests skipped")
 endif()
+
+# Hostile arguments (NaN, +-inf, +-1e30 in every argument of every public C lookup) under
+# UndefinedBehaviorSanitizer and AddressSanitizer without recovery: no undefined conversion, no read
+# outside a table, finite results in the documented range, NaN -> the low end (docs/luts.md).
+add_executable(dspbr_lookup_nan ${CMAKE_CURRENT_LIST_DIR}/lookup_nan.c)
+set_target_properties(dspbr_lookup_nan PROPERTIES C_STANDARD 99 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF)
+target_compile_options(dspbr_lookup_nan PRIVATE -O1 -g -Wall -Wextra -pedantic -Werror
+                       -fsanitize=undefined,address -fno-sanitize-recover=all)
+target_link_options(dspbr_lookup_nan PRIVATE -fsanitize=undefined,address)
+target_link_libraries(dspbr_lookup_nan PRIVATE m)
+add_dependencies(dspbr_tests dspbr_lookup_nan)
+add_test(NAME lookup_nan_c COMMAND dspbr_lookup_nan)
