@@ -7,6 +7,9 @@
 // Glass_inv_E: ior[16] glass_ior(k=1) x roughness[16] power(p=1, lo=0) x cos_theta[64] ggx_cos(p=0.6)
 // Glass_E_avg: ior_x[32] power(p=0.5, lo=0) x roughness[32] power(p=1, lo=0)
 // Glass_inv_E_avg: ior_x[32] power(p=0.5, lo=0) x roughness[32] power(p=1, lo=0)
+// Arguments out of range are clamped to it (cosines, roughness, f0, alpha_b, rho_hat: [0, 1];
+// ior: [1, 3]); NaN gives the result at the low end, +-inf at the nearer end; every cell index
+// is clamped on both sides (docs/luts.md, "Limits").
 // Include dspbr_lookup.h first (same folder, same table mode).
 #ifndef DSPBR_GLASS_LOOKUP_H
 #define DSPBR_GLASS_LOOKUP_H
@@ -4403,11 +4406,14 @@ static inline float dspbr_lut_interp_dspbr_Glass_E(float x0, float x1, float x2)
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 15.0f;
   float c2 = dspbr_lut_clampf(x2, 0.0f, 1.0f) * 63.0f;
   int p = (int)(c0);
-  p = p < 0 ? 0 : (p > 14 ? 14 : p);
+  if (p < 0) p = 0;
+  if (p > 14) p = 14;
   int i = (int)(c1);
-  i = i < 0 ? 0 : (i > 14 ? 14 : i);
+  if (i < 0) i = 0;
+  if (i > 14) i = 14;
   int j = (int)(c2);
-  j = j < 0 ? 0 : (j > 62 ? 62 : j);
+  if (j < 0) j = 0;
+  if (j > 62) j = 62;
   float f0 = c0 - (float)(p), f1 = c1 - (float)(i), f2 = c2 - (float)(j);
   float s1 = dspbr_lut_plane_dspbr_Glass_E(p, i, j, f1, f2), s2 = dspbr_lut_plane_dspbr_Glass_E(p + 1, i, j, f1, f2);
   float q0 = dspbr_lut_plane_dspbr_Glass_E(p > 0 ? p - 1 : 0, i, j, f1, f2);
@@ -4436,11 +4442,14 @@ static inline float dspbr_lut_interp_dspbr_Glass_inv_E(float x0, float x1, float
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 15.0f;
   float c2 = dspbr_lut_clampf(x2, 0.0f, 1.0f) * 63.0f;
   int p = (int)(c0);
-  p = p < 0 ? 0 : (p > 14 ? 14 : p);
+  if (p < 0) p = 0;
+  if (p > 14) p = 14;
   int i = (int)(c1);
-  i = i < 0 ? 0 : (i > 14 ? 14 : i);
+  if (i < 0) i = 0;
+  if (i > 14) i = 14;
   int j = (int)(c2);
-  j = j < 0 ? 0 : (j > 62 ? 62 : j);
+  if (j < 0) j = 0;
+  if (j > 62) j = 62;
   float f0 = c0 - (float)(p), f1 = c1 - (float)(i), f2 = c2 - (float)(j);
   float s1 = dspbr_lut_plane_dspbr_Glass_inv_E(p, i, j, f1, f2), s2 = dspbr_lut_plane_dspbr_Glass_inv_E(p + 1, i, j, f1, f2);
   float q0 = dspbr_lut_plane_dspbr_Glass_inv_E(p > 0 ? p - 1 : 0, i, j, f1, f2);
@@ -4460,9 +4469,11 @@ static inline float dspbr_lut_interp_dspbr_Glass_E_avg(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = (int)(c0);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   int j = (int)(c1);
-  j = j < 0 ? 0 : (j > 30 ? 30 : j);
+  if (j < 0) j = 0;
+  if (j > 30) j = 30;
   float f0 = c0 - (float)(i), f1 = c1 - (float)(j);
   float r1 = dspbr_lut_row_dspbr_Glass_E_avg(i, j, f1), r2 = dspbr_lut_row_dspbr_Glass_E_avg(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_Glass_E_avg(i > 0 ? i - 1 : 0, j, f1);
@@ -4482,9 +4493,11 @@ static inline float dspbr_lut_interp_dspbr_Glass_inv_E_avg(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = (int)(c0);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   int j = (int)(c1);
-  j = j < 0 ? 0 : (j > 30 ? 30 : j);
+  if (j < 0) j = 0;
+  if (j > 30) j = 30;
   float f0 = c0 - (float)(i), f1 = c1 - (float)(j);
   float r1 = dspbr_lut_row_dspbr_Glass_inv_E_avg(i, j, f1), r2 = dspbr_lut_row_dspbr_Glass_inv_E_avg(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_Glass_inv_E_avg(i > 0 ? i - 1 : 0, j, f1);
@@ -4493,9 +4506,11 @@ static inline float dspbr_lut_interp_dspbr_Glass_inv_E_avg(float x0, float x1) {
   float r3 = i + 2 < 32 ? q3 : 2.0f * r2 - r1;
   return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
 }
-// Schlick F_0 of the interface, ((ior - 1) / (ior + 1))^2.
+// Schlick F_0 of the interface, ((ior - 1) / (ior + 1))^2, ior clamped to [1, 3] as the
+// tables clamp it (kGlassMaxIor; NaN: 1).
 static inline float dspbr_glass_f0(float ior) {
-  float a = (ior - 1.0f) / (ior + 1.0f);
+  float n = dspbr_lut_clampf(ior, 1.0f, 3.0f);
+  float a = (n - 1.0f) / (n + 1.0f);
   return a * a;
 }
 // E_g(mu; r, ior): albedo of the rough dielectric interface (M_r F + M_t (1 - F), specular 1),
@@ -4522,7 +4537,8 @@ static inline float dspbr_glass_core_E_avg(float roughness, float ior, int insid
 }
 // Share x of the compensated energy that crosses the interface, for a viewer outside (x_o = 1 - F_avg)
 // or inside (x_i = x_o (1 - E_o,avg) / (ior^2 (1 - E_i,avg)), the eta^2 rule; x_i <= 1 bounds x_o).
-static inline float dspbr_glass_transmission_share(float roughness, float ior, int inside) {
+static inline float dspbr_glass_transmission_share(float roughness, float ior_in, int inside) {
+  float ior = dspbr_lut_clampf(ior_in, 1.0f, 3.0f);
   float f0 = dspbr_glass_f0(ior);
   float x_out = 1.0f - (f0 * (20.0f / 21.0f) + 1.0f / 21.0f);
   float m_out = fmaxf(1.0f - dspbr_glass_core_E_avg(roughness, ior, 0), 0.0f);

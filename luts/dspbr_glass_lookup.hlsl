@@ -7,6 +7,9 @@
 // Glass_inv_E: ior[16] glass_ior(k=1) x roughness[16] power(p=1, lo=0) x cos_theta[64] ggx_cos(p=0.6)
 // Glass_E_avg: ior_x[32] power(p=0.5, lo=0) x roughness[32] power(p=1, lo=0)
 // Glass_inv_E_avg: ior_x[32] power(p=0.5, lo=0) x roughness[32] power(p=1, lo=0)
+// Arguments out of range are clamped to it (cosines, roughness, f0, alpha_b, rho_hat: [0, 1];
+// ior: [1, 3]); NaN gives the result at the low end, +-inf at the nearer end; every cell index
+// is clamped on both sides (docs/luts.md, "Limits").
 // Include dspbr_lookup.hlsl first (same folder, same table mode).
 // With DSPBR_LOOKUP_TEXTURES defined, the tables are read from single-channel float
 // textures (R32F; width = fastest axis, height = slowest axis or 1; a three-axis table's
@@ -4404,8 +4407,8 @@ float dspbr_Glass_inv_E_avg_at(int r, int c) { return dspbr_Glass_inv_E_avg_tabl
 // glass_ior warp: x = (x_F + ln(1 + x_F / (k mu^2)) / ln(1 + 1 / (k mu^2))) / 2, x_F = 2 sqrt(F_0),
 // mu clamped to 1e-6.
 float dspbr_lut_glass_ior_warp(float ior, float cos_theta, float k) {
-  float xf = dspbr_lut_clamp(2.0f * (ior - 1.0f) / (ior + 1.0f), 0.0f, 1.0f);
-  float m = dspbr_lut_clamp(cos_theta, 1e-6f, 1.0f);
+  float xf = dspbr_lut_clampf(2.0f * (ior - 1.0f) / (ior + 1.0f), 0.0f, 1.0f);
+  float m = dspbr_lut_clampf(cos_theta, 1e-6f, 1.0f);
   float km = k * m * m;
   return 0.5f * xf + 0.5f * log(1.0f + xf / km) / log(1.0f + 1.0f / km);
 }
@@ -4425,15 +4428,18 @@ float dspbr_lut_plane_dspbr_Glass_E(int p, int i, int j, float f1, float f2) {
   return dspbr_lut_catmull_rom(f1, r0, r1, r2, r3);
 }
 float dspbr_lut_interp_dspbr_Glass_E(float x0, float x1, float x2) {
-  float c0 = dspbr_lut_clamp(x0, 0.0f, 1.0f) * 15.0f;
-  float c1 = dspbr_lut_clamp(x1, 0.0f, 1.0f) * 15.0f;
-  float c2 = dspbr_lut_clamp(x2, 0.0f, 1.0f) * 63.0f;
+  float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 15.0f;
+  float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 15.0f;
+  float c2 = dspbr_lut_clampf(x2, 0.0f, 1.0f) * 63.0f;
   int p = int(c0);
-  p = p < 0 ? 0 : (p > 14 ? 14 : p);
+  if (p < 0) p = 0;
+  if (p > 14) p = 14;
   int i = int(c1);
-  i = i < 0 ? 0 : (i > 14 ? 14 : i);
+  if (i < 0) i = 0;
+  if (i > 14) i = 14;
   int j = int(c2);
-  j = j < 0 ? 0 : (j > 62 ? 62 : j);
+  if (j < 0) j = 0;
+  if (j > 62) j = 62;
   float f0 = c0 - float(p), f1 = c1 - float(i), f2 = c2 - float(j);
   float s1 = dspbr_lut_plane_dspbr_Glass_E(p, i, j, f1, f2), s2 = dspbr_lut_plane_dspbr_Glass_E(p + 1, i, j, f1, f2);
   float q0 = dspbr_lut_plane_dspbr_Glass_E(p > 0 ? p - 1 : 0, i, j, f1, f2);
@@ -4458,15 +4464,18 @@ float dspbr_lut_plane_dspbr_Glass_inv_E(int p, int i, int j, float f1, float f2)
   return dspbr_lut_catmull_rom(f1, r0, r1, r2, r3);
 }
 float dspbr_lut_interp_dspbr_Glass_inv_E(float x0, float x1, float x2) {
-  float c0 = dspbr_lut_clamp(x0, 0.0f, 1.0f) * 15.0f;
-  float c1 = dspbr_lut_clamp(x1, 0.0f, 1.0f) * 15.0f;
-  float c2 = dspbr_lut_clamp(x2, 0.0f, 1.0f) * 63.0f;
+  float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 15.0f;
+  float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 15.0f;
+  float c2 = dspbr_lut_clampf(x2, 0.0f, 1.0f) * 63.0f;
   int p = int(c0);
-  p = p < 0 ? 0 : (p > 14 ? 14 : p);
+  if (p < 0) p = 0;
+  if (p > 14) p = 14;
   int i = int(c1);
-  i = i < 0 ? 0 : (i > 14 ? 14 : i);
+  if (i < 0) i = 0;
+  if (i > 14) i = 14;
   int j = int(c2);
-  j = j < 0 ? 0 : (j > 62 ? 62 : j);
+  if (j < 0) j = 0;
+  if (j > 62) j = 62;
   float f0 = c0 - float(p), f1 = c1 - float(i), f2 = c2 - float(j);
   float s1 = dspbr_lut_plane_dspbr_Glass_inv_E(p, i, j, f1, f2), s2 = dspbr_lut_plane_dspbr_Glass_inv_E(p + 1, i, j, f1, f2);
   float q0 = dspbr_lut_plane_dspbr_Glass_inv_E(p > 0 ? p - 1 : 0, i, j, f1, f2);
@@ -4483,12 +4492,14 @@ float dspbr_lut_row_dspbr_Glass_E_avg(int r, int j, float f) {
   return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
 }
 float dspbr_lut_interp_dspbr_Glass_E_avg(float x0, float x1) {
-  float c0 = dspbr_lut_clamp(x0, 0.0f, 1.0f) * 31.0f;
-  float c1 = dspbr_lut_clamp(x1, 0.0f, 1.0f) * 31.0f;
+  float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = int(c0);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   int j = int(c1);
-  j = j < 0 ? 0 : (j > 30 ? 30 : j);
+  if (j < 0) j = 0;
+  if (j > 30) j = 30;
   float f0 = c0 - float(i), f1 = c1 - float(j);
   float r1 = dspbr_lut_row_dspbr_Glass_E_avg(i, j, f1), r2 = dspbr_lut_row_dspbr_Glass_E_avg(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_Glass_E_avg(i > 0 ? i - 1 : 0, j, f1);
@@ -4505,12 +4516,14 @@ float dspbr_lut_row_dspbr_Glass_inv_E_avg(int r, int j, float f) {
   return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
 }
 float dspbr_lut_interp_dspbr_Glass_inv_E_avg(float x0, float x1) {
-  float c0 = dspbr_lut_clamp(x0, 0.0f, 1.0f) * 31.0f;
-  float c1 = dspbr_lut_clamp(x1, 0.0f, 1.0f) * 31.0f;
+  float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = int(c0);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   int j = int(c1);
-  j = j < 0 ? 0 : (j > 30 ? 30 : j);
+  if (j < 0) j = 0;
+  if (j > 30) j = 30;
   float f0 = c0 - float(i), f1 = c1 - float(j);
   float r1 = dspbr_lut_row_dspbr_Glass_inv_E_avg(i, j, f1), r2 = dspbr_lut_row_dspbr_Glass_inv_E_avg(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_Glass_inv_E_avg(i > 0 ? i - 1 : 0, j, f1);
@@ -4519,36 +4532,39 @@ float dspbr_lut_interp_dspbr_Glass_inv_E_avg(float x0, float x1) {
   float r3 = i + 2 < 32 ? q3 : 2.0f * r2 - r1;
   return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
 }
-// Schlick F_0 of the interface, ((ior - 1) / (ior + 1))^2.
+// Schlick F_0 of the interface, ((ior - 1) / (ior + 1))^2, ior clamped to [1, 3] as the
+// tables clamp it (kGlassMaxIor; NaN: 1).
 float dspbr_glass_f0(float ior) {
-  float a = (ior - 1.0f) / (ior + 1.0f);
+  float n = dspbr_lut_clampf(ior, 1.0f, 3.0f);
+  float a = (n - 1.0f) / (n + 1.0f);
   return a * a;
 }
 // E_g(mu; r, ior): albedo of the rough dielectric interface (M_r F + M_t (1 - F), specular 1),
 // v outside (inside = 0) or inside (inside = 1, total internal reflection included).
 float dspbr_glass_E(float cos_theta, float roughness, float ior, int inside) {
-  float r = dspbr_lut_clamp(roughness, 0.0f, 1.0f);
-  float mu = dspbr_lut_clamp(cos_theta, 0.0f, 1.0f);
-  return inside != 0 ? dspbr_lut_interp_dspbr_Glass_inv_E(dspbr_lut_glass_ior_warp(ior, mu, 1.0f), dspbr_lut_clamp(r, 0.0f, 1.0f), pow(dspbr_lut_ggx_cos_t(mu, r * r), 0.600000024f))
-                     : dspbr_lut_interp_dspbr_Glass_E(dspbr_lut_glass_ior_warp(ior, mu, 1.0f), dspbr_lut_clamp(r, 0.0f, 1.0f), pow(dspbr_lut_ggx_cos_t(mu, r * r), 0.600000024f));
+  float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
+  float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
+  return inside != 0 ? dspbr_lut_interp_dspbr_Glass_inv_E(dspbr_lut_glass_ior_warp(ior, mu, 1.0f), dspbr_lut_clampf(r, 0.0f, 1.0f), pow(dspbr_lut_ggx_cos_t(mu, r * r), 0.600000024f))
+                     : dspbr_lut_interp_dspbr_Glass_E(dspbr_lut_glass_ior_warp(ior, mu, 1.0f), dspbr_lut_clampf(r, 0.0f, 1.0f), pow(dspbr_lut_ggx_cos_t(mu, r * r), 0.600000024f));
 }
 // 2 Integral E_g mu dmu (the cosine average of dspbr_glass_E).
 float dspbr_glass_E_avg(float roughness, float ior, int inside) {
-  float xf = dspbr_lut_clamp(2.0f * (ior - 1.0f) / (ior + 1.0f), 0.0f, 1.0f);
-  return inside != 0 ? dspbr_lut_interp_dspbr_Glass_inv_E_avg(sqrt(dspbr_lut_clamp(xf, 0.0f, 1.0f)), dspbr_lut_clamp(roughness, 0.0f, 1.0f)) : dspbr_lut_interp_dspbr_Glass_E_avg(sqrt(dspbr_lut_clamp(xf, 0.0f, 1.0f)), dspbr_lut_clamp(roughness, 0.0f, 1.0f));
+  float xf = dspbr_lut_clampf(2.0f * (ior - 1.0f) / (ior + 1.0f), 0.0f, 1.0f);
+  return inside != 0 ? dspbr_lut_interp_dspbr_Glass_inv_E_avg(sqrt(dspbr_lut_clampf(xf, 0.0f, 1.0f)), dspbr_lut_clampf(roughness, 0.0f, 1.0f)) : dspbr_lut_interp_dspbr_Glass_E_avg(sqrt(dspbr_lut_clampf(xf, 0.0f, 1.0f)), dspbr_lut_clampf(roughness, 0.0f, 1.0f));
 }
 // Albedo of the white transparent core on one side: E_g + F_ms (1 - E_m) (the spec's M_r,ms F_ms).
 float dspbr_glass_core_E(float cos_theta, float roughness, float ior, int inside) {
-  float fms = dspbr_fresnel_ms(dspbr_glass_f0(ior), 1.0f, dspbr_lut_clamp(dspbr_ggx_E_avg(roughness), 0.0f, 1.0f));
+  float fms = dspbr_fresnel_ms(dspbr_glass_f0(ior), 1.0f, dspbr_lut_clampf(dspbr_ggx_E_avg(roughness), 0.0f, 1.0f));
   return dspbr_glass_E(cos_theta, roughness, ior, inside) + fms * (1.0f - dspbr_ggx_E(cos_theta, roughness));
 }
 float dspbr_glass_core_E_avg(float roughness, float ior, int inside) {
-  float fms = dspbr_fresnel_ms(dspbr_glass_f0(ior), 1.0f, dspbr_lut_clamp(dspbr_ggx_E_avg(roughness), 0.0f, 1.0f));
+  float fms = dspbr_fresnel_ms(dspbr_glass_f0(ior), 1.0f, dspbr_lut_clampf(dspbr_ggx_E_avg(roughness), 0.0f, 1.0f));
   return dspbr_glass_E_avg(roughness, ior, inside) + fms * dspbr_ggx_E_avg_missing(roughness);
 }
 // Share x of the compensated energy that crosses the interface, for a viewer outside (x_o = 1 - F_avg)
 // or inside (x_i = x_o (1 - E_o,avg) / (ior^2 (1 - E_i,avg)), the eta^2 rule; x_i <= 1 bounds x_o).
-float dspbr_glass_transmission_share(float roughness, float ior, int inside) {
+float dspbr_glass_transmission_share(float roughness, float ior_in, int inside) {
+  float ior = dspbr_lut_clampf(ior_in, 1.0f, 3.0f);
   float f0 = dspbr_glass_f0(ior);
   float x_out = 1.0f - (f0 * (20.0f / 21.0f) + 1.0f / 21.0f);
   float m_out = max(1.0f - dspbr_glass_core_E_avg(roughness, ior, 0), 0.0f);
@@ -4569,19 +4585,19 @@ float dspbr_glass_compensation(float cos_v, float cos_l, float roughness, float 
   int side_l = transmission != 0 ? 1 - inside : inside;
   float missing_avg = 1.0f - dspbr_glass_core_E_avg(roughness, ior, side_l);
   if (missing_avg <= 1e-9f) return 0.0f;
-  float mv = dspbr_lut_clamp(1.0f - dspbr_glass_core_E(abs(cos_v), roughness, ior, inside), 0.0f, 1.0f);
-  float ml = dspbr_lut_clamp(1.0f - dspbr_glass_core_E(abs(cos_l), roughness, ior, side_l), 0.0f, 1.0f);
+  float mv = dspbr_lut_clampf(1.0f - dspbr_glass_core_E(abs(cos_v), roughness, ior, inside), 0.0f, 1.0f);
+  float ml = dspbr_lut_clampf(1.0f - dspbr_glass_core_E(abs(cos_l), roughness, ior, side_l), 0.0f, 1.0f);
   float x = dspbr_glass_transmission_share(roughness, ior, inside);
   return (transmission != 0 ? x : 1.0f - x) * mv * ml / (3.14159265f * missing_avg);
 }
 // The same for thin-walled glass: one albedo for both sides, 1 - E = (1 - F_ms)(1 - E_m), x = 1 - F_avg.
 float dspbr_thin_glass_compensation(float cos_v, float cos_l, float roughness, float ior, int transmission) {
   float f0 = dspbr_glass_f0(ior);
-  float fms = dspbr_fresnel_ms(f0, 1.0f, dspbr_lut_clamp(dspbr_ggx_E_avg(roughness), 0.0f, 1.0f));
+  float fms = dspbr_fresnel_ms(f0, 1.0f, dspbr_lut_clampf(dspbr_ggx_E_avg(roughness), 0.0f, 1.0f));
   float missing_avg = (1.0f - fms) * dspbr_ggx_E_avg_missing(roughness);
   if (missing_avg <= 1e-9f) return 0.0f;
-  float mv = dspbr_lut_clamp((1.0f - fms) * (1.0f - dspbr_ggx_E(abs(cos_v), roughness)), 0.0f, 1.0f);
-  float ml = dspbr_lut_clamp((1.0f - fms) * (1.0f - dspbr_ggx_E(abs(cos_l), roughness)), 0.0f, 1.0f);
+  float mv = dspbr_lut_clampf((1.0f - fms) * (1.0f - dspbr_ggx_E(abs(cos_v), roughness)), 0.0f, 1.0f);
+  float ml = dspbr_lut_clampf((1.0f - fms) * (1.0f - dspbr_ggx_E(abs(cos_l), roughness)), 0.0f, 1.0f);
   float x = 1.0f - (f0 * (20.0f / 21.0f) + 1.0f / 21.0f);
   return (transmission != 0 ? x : 1.0f - x) * mv * ml / (3.14159265f * missing_avg);
 }

@@ -8,15 +8,15 @@
 // GGX_B_avg: roughness[32] power(p=1, lo=0)
 // Sheen_E: alpha_b[32] power(p=0.25, lo=0.00390625) x cos_theta[32] power(p=0.25, lo=0.001)
 // Sheen_ash_E: alpha_b[32] power(p=0.25, lo=0.00390625) x cos_theta[32] power(p=0.25, lo=0.001)
+// Arguments out of range are clamped to it (cosines, roughness, f0, alpha_b, rho_hat: [0, 1];
+// ior: [1, 3]); NaN gives the result at the low end, +-inf at the nearer end; every cell index
+// is clamped on both sides (docs/luts.md, "Limits").
 #ifndef DSPBR_LOOKUP_H
 #define DSPBR_LOOKUP_H
 #include <math.h>
 
 #define DSPBR_LOOKUP_FLOATS 5184
 
-// x clamped to [lo, hi], NaN to lo: no NaN reaches a cell index (a NaN argument reads the
-// table at the low end of its axis; docs/luts.md, "NaN and infinite arguments").
-static inline float dspbr_lut_clampf(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
 static const float dspbr_GGX_E_table[2048] = {
   0.999472797f, 0.999472797f, 0.999472797f, 0.999472797f, 0.999146819f, 0.998664856f, 0.998073757f, 0.997372329f,
   0.996559143f, 0.995632529f, 0.994590759f, 0.993431628f, 0.992152929f, 0.990752339f, 0.989227057f, 0.987574458f,
@@ -678,6 +678,8 @@ static const float dspbr_Sheen_ash_E_table[1024] = {
   0.341646045f, 0.315652341f, 0.288949549f, 0.261490613f, 0.23318702f, 0.2038977f, 0.173411891f, 0.141421363f};
 static inline float dspbr_Sheen_ash_E_at(int r, int c) { return dspbr_Sheen_ash_E_table[r * 32 + c]; }
 
+// NaN-safe clamp: NaN maps to lo (every comparison with NaN is false), +-inf to the nearer end.
+static inline float dspbr_lut_clampf(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
 static inline float dspbr_lut_catmull_rom(float f, float p0, float p1, float p2, float p3) {
   float f2 = f * f, f3 = f2 * f;
   return 0.5f * ((-f3 + 2.0f * f2 - f) * p0 + (3.0f * f3 - 5.0f * f2 + 2.0f) * p1 +
@@ -700,9 +702,11 @@ static inline float dspbr_lut_interp_dspbr_GGX_E(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 63.0f;
   int i = (int)(c0);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   int j = (int)(c1);
-  j = j < 0 ? 0 : (j > 62 ? 62 : j);
+  if (j < 0) j = 0;
+  if (j > 62) j = 62;
   float f0 = c0 - (float)(i), f1 = c1 - (float)(j);
   float r1 = dspbr_lut_row_dspbr_GGX_E(i, j, f1), r2 = dspbr_lut_row_dspbr_GGX_E(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_GGX_E(i > 0 ? i - 1 : 0, j, f1);
@@ -722,9 +726,11 @@ static inline float dspbr_lut_interp_dspbr_GGX_beta(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = (int)(c0);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   int j = (int)(c1);
-  j = j < 0 ? 0 : (j > 30 ? 30 : j);
+  if (j < 0) j = 0;
+  if (j > 30) j = 30;
   float f0 = c0 - (float)(i), f1 = c1 - (float)(j);
   float r1 = dspbr_lut_row_dspbr_GGX_beta(i, j, f1), r2 = dspbr_lut_row_dspbr_GGX_beta(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_GGX_beta(i > 0 ? i - 1 : 0, j, f1);
@@ -736,7 +742,8 @@ static inline float dspbr_lut_interp_dspbr_GGX_beta(float x0, float x1) {
 static inline float dspbr_lut_interp_dspbr_GGX_E_avg(float x) {
   float c = dspbr_lut_clampf(x, 0.0f, 1.0f) * 31.0f;
   int i = (int)(c);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   float f = c - (float)(i);
   float p1 = dspbr_GGX_E_avg_at(i), p2 = dspbr_GGX_E_avg_at(i + 1);
   float q0 = dspbr_GGX_E_avg_at(i > 0 ? i - 1 : 0), q3 = dspbr_GGX_E_avg_at(i + 2 < 32 ? i + 2 : 32 - 1);
@@ -747,7 +754,8 @@ static inline float dspbr_lut_interp_dspbr_GGX_E_avg(float x) {
 static inline float dspbr_lut_interp_dspbr_GGX_B_avg(float x) {
   float c = dspbr_lut_clampf(x, 0.0f, 1.0f) * 31.0f;
   int i = (int)(c);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   float f = c - (float)(i);
   float p1 = dspbr_GGX_B_avg_at(i), p2 = dspbr_GGX_B_avg_at(i + 1);
   float q0 = dspbr_GGX_B_avg_at(i > 0 ? i - 1 : 0), q3 = dspbr_GGX_B_avg_at(i + 2 < 32 ? i + 2 : 32 - 1);
@@ -766,9 +774,11 @@ static inline float dspbr_lut_interp_dspbr_Sheen_E(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = (int)(c0);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   int j = (int)(c1);
-  j = j < 0 ? 0 : (j > 30 ? 30 : j);
+  if (j < 0) j = 0;
+  if (j > 30) j = 30;
   float f0 = c0 - (float)(i), f1 = c1 - (float)(j);
   float r1 = dspbr_lut_row_dspbr_Sheen_E(i, j, f1), r2 = dspbr_lut_row_dspbr_Sheen_E(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_Sheen_E(i > 0 ? i - 1 : 0, j, f1);
@@ -788,9 +798,11 @@ static inline float dspbr_lut_interp_dspbr_Sheen_ash_E(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = (int)(c0);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   int j = (int)(c1);
-  j = j < 0 ? 0 : (j > 30 ? 30 : j);
+  if (j < 0) j = 0;
+  if (j > 30) j = 30;
   float f0 = c0 - (float)(i), f1 = c1 - (float)(j);
   float r1 = dspbr_lut_row_dspbr_Sheen_ash_E(i, j, f1), r2 = dspbr_lut_row_dspbr_Sheen_ash_E(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_Sheen_ash_E(i > 0 ? i - 1 : 0, j, f1);
@@ -817,19 +829,25 @@ static inline float dspbr_lut_ggx_B(float cos_theta, float roughness) {
   float beta = m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrtf(dspbr_lut_ggx_cos_t(mu, r * r)));
   return beta * dspbr_ggx_E(mu, r);
 }
-// F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = 20/21 f0 + 1/21 f90 (spec eq. multiscatter).
+// F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = 20/21 f0 + 1/21 f90 (spec eq. multiscatter);
+// f0, f90, e_avg clamped to [0, 1]; 1 (the limit along F_avg = 1) when F_avg = 1 and E_avg = 0.
 static inline float dspbr_fresnel_ms(float f0, float f90, float e_avg) {
-  float fa = f0 * (20.0f / 21.0f) + f90 * (1.0f / 21.0f);
-  return fa * fa * e_avg / (1.0f - fa * (1.0f - e_avg));
+  float e = dspbr_lut_clampf(e_avg, 0.0f, 1.0f);
+  float fa = dspbr_lut_clampf(f0, 0.0f, 1.0f) * (20.0f / 21.0f) + dspbr_lut_clampf(f90, 0.0f, 1.0f) * (1.0f / 21.0f);
+  float d = 1.0f - fa * (1.0f - e);
+  return d > 0.0f ? fa * fa * e / d : 1.0f;
 }
-// E(mu; r, f0) = f0 E_m + (1 - f0) B + F_ms(f0, 1; E_m,avg) (1 - E_m) (spec "Energy Preservation").
-static inline float dspbr_base_E(float cos_theta, float roughness, float f0) {
+// E(mu; r, f0) = f0 E_m + (1 - f0) B + F_ms(f0, 1; E_m,avg) (1 - E_m) (spec "Energy Preservation");
+// f0 clamped to [0, 1].
+static inline float dspbr_base_E(float cos_theta, float roughness, float f0_in) {
+  float f0 = dspbr_lut_clampf(f0_in, 0.0f, 1.0f);
   float em = dspbr_ggx_E(cos_theta, roughness);
   float fms = dspbr_fresnel_ms(f0, 1.0f, dspbr_ggx_E_avg(roughness));
   return f0 * em + (1.0f - f0) * dspbr_lut_ggx_B(cos_theta, roughness) + fms * (1.0f - em);
 }
 // E_avg(r, f0) = f0 E_m,avg + (1 - f0) B_avg + F_ms (1 - E_m,avg).
-static inline float dspbr_base_E_avg(float roughness, float f0) {
+static inline float dspbr_base_E_avg(float roughness, float f0_in) {
+  float f0 = dspbr_lut_clampf(f0_in, 0.0f, 1.0f);
   float missing = dspbr_ggx_E_avg_missing(roughness);
   float b_avg = dspbr_lut_interp_dspbr_GGX_B_avg(dspbr_lut_clampf(roughness, 0.0f, 1.0f));
   return f0 * (1.0f - missing) + (1.0f - f0) * b_avg + dspbr_fresnel_ms(f0, 1.0f, 1.0f - missing) * missing;
@@ -860,12 +878,14 @@ static inline float dspbr_diffuse_bc(float cos_v, float cos_l, float roughness, 
 }
 // Sheen layer scale fminf(1 - rho_hat E_b(mu_v), 1 - rho_hat E_b(mu_l)), E_b clamped to [0, 1]
 // (spec "Sheen": albedo scaling of the layers below; rho_hat = max component of the sheen colour).
-static inline float dspbr_sheen_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_hat) {
+static inline float dspbr_sheen_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_in) {
+  float rho_hat = dspbr_lut_clampf(rho_in, 0.0f, 1.0f);
   float ev = dspbr_lut_clampf(dspbr_sheen_E(cos_v, alpha_b), 0.0f, 1.0f);
   float el = dspbr_lut_clampf(dspbr_sheen_E(cos_l, alpha_b), 0.0f, 1.0f);
   return dspbr_lut_clampf(fminf(1.0f - rho_hat * ev, 1.0f - rho_hat * el), 0.0f, 1.0f);
 }
-static inline float dspbr_sheen_ash_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_hat) {
+static inline float dspbr_sheen_ash_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_in) {
+  float rho_hat = dspbr_lut_clampf(rho_in, 0.0f, 1.0f);
   float ev = dspbr_lut_clampf(dspbr_sheen_ash_E(cos_v, alpha_b), 0.0f, 1.0f);
   float el = dspbr_lut_clampf(dspbr_sheen_ash_E(cos_l, alpha_b), 0.0f, 1.0f);
   return dspbr_lut_clampf(fminf(1.0f - rho_hat * ev, 1.0f - rho_hat * el), 0.0f, 1.0f);

@@ -8,6 +8,9 @@
 // GGX_B_avg: roughness[32] power(p=1, lo=0)
 // Sheen_E: alpha_b[32] power(p=0.25, lo=0.00390625) x cos_theta[32] power(p=0.25, lo=0.001)
 // Sheen_ash_E: alpha_b[32] power(p=0.25, lo=0.00390625) x cos_theta[32] power(p=0.25, lo=0.001)
+// Arguments out of range are clamped to it (cosines, roughness, f0, alpha_b, rho_hat: [0, 1];
+// ior: [1, 3]); NaN gives the result at the low end, +-inf at the nearer end; every cell index
+// is clamped on both sides (docs/luts.md, "Limits").
 // With DSPBR_LOOKUP_TEXTURES defined, the tables are read from single-channel float
 // textures (R32F; width = fastest axis, height = slowest axis or 1; a three-axis table's
 // planes stacked: row = plane * rows + row), fetched with texelFetch / Load at integer texel
@@ -34,9 +37,6 @@
 #ifndef DSPBR_LOOKUP_REGISTER_SPACE
 #define DSPBR_LOOKUP_REGISTER_SPACE space0
 #endif
-// x clamped to [lo, hi], NaN to lo: no NaN reaches a cell index (a NaN argument reads the
-// table at the low end of its axis; docs/luts.md, "NaN and infinite arguments").
-float dspbr_lut_clamp(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
 #ifdef DSPBR_LOOKUP_TEXTURES
 Texture2D<float> dspbr_GGX_E_tex : register(t0, DSPBR_LOOKUP_REGISTER_SPACE);
 float dspbr_GGX_E_at(int r, int c) { return dspbr_GGX_E_tex.Load(int3(c, r, 0)); }
@@ -719,6 +719,8 @@ DSPBR_TABLE_END
 float dspbr_Sheen_ash_E_at(int r, int c) { return dspbr_Sheen_ash_E_table[r * 32 + c]; }
 #endif
 
+// NaN-safe clamp: NaN maps to lo (every comparison with NaN is false), +-inf to the nearer end.
+float dspbr_lut_clampf(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
 float dspbr_lut_catmull_rom(float f, float p0, float p1, float p2, float p3) {
   float f2 = f * f, f3 = f2 * f;
   return 0.5f * ((-f3 + 2.0f * f2 - f) * p0 + (3.0f * f3 - 5.0f * f2 + 2.0f) * p1 +
@@ -726,7 +728,7 @@ float dspbr_lut_catmull_rom(float f, float p0, float p1, float p2, float p3) {
 }
 // ggx_cos warp x = t^p: t = mu / (mu + alpha sqrt(1 - mu^2)) (t = 1 when alpha = 0).
 float dspbr_lut_ggx_cos_t(float cos_theta, float alpha) {
-  float mu = dspbr_lut_clamp(cos_theta, 0.0f, 1.0f);
+  float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
   float d = mu + alpha * sqrt(max(1.0f - mu * mu, 0.0f));
   return d > 0.0f ? mu / d : 1.0f;
 }
@@ -738,12 +740,14 @@ float dspbr_lut_row_dspbr_GGX_E(int r, int j, float f) {
   return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
 }
 float dspbr_lut_interp_dspbr_GGX_E(float x0, float x1) {
-  float c0 = dspbr_lut_clamp(x0, 0.0f, 1.0f) * 31.0f;
-  float c1 = dspbr_lut_clamp(x1, 0.0f, 1.0f) * 63.0f;
+  float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 63.0f;
   int i = int(c0);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   int j = int(c1);
-  j = j < 0 ? 0 : (j > 62 ? 62 : j);
+  if (j < 0) j = 0;
+  if (j > 62) j = 62;
   float f0 = c0 - float(i), f1 = c1 - float(j);
   float r1 = dspbr_lut_row_dspbr_GGX_E(i, j, f1), r2 = dspbr_lut_row_dspbr_GGX_E(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_GGX_E(i > 0 ? i - 1 : 0, j, f1);
@@ -760,12 +764,14 @@ float dspbr_lut_row_dspbr_GGX_beta(int r, int j, float f) {
   return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
 }
 float dspbr_lut_interp_dspbr_GGX_beta(float x0, float x1) {
-  float c0 = dspbr_lut_clamp(x0, 0.0f, 1.0f) * 31.0f;
-  float c1 = dspbr_lut_clamp(x1, 0.0f, 1.0f) * 31.0f;
+  float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = int(c0);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   int j = int(c1);
-  j = j < 0 ? 0 : (j > 30 ? 30 : j);
+  if (j < 0) j = 0;
+  if (j > 30) j = 30;
   float f0 = c0 - float(i), f1 = c1 - float(j);
   float r1 = dspbr_lut_row_dspbr_GGX_beta(i, j, f1), r2 = dspbr_lut_row_dspbr_GGX_beta(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_GGX_beta(i > 0 ? i - 1 : 0, j, f1);
@@ -775,9 +781,10 @@ float dspbr_lut_interp_dspbr_GGX_beta(float x0, float x1) {
   return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
 }
 float dspbr_lut_interp_dspbr_GGX_E_avg(float x) {
-  float c = dspbr_lut_clamp(x, 0.0f, 1.0f) * 31.0f;
+  float c = dspbr_lut_clampf(x, 0.0f, 1.0f) * 31.0f;
   int i = int(c);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   float f = c - float(i);
   float p1 = dspbr_GGX_E_avg_at(i), p2 = dspbr_GGX_E_avg_at(i + 1);
   float q0 = dspbr_GGX_E_avg_at(i > 0 ? i - 1 : 0), q3 = dspbr_GGX_E_avg_at(i + 2 < 32 ? i + 2 : 32 - 1);
@@ -786,9 +793,10 @@ float dspbr_lut_interp_dspbr_GGX_E_avg(float x) {
   return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
 }
 float dspbr_lut_interp_dspbr_GGX_B_avg(float x) {
-  float c = dspbr_lut_clamp(x, 0.0f, 1.0f) * 31.0f;
+  float c = dspbr_lut_clampf(x, 0.0f, 1.0f) * 31.0f;
   int i = int(c);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   float f = c - float(i);
   float p1 = dspbr_GGX_B_avg_at(i), p2 = dspbr_GGX_B_avg_at(i + 1);
   float q0 = dspbr_GGX_B_avg_at(i > 0 ? i - 1 : 0), q3 = dspbr_GGX_B_avg_at(i + 2 < 32 ? i + 2 : 32 - 1);
@@ -804,12 +812,14 @@ float dspbr_lut_row_dspbr_Sheen_E(int r, int j, float f) {
   return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
 }
 float dspbr_lut_interp_dspbr_Sheen_E(float x0, float x1) {
-  float c0 = dspbr_lut_clamp(x0, 0.0f, 1.0f) * 31.0f;
-  float c1 = dspbr_lut_clamp(x1, 0.0f, 1.0f) * 31.0f;
+  float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = int(c0);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   int j = int(c1);
-  j = j < 0 ? 0 : (j > 30 ? 30 : j);
+  if (j < 0) j = 0;
+  if (j > 30) j = 30;
   float f0 = c0 - float(i), f1 = c1 - float(j);
   float r1 = dspbr_lut_row_dspbr_Sheen_E(i, j, f1), r2 = dspbr_lut_row_dspbr_Sheen_E(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_Sheen_E(i > 0 ? i - 1 : 0, j, f1);
@@ -826,12 +836,14 @@ float dspbr_lut_row_dspbr_Sheen_ash_E(int r, int j, float f) {
   return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
 }
 float dspbr_lut_interp_dspbr_Sheen_ash_E(float x0, float x1) {
-  float c0 = dspbr_lut_clamp(x0, 0.0f, 1.0f) * 31.0f;
-  float c1 = dspbr_lut_clamp(x1, 0.0f, 1.0f) * 31.0f;
+  float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
   int i = int(c0);
-  i = i < 0 ? 0 : (i > 30 ? 30 : i);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
   int j = int(c1);
-  j = j < 0 ? 0 : (j > 30 ? 30 : j);
+  if (j < 0) j = 0;
+  if (j > 30) j = 30;
   float f0 = c0 - float(i), f1 = c1 - float(j);
   float r1 = dspbr_lut_row_dspbr_Sheen_ash_E(i, j, f1), r2 = dspbr_lut_row_dspbr_Sheen_ash_E(i + 1, j, f1);
   float q0 = dspbr_lut_row_dspbr_Sheen_ash_E(i > 0 ? i - 1 : 0, j, f1);
@@ -842,74 +854,82 @@ float dspbr_lut_interp_dspbr_Sheen_ash_E(float x0, float x1) {
 }
 // E_m(mu; r): single-scattering GGX albedo.
 float dspbr_ggx_E(float cos_theta, float roughness) {
-  float r = dspbr_lut_clamp(roughness, 0.0f, 1.0f);
-  return dspbr_lut_interp_dspbr_GGX_E(dspbr_lut_clamp(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(cos_theta, r * r)));
+  float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
+  return dspbr_lut_interp_dspbr_GGX_E(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(cos_theta, r * r)));
 }
 // 1 - E_m,avg(r), stored as a logarithm (it vanishes like r^4).
 float dspbr_ggx_E_avg_missing(float roughness) {
-  return exp(dspbr_lut_interp_dspbr_GGX_E_avg(sqrt(((dspbr_lut_clamp(roughness, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f))));
+  return exp(dspbr_lut_interp_dspbr_GGX_E_avg(sqrt(((dspbr_lut_clampf(roughness, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f))));
 }
 float dspbr_ggx_E_avg(float roughness) { return 1.0f - dspbr_ggx_E_avg_missing(roughness); }
 // Schlick moment B = Integral M_r (1 - v.h)^5 mu_l dl = beta E_m; stored beta - (1 - mu)^5.
 float dspbr_lut_ggx_B(float cos_theta, float roughness) {
-  float r = dspbr_lut_clamp(roughness, 0.0f, 1.0f);
-  float mu = dspbr_lut_clamp(cos_theta, 0.0f, 1.0f);
+  float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
+  float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
   float m = 1.0f - mu, m2 = m * m;
-  float beta = m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(dspbr_lut_clamp(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(mu, r * r)));
+  float beta = m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(mu, r * r)));
   return beta * dspbr_ggx_E(mu, r);
 }
-// F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = 20/21 f0 + 1/21 f90 (spec eq. multiscatter).
+// F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = 20/21 f0 + 1/21 f90 (spec eq. multiscatter);
+// f0, f90, e_avg clamped to [0, 1]; 1 (the limit along F_avg = 1) when F_avg = 1 and E_avg = 0.
 float dspbr_fresnel_ms(float f0, float f90, float e_avg) {
-  float fa = f0 * (20.0f / 21.0f) + f90 * (1.0f / 21.0f);
-  return fa * fa * e_avg / (1.0f - fa * (1.0f - e_avg));
+  float e = dspbr_lut_clampf(e_avg, 0.0f, 1.0f);
+  float fa = dspbr_lut_clampf(f0, 0.0f, 1.0f) * (20.0f / 21.0f) + dspbr_lut_clampf(f90, 0.0f, 1.0f) * (1.0f / 21.0f);
+  float d = 1.0f - fa * (1.0f - e);
+  return d > 0.0f ? fa * fa * e / d : 1.0f;
 }
-// E(mu; r, f0) = f0 E_m + (1 - f0) B + F_ms(f0, 1; E_m,avg) (1 - E_m) (spec "Energy Preservation").
-float dspbr_base_E(float cos_theta, float roughness, float f0) {
+// E(mu; r, f0) = f0 E_m + (1 - f0) B + F_ms(f0, 1; E_m,avg) (1 - E_m) (spec "Energy Preservation");
+// f0 clamped to [0, 1].
+float dspbr_base_E(float cos_theta, float roughness, float f0_in) {
+  float f0 = dspbr_lut_clampf(f0_in, 0.0f, 1.0f);
   float em = dspbr_ggx_E(cos_theta, roughness);
   float fms = dspbr_fresnel_ms(f0, 1.0f, dspbr_ggx_E_avg(roughness));
   return f0 * em + (1.0f - f0) * dspbr_lut_ggx_B(cos_theta, roughness) + fms * (1.0f - em);
 }
 // E_avg(r, f0) = f0 E_m,avg + (1 - f0) B_avg + F_ms (1 - E_m,avg).
-float dspbr_base_E_avg(float roughness, float f0) {
+float dspbr_base_E_avg(float roughness, float f0_in) {
+  float f0 = dspbr_lut_clampf(f0_in, 0.0f, 1.0f);
   float missing = dspbr_ggx_E_avg_missing(roughness);
-  float b_avg = dspbr_lut_interp_dspbr_GGX_B_avg(dspbr_lut_clamp(roughness, 0.0f, 1.0f));
+  float b_avg = dspbr_lut_interp_dspbr_GGX_B_avg(dspbr_lut_clampf(roughness, 0.0f, 1.0f));
   return f0 * (1.0f - missing) + (1.0f - f0) * b_avg + dspbr_fresnel_ms(f0, 1.0f, 1.0f - missing) * missing;
 }
 // E_b(mu; alpha_b) of the main sheen (Charlie D_b, the spec's Lambda fit).
 float dspbr_sheen_E(float cos_theta, float alpha_b) {
-  return dspbr_lut_interp_dspbr_Sheen_E(pow(((dspbr_lut_clamp(alpha_b, 0.00390625f, 1.0f) - 0.00390625f) / 0.99609375f), 0.25f), pow(((dspbr_lut_clamp(cos_theta, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f), 0.25f));
+  return dspbr_lut_interp_dspbr_Sheen_E(pow(((dspbr_lut_clampf(alpha_b, 0.00390625f, 1.0f) - 0.00390625f) / 0.99609375f), 0.25f), pow(((dspbr_lut_clampf(cos_theta, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f), 0.25f));
 }
 // E_b(mu; alpha_b) of the alternative sheen (visibility 1 / (4 (mu_v + mu_l - mu_v mu_l))).
 float dspbr_sheen_ash_E(float cos_theta, float alpha_b) {
-  return dspbr_lut_interp_dspbr_Sheen_ash_E(pow(((dspbr_lut_clamp(alpha_b, 0.00390625f, 1.0f) - 0.00390625f) / 0.99609375f), 0.25f), pow(((dspbr_lut_clamp(cos_theta, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f), 0.25f));
+  return dspbr_lut_interp_dspbr_Sheen_ash_E(pow(((dspbr_lut_clampf(alpha_b, 0.00390625f, 1.0f) - 0.00390625f) / 0.99609375f), 0.25f), pow(((dspbr_lut_clampf(cos_theta, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f), 0.25f));
 }
 // M_r,ms / F_ms = (1 - E_m(mu_v)) (1 - E_m(mu_l)) / (pi (1 - E_m,avg)); 0 when 1 - E_m,avg <= 1e-9.
 float dspbr_ms_lobe(float cos_v, float cos_l, float roughness) {
   float missing = dspbr_ggx_E_avg_missing(roughness);
   if (missing <= 1e-9f) return 0.0f;
-  float mv = dspbr_lut_clamp(1.0f - dspbr_ggx_E(cos_v, roughness), 0.0f, 1.0f);
-  float ml = dspbr_lut_clamp(1.0f - dspbr_ggx_E(cos_l, roughness), 0.0f, 1.0f);
+  float mv = dspbr_lut_clampf(1.0f - dspbr_ggx_E(cos_v, roughness), 0.0f, 1.0f);
+  float ml = dspbr_lut_clampf(1.0f - dspbr_ggx_E(cos_l, roughness), 0.0f, 1.0f);
   return mv * ml / (3.14159265f * missing);
 }
 // B_c / rho = (1 - E(mu_v)) (1 - E(mu_l)) / (pi (1 - E_avg)) (spec eq. b_c); 0 when 1 - E_avg <= 1e-9.
 float dspbr_diffuse_bc(float cos_v, float cos_l, float roughness, float f0) {
   float missing = 1.0f - dspbr_base_E_avg(roughness, f0);
   if (missing <= 1e-9f) return 0.0f;
-  float mv = dspbr_lut_clamp(1.0f - dspbr_base_E(cos_v, roughness, f0), 0.0f, 1.0f);
-  float ml = dspbr_lut_clamp(1.0f - dspbr_base_E(cos_l, roughness, f0), 0.0f, 1.0f);
+  float mv = dspbr_lut_clampf(1.0f - dspbr_base_E(cos_v, roughness, f0), 0.0f, 1.0f);
+  float ml = dspbr_lut_clampf(1.0f - dspbr_base_E(cos_l, roughness, f0), 0.0f, 1.0f);
   return mv * ml / (3.14159265f * missing);
 }
 // Sheen layer scale min(1 - rho_hat E_b(mu_v), 1 - rho_hat E_b(mu_l)), E_b clamped to [0, 1]
 // (spec "Sheen": albedo scaling of the layers below; rho_hat = max component of the sheen colour).
-float dspbr_sheen_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_hat) {
-  float ev = dspbr_lut_clamp(dspbr_sheen_E(cos_v, alpha_b), 0.0f, 1.0f);
-  float el = dspbr_lut_clamp(dspbr_sheen_E(cos_l, alpha_b), 0.0f, 1.0f);
-  return dspbr_lut_clamp(min(1.0f - rho_hat * ev, 1.0f - rho_hat * el), 0.0f, 1.0f);
+float dspbr_sheen_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_in) {
+  float rho_hat = dspbr_lut_clampf(rho_in, 0.0f, 1.0f);
+  float ev = dspbr_lut_clampf(dspbr_sheen_E(cos_v, alpha_b), 0.0f, 1.0f);
+  float el = dspbr_lut_clampf(dspbr_sheen_E(cos_l, alpha_b), 0.0f, 1.0f);
+  return dspbr_lut_clampf(min(1.0f - rho_hat * ev, 1.0f - rho_hat * el), 0.0f, 1.0f);
 }
-float dspbr_sheen_ash_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_hat) {
-  float ev = dspbr_lut_clamp(dspbr_sheen_ash_E(cos_v, alpha_b), 0.0f, 1.0f);
-  float el = dspbr_lut_clamp(dspbr_sheen_ash_E(cos_l, alpha_b), 0.0f, 1.0f);
-  return dspbr_lut_clamp(min(1.0f - rho_hat * ev, 1.0f - rho_hat * el), 0.0f, 1.0f);
+float dspbr_sheen_ash_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_in) {
+  float rho_hat = dspbr_lut_clampf(rho_in, 0.0f, 1.0f);
+  float ev = dspbr_lut_clampf(dspbr_sheen_ash_E(cos_v, alpha_b), 0.0f, 1.0f);
+  float el = dspbr_lut_clampf(dspbr_sheen_ash_E(cos_l, alpha_b), 0.0f, 1.0f);
+  return dspbr_lut_clampf(min(1.0f - rho_hat * ev, 1.0f - rho_hat * el), 0.0f, 1.0f);
 }
 
 #endif

@@ -17,7 +17,9 @@
 #include <string>
 #include <vector>
 
+#include "dspbr/io/atomic_file.h"
 #include "dspbr/io/json_write.h"
+#include "dspbr/io/read_file.h"
 #include "dspbr/io/message.h"
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/limits.h"
@@ -715,6 +717,45 @@ its glass tables when tables holds Glass_E): {name: stored values}, each lut.loa
           "their warps, grid and the coordinates of every sample.");
 
   bind_lookup(m);
+
+  // The CLI's reader and atomic writer, for dspbr.conformance (docs/limits.md).
+  m.def(
+      "read_document",
+      [](const py::object& path_obj, const std::string& what) {
+        if (!is_path(path_obj)) fail("path expects a file path, got " + py::repr(path_obj).cast<std::string>());
+        const std::string path = path_string(path_obj);
+        nlohmann::ordered_json j;
+        try {
+          py::gil_scoped_release release;
+          j = read_json_file<nlohmann::ordered_json>(path, what, limits::kDocumentBytes);
+        } catch (const std::bad_alloc&) {
+          throw;  // MemoryError
+        } catch (const std::exception& e) {
+          fail(e.what());
+        }
+        return to_python(j);
+      },
+      py::arg("path"), py::arg("what"),
+      "read_document(path: typing.Union[str, os.PathLike[str]], what: str) -> typing.Any\n\n"
+      "A JSON document read as the dspbr command reads one (docs/limits.md): a regular file of at most "
+      "16 MiB, strict JSON (no NaN, Infinity, overflowing numbers or duplicate keys); ValueError naming the "
+      "file and the problem otherwise.");
+  m.def(
+      "write_text_atomically",
+      [](const py::object& path_obj, const std::string& text) {
+        if (!is_path(path_obj)) fail("path expects a file path, got " + py::repr(path_obj).cast<std::string>());
+        const std::string path = path_string(path_obj);
+        try {
+          py::gil_scoped_release release;
+          write_text_atomically(path, text);
+        } catch (const std::exception& e) {
+          fail(e.what());
+        }
+      },
+      py::arg("path"), py::arg("text"),
+      "write_text_atomically(path: typing.Union[str, os.PathLike[str]], text: str) -> None\n\n"
+      "Writes a text file as the dspbr command does: into a temporary file next to it, then renamed over "
+      "it, so that the old file stays whole when writing fails.");
 
   auto scene = m.def_submodule("scene", "glTF scenes and material instances (docs/gltf_mapping.md)");
   scene.def("analyze", &scene_analyze, py::arg("path"), py::kw_only(), py::arg("parameters") = false,

@@ -287,3 +287,28 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
   }
   fs::remove_all(dir.parent_path());
 }
+
+// Issue 45 (#9): x.gltf's material 1 and x-1.gltf would share the ids scenes/x-1/NN; the set is
+// refused (exit 2, both files named, nothing written) instead of writing duplicate ids.
+TEST(Conformance, SceneNamesThatCollideAreRefused) {
+  const fs::path dir = scratch("collide");
+  fs::create_directories(dir / "s");
+  std::ofstream(dir / "s" / "x.gltf")
+      << R"({"asset":{"version":"2.0"},"materials":[{"name":"a"},{"name":"b","pbrMetallicRoughness":{"roughnessFactor":0.2}}]})";
+  std::ofstream(dir / "s" / "x-1.gltf") << R"({"asset":{"version":"2.0"},"materials":[{"name":"c"}]})";
+  const ToolRun r = run_dspbr("conformance generate --scenes '" + (dir / "s").string() +
+                              "' --no-albedo --directions 1 --out '" + (dir / "o").string() + "'");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find((dir / "s" / "x.gltf").string() + " (material 1)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find((dir / "s" / "x-1.gltf").string()), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "o"));
+  // Without the collision the same files generate unique ids.
+  fs::rename(dir / "s" / "x-1.gltf", dir / "s" / "y.gltf");
+  const ToolRun ok = run_dspbr("conformance generate --scenes '" + (dir / "s").string() +
+                               "' --no-albedo --directions 1 --out '" + (dir / "o").string() + "'");
+  ASSERT_EQ(ok.status, 0) << ok.output;
+  std::set<std::string> ids;
+  for (const Vector& v : read_vectors((dir / "o" / "vectors.json").string()))
+    EXPECT_TRUE(ids.insert(v.id).second) << "duplicate id " << v.id;
+}

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -29,7 +30,9 @@ struct LutRun {
   std::string log;
 };
 
-LutRun start(const std::string& out, const std::string& log) {
+// `pending`: a signal raised in the child while blocked, so that it is pending from the first
+// instruction of the tool on (the earliest possible interrupt).
+LutRun start(const std::string& out, const std::string& log, int pending = 0) {
   std::vector<std::string> args = {DSPBR_EXE};
   args.insert(args.end(), kLongRun.begin(), kLongRun.end());
   args.push_back("--out");
@@ -40,6 +43,13 @@ LutRun start(const std::string& out, const std::string& log) {
   if (r.pid == 0) {
     FILE* f = std::fopen(log.c_str(), "w");
     if (f) dup2(fileno(f), 2);
+    if (pending != 0) {
+      sigset_t set;
+      sigemptyset(&set);
+      sigaddset(&set, pending);
+      sigprocmask(SIG_BLOCK, &set, nullptr);
+      raise(pending);
+    }
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -130,4 +140,29 @@ TEST(Interrupt, LutRemovesTheParentsItCreated) {
   EXPECT_EQ(interrupt(r, out, SIGTERM), 128 + SIGTERM) << read_all(r.log);
   EXPECT_TRUE(fs::is_empty(root)) << read_all(r.log);
   EXPECT_NE(read_all(r.log).find("removed the 3 folder(s) it created"), std::string::npos) << read_all(r.log);
+}
+
+// Issue 45 (#5): an interrupt at the very start (pending before the tool runs) leaves no staging
+// folder and no folder, and the run exits 128 + signal with one line. Before the handlers were
+// installed ahead of the folder, the signal stayed blocked and the run went on.
+TEST(Interrupt, AnInterruptAtTheStartLeavesNothing) {
+  for (int sig : {SIGINT, SIGTERM}) {
+    const fs::path dir = fs::path(::testing::TempDir()) / ("interrupt_start_" + std::to_string(sig));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const LutRun r = start((dir / "new" / "out").string(), (dir.parent_path() / ("interrupt_start.log")).string(), sig);
+    int status = 0;
+    waitpid(r.pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << status;
+    EXPECT_EQ(WEXITSTATUS(status), 128 + sig);
+    const std::string log = read_all(r.log);
+    // One line (the folders may have been created and removed again: the handler waits for them).
+    EXPECT_EQ(log.rfind(std::string("dspbr: interrupted (") + (sig == SIGINT ? "SIGINT" : "SIGTERM") +
+                            "): nothing was written", 0),
+              0u)
+        << log;
+    EXPECT_EQ(std::count(log.begin(), log.end(), '\n'), 1) << log;
+    EXPECT_EQ(log.find(".dspbr-staging"), std::string::npos) << log;
+    EXPECT_TRUE(fs::is_empty(dir)) << "left behind in " << dir;
+  }
 }

@@ -2,6 +2,7 @@
 // set into it: links planted at the target names are replaced, not written through; a failed or
 // abandoned run leaves the folder as it found it and removes only what it created.
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -132,4 +133,57 @@ TEST(OutputFolder, AFileInTheWayIsNamed) {
   write(fs::path(out.staging()) / "a.json", "new");
   EXPECT_THROW(out.commit(), std::runtime_error);
   EXPECT_TRUE(fs::is_directory(dir / "a.json"));
+}
+
+// Issue 45 (#8): every path the kernel resolves is a valid --out, spelled as given.
+namespace {
+void commit_one(const std::string& dir) {
+  OutputFolder out(dir, "--out");
+  write(fs::path(out.staging()) / "a.json", "new");
+  EXPECT_EQ(out.commit(), (std::vector<std::string>{"a.json"}));
+}
+}  // namespace
+
+TEST(OutputFolder, ATrailingSlashIsTheFolder) {
+  const fs::path base = fresh("trailing_slash");
+  commit_one((base / "new").string() + "/");
+  EXPECT_EQ(listing(base), (std::set<std::string>{"new", "new/a.json"}));
+  commit_one((base / "new").string() + "//");  // existing, two slashes
+  EXPECT_EQ(read_all(base / "new" / "a.json"), "new");
+}
+
+TEST(OutputFolder, LinkDotDotIsResolvedByTheKernel) {
+  const fs::path base = fresh("link_dotdot");
+  fs::create_directories(base / "real" / "inner");
+  fs::create_directory_symlink(base / "real" / "inner", base / "link");
+  // link/.. is real/ (the link's parent), not base/ as lexical normalization would make it.
+  commit_one((base / "link" / ".." / "new").string());
+  EXPECT_TRUE(fs::exists(base / "real" / "new" / "a.json"));
+  EXPECT_FALSE(fs::exists(base / "new"));
+  commit_one((base / "x" / "." / "y").string());
+  EXPECT_TRUE(fs::exists(base / "x" / "y" / "a.json"));
+}
+
+TEST(OutputFolder, WorksInAWorkingDirectoryDeeperThanPathMax) {
+  const fs::path base = fresh("deep");
+  fs::create_directories(base);
+  const int home = ::open(".", O_RDONLY | O_DIRECTORY);
+  ASSERT_GE(home, 0);
+  ASSERT_EQ(::chdir(base.c_str()), 0);
+  const std::string part(200, 'd');
+  for (int i = 0; i < 25; ++i) {  // 25 x 201 bytes > PATH_MAX (4096)
+    ASSERT_EQ(::mkdir(part.c_str(), 0777), 0);
+    ASSERT_EQ(::chdir(part.c_str()), 0);
+  }
+  char buf[64];
+  EXPECT_EQ(::getcwd(buf, sizeof buf), nullptr);  // the kernel's path is too long for getcwd
+  commit_one(".");
+  commit_one("sub/");
+  EXPECT_TRUE(fs::exists("a.json"));
+  EXPECT_TRUE(fs::exists("sub/a.json"));
+  ASSERT_EQ(::fchdir(home), 0);
+  ::close(home);
+  // remove the deep tree from the inside out (remove_all would need the long path)
+  std::error_code ec;
+  fs::remove_all(base, ec);
 }

@@ -82,8 +82,8 @@ void run_generate(const GenerateArgs& a) {
   } else {
     settings.scenes_dir = a.scenes;
   }
-  OutputFolder out = open_output_folder(a.out);
-  const InterruptCleanup cleanup(out);
+  InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
+  OutputFolder& out = cleanup.out();
   std::vector<conformance::Vector> vectors;
   try {
     vectors = conformance::generate_vectors(settings);
@@ -123,8 +123,8 @@ void run_check(const CheckArgs& a) {
     throw UsageError(e.what());
   }
   const conformance::Check check = conformance::check_results(vectors, results);
-  OutputFolder out = open_output_folder(a.out);
-  const InterruptCleanup cleanup(out);
+  InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
+  OutputFolder& out = cleanup.out();
   OJson provenance = output_provenance();
   provenance["vectors"] = a.vectors;
   provenance["results"] = a.results;

@@ -100,8 +100,8 @@ void print_summary(const std::string& name, const json& d) {
 void run(const FitArgs& a, const std::string& command_line) {
   const auto names = parse_only(a.only);
   // Written into a private staging folder inside --out, moved into place once complete.
-  OutputFolder out = open_output_folder(a.out);
-  const InterruptCleanup cleanup(out);
+  InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
+  OutputFolder& out = cleanup.out();
   fit::FitContext ctx;
   ctx.threads = a.threads;
   ctx.seed = a.seed;

@@ -205,8 +205,8 @@ void run_generate(const LutArgs& a) {
   }
   // Every file is written into a private staging folder inside --out and moved into place once
   // the whole set is complete (io/output_folder.h); SIGINT/SIGTERM discard the staging folder.
-  OutputFolder out = open_output_folder(a.out);
-  const InterruptCleanup cleanup(out);
+  InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
+  OutputFolder& out = cleanup.out();
   if (renderer) run_renderer(a, opt, formats, out.staging());
   if (!published) {
     out.commit();

@@ -59,8 +59,8 @@ void run(const ShaderArgs& a) {
     mask = parse_components(a.components);
     source = "the components " + a.components;
   }
-  OutputFolder out = open_output_folder(a.out);
-  const InterruptCleanup cleanup(out);
+  InterruptCleanup run_out(a.out);  // the handlers first, then the output folder
+  OutputFolder& out = run_out.out();
   write_text_atomically((std::filesystem::path(out.staging()) / "dspbr_specialization.h").string(),
                         shader_specialization_header(mask, source));
   out.commit();

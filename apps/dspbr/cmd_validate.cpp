@@ -87,8 +87,8 @@ void run_validate(const ValidateArgs& a) {
   }
   // The report is written into a private staging folder inside --out and moved into place once
   // complete (io/output_folder.h); a refused or interrupted run leaves --out as it was.
-  OutputFolder out = open_output_folder(a.out);
-  const InterruptCleanup cleanup(out);
+  InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
+  OutputFolder& out = cleanup.out();
   validate::CatalogOptions co;
   co.quick = a.quick;
   co.seed = a.seed;

@@ -3,11 +3,14 @@
 #include "commands.h"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
+#include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -29,18 +32,12 @@ extern "C" void on_signal(int sig) {
 
 }  // namespace
 
-OutputFolder open_output_folder(const std::string& dir, const std::string& option) {
-  try {
-    return OutputFolder(dir, option);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
-}
-
 struct InterruptCleanup::State {
-  OutputFolder* out = nullptr;
+  std::mutex opening;                 // held while the folder is being created
+  std::optional<OutputFolder> out;    // empty until created (or when creating it failed: nothing left)
   int pipe_read = -1, pipe_write = -1;
   struct sigaction old_int {}, old_term {};
+  sigset_t old_mask{};
   std::thread watcher;
 
   void watch() {
@@ -49,16 +46,17 @@ struct InterruptCleanup::State {
     while ((n = ::read(pipe_read, &sig, 1)) < 0 && errno == EINTR) {
     }
     if (n != 1 || sig == 0) return;  // closed or told to stop
-    const std::string what = out->discard();
+    const std::lock_guard<std::mutex> lock(opening);  // wait for a folder being created
+    const std::string what = out ? out->discard() : "nothing was written";
     std::fprintf(stderr, "dspbr: interrupted (%s): %s\n", sig == SIGINT ? "SIGINT" : "SIGTERM", what.c_str());
     std::fflush(stderr);
     ::_exit(128 + sig);
   }
 };
 
-InterruptCleanup::InterruptCleanup(OutputFolder& out) : state_(std::make_unique<State>()) {
+InterruptCleanup::InterruptCleanup(const std::string& dir, const std::string& option)
+    : state_(std::make_unique<State>()) {
   State& s = *state_;
-  s.out = &out;
   int fds[2];
   if (::pipe(fds) != 0) throw std::runtime_error("cannot create a pipe for the interrupt handler");
   ::fcntl(fds[0], F_SETFD, FD_CLOEXEC);
@@ -72,10 +70,34 @@ InterruptCleanup::InterruptCleanup(OutputFolder& out) : state_(std::make_unique<
   sa.sa_flags = SA_RESTART;
   sigaction(SIGINT, &sa, &s.old_int);
   sigaction(SIGTERM, &sa, &s.old_term);
+  // A signal that arrived before (blocked by the parent, pending) is handled now, before anything
+  // is created.
+  sigset_t both;
+  sigemptyset(&both);
+  sigaddset(&both, SIGINT);
+  sigaddset(&both, SIGTERM);
+  pthread_sigmask(SIG_UNBLOCK, &both, &s.old_mask);
+  try {
+    const std::lock_guard<std::mutex> lock(s.opening);
+    try {
+      s.out.emplace(dir, option);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());  // a folder that cannot be used: exit 2, before any work
+    }
+  } catch (...) {
+    stop();
+    throw;
+  }
 }
 
-InterruptCleanup::~InterruptCleanup() {
+OutputFolder& InterruptCleanup::out() { return *state_->out; }
+
+InterruptCleanup::~InterruptCleanup() { stop(); }
+
+void InterruptCleanup::stop() {
   State& s = *state_;
+  if (s.pipe_write < 0) return;
+  pthread_sigmask(SIG_SETMASK, &s.old_mask, nullptr);
   sigaction(SIGINT, &s.old_int, nullptr);
   sigaction(SIGTERM, &s.old_term, nullptr);
   const unsigned char stop = 0;
@@ -84,6 +106,7 @@ InterruptCleanup::~InterruptCleanup() {
   g_pipe_write = -1;
   ::close(s.pipe_read);
   ::close(s.pipe_write);
+  s.pipe_read = s.pipe_write = -1;
 }
 
 }  // namespace dspbr::cli

@@ -11,18 +11,20 @@
 
 namespace dspbr::cli {
 
-// The run's output folder for `option` (io/output_folder.h); a folder that cannot be used is a
-// UsageError (exit 2), checked before any work is done.
-OutputFolder open_output_folder(const std::string& dir, const std::string& option = "--out");
-
+// Installs the handlers first, then opens the run's output folder for `option`
+// (io/output_folder.h; a folder that cannot be used is a UsageError, exit 2, before any work): an interrupt
+// at any moment, even while the folder and its staging folder are being created, leaves nothing
+// behind and exits 128 + signal with one line.
 class InterruptCleanup {
  public:
-  explicit InterruptCleanup(OutputFolder& out);  // installs the handlers
-  ~InterruptCleanup();                          // restores the previous handlers
+  explicit InterruptCleanup(const std::string& dir, const std::string& option = "--out");
+  ~InterruptCleanup();  // restores the previous handlers; then the folder discards unless committed
+  OutputFolder& out();
   InterruptCleanup(const InterruptCleanup&) = delete;
   InterruptCleanup& operator=(const InterruptCleanup&) = delete;
 
  private:
+  void stop();  // restores the handlers, ends the watcher
   struct State;
   std::unique_ptr<State> state_;
 };

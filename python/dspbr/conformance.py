@@ -19,9 +19,11 @@ _OPTIONAL = ("pdf", "albedo", "emission", "delta")
 
 
 def load(path):
-    """The vectors of a vector file written by `dspbr conformance generate` (a list of dicts)."""
-    with open(path, encoding="utf-8") as f:
-        doc = json.load(f)
+    """The vectors of a vector file written by `dspbr conformance generate` (a list of dicts), read
+    as `dspbr conformance check` reads it (docs/limits.md: a regular file of at most 16 MiB, strict
+    JSON; ValueError naming the file otherwise)."""
+    from ._dspbr import read_document  # the compiled module
+    doc = read_document(path, "conformance vector file")
     if not isinstance(doc, dict) or doc.get("format") != FORMAT:
         raise ValueError(f"{path}: not a conformance vector file (\"format\" must be \"{FORMAT}\")")
     if doc.get("version") != VERSION:
@@ -73,10 +75,12 @@ def run(vectors, my_eval):
 
 
 def write_results(results, path):
-    """Writes the results of run() as JSON (the format `dspbr conformance check` reads)."""
-    with open(path, "w", encoding="utf-8") as f:
-        json.dump(results, f, allow_nan=False)
-        f.write("\n")
+    """Writes the results of run() as JSON (the format `dspbr conformance check` reads), atomically:
+    the text is made first (ValueError on a non-finite number, nothing written), then written to a
+    temporary file next to `path` and renamed over it, so an old file stays whole on any failure."""
+    from ._dspbr import write_text_atomically  # the compiled module
+    text = json.dumps(results, allow_nan=False) + "\n"
+    write_text_atomically(path, text)
 
 
 def reference_eval(vector, tables="renderer"):

@@ -2,6 +2,7 @@ from typing import Any, Optional, Union
 
 import numpy
 import numpy.typing
+import os
 import typing
 DELTA: int
 DIFFUSE: int
@@ -27,3 +28,5 @@ class Bsdf:
 
 def component_names() -> list[str]: ...
 def parameter_ids() -> list[str]: ...
+def read_document(path: typing.Union[str,os.PathLike[str]], what: str) -> typing.Any: ...
+def write_text_atomically(path: typing.Union[str,os.PathLike[str]], text: str) -> None: ...

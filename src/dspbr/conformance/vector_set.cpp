@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <map>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -427,12 +428,20 @@ std::vector<Case> scene_cases(const std::string& dir) {
   if (ec) throw std::runtime_error(dir + ": cannot list the scene folder: " + ec.message());
   std::sort(files.begin(), files.end());
   std::vector<Case> out;
+  // A case name is the file's stem, "-<material index>" added when the file has several: x.gltf's
+  // material 1 and x-1.gltf would share the vector ids scenes/x-1/NN; such a set is refused.
+  std::map<std::string, std::string> named_by;  // case name -> the file (and material) it came from
   for (const fs::path& f : files) {
     const gltf::GltfFile file = gltf::read_gltf(f.string());
     const std::vector<gltf::GltfMaterial> mats = gltf::map_materials(file);
     for (const gltf::GltfMaterial& gm : mats) {
       Case c{"scenes", f.stem().string(), gm.material, nullptr, file.json["materials"][std::size_t(gm.index)], false};
       if (mats.size() > 1) c.name += "-" + std::to_string(gm.index);
+      std::string source = f.string() + (mats.size() > 1 ? " (material " + std::to_string(gm.index) + ")" : "");
+      const auto [it, fresh] = named_by.emplace(c.name, source);
+      if (!fresh)
+        throw std::runtime_error(it->second + " and " + source + " both give the vector ids scenes/" + c.name +
+                                 "/NN: rename one of the files");
       validate_material(c.m);
       out.push_back(std::move(c));
     }

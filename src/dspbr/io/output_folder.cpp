@@ -45,17 +45,21 @@ OutputFolder::OutputFolder(const std::string& dir, const std::string& option) : 
   const fs::path target(dir);
   if (fs::exists(target, ec) && !fs::is_directory(target, ec))
     throw std::invalid_argument(option + ": '" + dir + "' exists and is not a folder");
-  // Create the missing folders one by one, outermost first, remembering them for discard().
+  // Create the missing folders one by one, outermost first, remembering them for discard(). The
+  // path is walked as given, each prefix resolved by the kernel (never made absolute or lexically
+  // normalized: `link/../new` is the kernel's, not `new`; a working directory deeper than PATH_MAX
+  // works); a trailing slash, "." and ".." name no folder of their own.
   std::vector<fs::path> missing;
-  for (fs::path p = fs::absolute(target, ec).lexically_normal(); !p.empty() && !fs::exists(p, ec);
-       p = p.parent_path()) {
+  for (fs::path p = target; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
     if (p == p.parent_path()) break;
-    missing.push_back(p);
+    const std::string name = p.filename().string();
+    if (!name.empty() && name != "." && name != "..") missing.push_back(p);
   }
   std::reverse(missing.begin(), missing.end());
   for (const fs::path& p : missing) {
     if (::mkdir(p.c_str(), 0777) != 0) {
       const int err = errno;
+      if (err == EEXIST && fs::is_directory(p, ec)) continue;  // the same folder by another spelling
       s.remove_own();
       throw std::invalid_argument(option + ": cannot create folder '" + p.string() + "': " + std::strerror(err));
     }
@@ -95,7 +99,7 @@ std::vector<std::string> OutputFolder::commit() {
   std::error_code ec;
   for (auto it = fs::recursive_directory_iterator(s.staging, ec); !ec && it != fs::recursive_directory_iterator();
        it.increment(ec))
-    if (it->is_regular_file()) files.push_back(fs::relative(it->path(), s.staging).string());
+    if (it->is_regular_file()) files.push_back(it->path().lexically_relative(s.staging).string());  // no getcwd
   std::sort(files.begin(), files.end());
   // First every check and sub-folder, then the renames: a refused set moves no file at all.
   for (const std::string& rel : files) {

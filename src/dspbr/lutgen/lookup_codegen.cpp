@@ -74,11 +74,14 @@ std::string interp_function_3d(const WarpedTable& t) {
       "  float c1 = clamp(x1, 0.0f, 1.0f) * {5};\n"
       "  float c2 = clamp(x2, 0.0f, 1.0f) * {6};\n"
       "  int p = int(c0);\n"
-      "  p = p < 0 ? 0 : (p > {7} ? {7} : p);\n"
+      "  if (p < 0) p = 0;\n"
+      "  if (p > {7}) p = {7};\n"
       "  int i = int(c1);\n"
-      "  i = i < 0 ? 0 : (i > {8} ? {8} : i);\n"
+      "  if (i < 0) i = 0;\n"
+      "  if (i > {8}) i = {8};\n"
       "  int j = int(c2);\n"
-      "  j = j < 0 ? 0 : (j > {9} ? {9} : j);\n"
+      "  if (j < 0) j = 0;\n"
+      "  if (j > {9}) j = {9};\n"
       "  float f0 = c0 - float(p), f1 = c1 - float(i), f2 = c2 - float(j);\n"
       "  float s1 = dspbr_lut_plane_{0}(p, i, j, f1, f2), s2 = dspbr_lut_plane_{0}(p + 1, i, j, f1, f2);\n"
       "  float q0 = dspbr_lut_plane_{0}(p > 0 ? p - 1 : 0, i, j, f1, f2);\n"
@@ -100,7 +103,8 @@ std::string interp_function(const WarpedTable& t) {
         "float dspbr_lut_interp_{0}(float x) {{\n"
         "  float c = clamp(x, 0.0f, 1.0f) * {1};\n"
         "  int i = int(c);\n"
-        "  i = i < 0 ? 0 : (i > {2} ? {2} : i);\n"
+        "  if (i < 0) i = 0;\n"
+      "  if (i > {2}) i = {2};\n"
         "  float f = c - float(i);\n"
         "  float p1 = {0}_at(i), p2 = {0}_at(i + 1);\n"
         "  float q0 = {0}_at(i > 0 ? i - 1 : 0), q3 = {0}_at(i + 2 < {3} ? i + 2 : {3} - 1);\n"
@@ -127,9 +131,11 @@ std::string interp_function(const WarpedTable& t) {
       "  float c0 = clamp(x0, 0.0f, 1.0f) * {1};\n"
       "  float c1 = clamp(x1, 0.0f, 1.0f) * {2};\n"
       "  int i = int(c0);\n"
-      "  i = i < 0 ? 0 : (i > {3} ? {3} : i);\n"
+      "  if (i < 0) i = 0;\n"
+      "  if (i > {3}) i = {3};\n"
       "  int j = int(c1);\n"
-      "  j = j < 0 ? 0 : (j > {4} ? {4} : j);\n"
+      "  if (j < 0) j = 0;\n"
+      "  if (j > {4}) j = {4};\n"
       "  float f0 = c0 - float(i), f1 = c1 - float(j);\n"
       "  float r1 = dspbr_lut_row_{0}(i, j, f1), r2 = dspbr_lut_row_{0}(i + 1, j, f1);\n"
       "  float q0 = dspbr_lut_row_{0}(i > 0 ? i - 1 : 0, j, f1);\n"
@@ -168,17 +174,23 @@ std::string api_functions(const RendererLuts& L) {
     << "  float beta = m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(" << warp_expr(b.axes[0].warp, "r", "") << ", "
     << warp_expr(b.axes[1].warp, "mu", "r * r") << ");\n"
     << "  return beta * dspbr_ggx_E(mu, r);\n}\n"
-    << "// F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = 20/21 f0 + 1/21 f90 (spec eq. multiscatter).\n"
+    << "// F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = 20/21 f0 + 1/21 f90 (spec eq. multiscatter);\n"
+    << "// f0, f90, e_avg clamped to [0, 1]; 1 (the limit along F_avg = 1) when F_avg = 1 and E_avg = 0.\n"
     << "float dspbr_fresnel_ms(float f0, float f90, float e_avg) {\n"
-    << "  float fa = f0 * (20.0f / 21.0f) + f90 * (1.0f / 21.0f);\n"
-    << "  return fa * fa * e_avg / (1.0f - fa * (1.0f - e_avg));\n}\n"
-    << "// E(mu; r, f0) = f0 E_m + (1 - f0) B + F_ms(f0, 1; E_m,avg) (1 - E_m) (spec \"Energy Preservation\").\n"
-    << "float dspbr_base_E(float cos_theta, float roughness, float f0) {\n"
+    << "  float e = clamp(e_avg, 0.0f, 1.0f);\n"
+    << "  float fa = clamp(f0, 0.0f, 1.0f) * (20.0f / 21.0f) + clamp(f90, 0.0f, 1.0f) * (1.0f / 21.0f);\n"
+    << "  float d = 1.0f - fa * (1.0f - e);\n"
+    << "  return d > 0.0f ? fa * fa * e / d : 1.0f;\n}\n"
+    << "// E(mu; r, f0) = f0 E_m + (1 - f0) B + F_ms(f0, 1; E_m,avg) (1 - E_m) (spec \"Energy Preservation\");\n"
+    << "// f0 clamped to [0, 1].\n"
+    << "float dspbr_base_E(float cos_theta, float roughness, float f0_in) {\n"
+    << "  float f0 = clamp(f0_in, 0.0f, 1.0f);\n"
     << "  float em = dspbr_ggx_E(cos_theta, roughness);\n"
     << "  float fms = dspbr_fresnel_ms(f0, 1.0f, dspbr_ggx_E_avg(roughness));\n"
     << "  return f0 * em + (1.0f - f0) * dspbr_lut_ggx_B(cos_theta, roughness) + fms * (1.0f - em);\n}\n"
     << "// E_avg(r, f0) = f0 E_m,avg + (1 - f0) B_avg + F_ms (1 - E_m,avg).\n"
-    << "float dspbr_base_E_avg(float roughness, float f0) {\n"
+    << "float dspbr_base_E_avg(float roughness, float f0_in) {\n"
+    << "  float f0 = clamp(f0_in, 0.0f, 1.0f);\n"
     << "  float missing = dspbr_ggx_E_avg_missing(roughness);\n"
     << "  float b_avg = dspbr_lut_interp_dspbr_GGX_B_avg(" << warp_expr(ba.axes[0].warp, "roughness", "") << ");\n"
     << "  return f0 * (1.0f - missing) + (1.0f - f0) * b_avg + dspbr_fresnel_ms(f0, 1.0f, 1.0f - missing) * missing;\n}\n"
@@ -206,11 +218,13 @@ std::string api_functions(const RendererLuts& L) {
     << "  return mv * ml / (3.14159265f * missing);\n}\n"
     << "// Sheen layer scale min(1 - rho_hat E_b(mu_v), 1 - rho_hat E_b(mu_l)), E_b clamped to [0, 1]\n"
     << "// (spec \"Sheen\": albedo scaling of the layers below; rho_hat = max component of the sheen colour).\n"
-    << "float dspbr_sheen_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_hat) {\n"
+    << "float dspbr_sheen_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_in) {\n"
+    << "  float rho_hat = clamp(rho_in, 0.0f, 1.0f);\n"
     << "  float ev = clamp(dspbr_sheen_E(cos_v, alpha_b), 0.0f, 1.0f);\n"
     << "  float el = clamp(dspbr_sheen_E(cos_l, alpha_b), 0.0f, 1.0f);\n"
     << "  return clamp(min(1.0f - rho_hat * ev, 1.0f - rho_hat * el), 0.0f, 1.0f);\n}\n"
-    << "float dspbr_sheen_ash_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_hat) {\n"
+    << "float dspbr_sheen_ash_layer_scale(float cos_v, float cos_l, float alpha_b, float rho_in) {\n"
+    << "  float rho_hat = clamp(rho_in, 0.0f, 1.0f);\n"
     << "  float ev = clamp(dspbr_sheen_ash_E(cos_v, alpha_b), 0.0f, 1.0f);\n"
     << "  float el = clamp(dspbr_sheen_ash_E(cos_l, alpha_b), 0.0f, 1.0f);\n"
     << "  return clamp(min(1.0f - rho_hat * ev, 1.0f - rho_hat * el), 0.0f, 1.0f);\n}\n";
@@ -218,6 +232,8 @@ std::string api_functions(const RendererLuts& L) {
 }
 
 const char* kHelpers =
+    "// NaN-safe clamp: NaN maps to lo (every comparison with NaN is false), +-inf to the nearer end.\n"
+    "float dspbr_lut_clampf(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }\n"
     "float dspbr_lut_catmull_rom(float f, float p0, float p1, float p2, float p3) {\n"
     "  float f2 = f * f, f3 = f2 * f;\n"
     "  return 0.5f * ((-f3 + 2.0f * f2 - f) * p0 + (3.0f * f3 - 5.0f * f2 + 2.0f) * p1 +\n"
@@ -254,8 +270,9 @@ std::string glass_api_functions(const RendererLuts& L) {
     return fmt::format("dspbr_lut_interp_{}({}, {})", id, warp_expr(ea.axes[0].warp, "xf", ""),
                        warp_expr(ea.axes[1].warp, "roughness", ""));
   };
-  o << "// Schlick F_0 of the interface, ((ior - 1) / (ior + 1))^2.\n"
-    << "float dspbr_glass_f0(float ior) {\n  float a = (ior - 1.0f) / (ior + 1.0f);\n  return a * a;\n}\n"
+  o << "// Schlick F_0 of the interface, ((ior - 1) / (ior + 1))^2, ior clamped to [1, 3] as the\n"
+    << "// tables clamp it (kGlassMaxIor; NaN: 1).\n"
+    << "float dspbr_glass_f0(float ior) {\n  float n = clamp(ior, 1.0f, 3.0f);\n  float a = (n - 1.0f) / (n + 1.0f);\n  return a * a;\n}\n"
     << "// E_g(mu; r, ior): albedo of the rough dielectric interface (M_r F + M_t (1 - F), specular 1),\n"
     << "// v outside (inside = 0) or inside (inside = 1, total internal reflection included).\n"
     << "float dspbr_glass_E(float cos_theta, float roughness, float ior, int inside) {\n"
@@ -277,7 +294,8 @@ std::string glass_api_functions(const RendererLuts& L) {
     << "  return dspbr_glass_E_avg(roughness, ior, inside) + fms * dspbr_ggx_E_avg_missing(roughness);\n}\n"
     << "// Share x of the compensated energy that crosses the interface, for a viewer outside (x_o = 1 - F_avg)\n"
     << "// or inside (x_i = x_o (1 - E_o,avg) / (ior^2 (1 - E_i,avg)), the eta^2 rule; x_i <= 1 bounds x_o).\n"
-    << "float dspbr_glass_transmission_share(float roughness, float ior, int inside) {\n"
+    << "float dspbr_glass_transmission_share(float roughness, float ior_in, int inside) {\n"
+    << "  float ior = clamp(ior_in, 1.0f, 3.0f);\n"
     << "  float f0 = dspbr_glass_f0(ior);\n"
     << "  float x_out = 1.0f - (f0 * (20.0f / 21.0f) + 1.0f / 21.0f);\n"
     << "  float m_out = max(1.0f - dspbr_glass_core_E_avg(roughness, ior, 0), 0.0f);\n"
@@ -312,23 +330,10 @@ std::string glass_api_functions(const RendererLuts& L) {
 }
 
 // GLSL body text -> C: math functions, casts, static inline.
-// The generated code's clamp: NaN gives the low end (a comparison with NaN is false), where the
-// built-in clamp (GLSL, HLSL) is undefined for NaN and a NaN cell coordinate would index a table
-// out of its bounds. Every argument reaches a table through it; the cell index is also clamped to
-// [0, N - 2].
-constexpr const char* kClampComment =
-    "// x clamped to [lo, hi], NaN to lo: no NaN reaches a cell index (a NaN argument reads the\n"
-    "// table at the low end of its axis; docs/luts.md, \"NaN and infinite arguments\").\n";
-
-// GLSL / HLSL: the body's clamp is the NaN-safe dspbr_lut_clamp.
-std::string nan_safe_clamps(const std::string& glsl) {
-  return std::regex_replace(glsl, std::regex("\\bclamp\\("), "dspbr_lut_clamp(");
-}
-
 std::string to_c(const std::string& glsl) {
   std::string s = glsl;
   const std::pair<const char*, const char*> fns[] = {
-      {"clamp", "dspbr_lut_clampf"}, {"min", "fminf"}, {"max", "fmaxf"}, {"sqrt", "sqrtf"},
+      {"min", "fminf"}, {"max", "fmaxf"}, {"sqrt", "sqrtf"},
       {"pow", "powf"},            {"exp", "expf"},  {"log", "logf"}, {"abs", "fabsf"}};
   for (const auto& [from, to] : fns) s = std::regex_replace(s, std::regex(std::string("\\b") + from + "\\("), std::string(to) + "(");
   s = std::regex_replace(s, std::regex("\\bfloat\\("), "(float)(");
@@ -405,6 +410,9 @@ std::string file_text(const RendererLuts& L, LookupDialect dialect, const std::s
     << "// Tables (endpoint grids x_i = i / (N - 1) over warped coordinates, Catmull-Rom interpolation\n"
     << "// with linear extrapolation beyond the ends; row-major, fastest axis last):\n";
   for (const char* n : f.tables) o << table_comment(*L.table(n));
+  o << "// Arguments out of range are clamped to it (cosines, roughness, f0, alpha_b, rho_hat: [0, 1];\n"
+    << "// ior: [1, 3]); NaN gives the result at the low end, +-inf at the nearer end; every cell index\n"
+    << "// is clamped on both sides (docs/luts.md, \"Limits\").\n";
   o << f.preamble;
   int binding = f.binding_offset;
   if (dialect != LookupDialect::C) {
@@ -429,8 +437,6 @@ std::string file_text(const RendererLuts& L, LookupDialect dialect, const std::s
   }
   o << "#define " << f.floats_macro << " " << f.floats << "\n\n";
   if (dialect == LookupDialect::C) {
-    if (f.binding_offset == 0)
-      o << kClampComment << "static inline float dspbr_lut_clampf(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }\n";
     for (const char* n : f.tables) {
       const WarpedTable& t = *L.table(n);
       o << "static const float " << ident(t) << "_table[" << t.size() << "] = {";
@@ -446,7 +452,6 @@ std::string file_text(const RendererLuts& L, LookupDialect dialect, const std::s
       o << "#endif\n";
       if (glsl) o << "#ifndef DSPBR_LOOKUP_BINDING_BASE\n#define DSPBR_LOOKUP_BINDING_BASE 0\n#endif\n";
       else o << "#ifndef DSPBR_LOOKUP_REGISTER_SPACE\n#define DSPBR_LOOKUP_REGISTER_SPACE space0\n#endif\n";
-      o << kClampComment << "float dspbr_lut_clamp(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }\n";
     }
     o << "#ifdef DSPBR_LOOKUP_TEXTURES\n";
     binding = f.binding_offset;
@@ -472,7 +477,9 @@ std::string file_text(const RendererLuts& L, LookupDialect dialect, const std::s
   std::string body = f.helpers;
   for (const char* n : f.tables) body += interp_function(*L.table(n));
   body += f.api;
-  o << "\n" << (dialect == LookupDialect::C ? to_c(body) : nan_safe_clamps(body));
+  // Every clamp of the generated code is the NaN-safe dspbr_lut_clampf (GLSL/HLSL clamp leave NaN undefined).
+  body = std::regex_replace(body, std::regex("\\bclamp\\("), "dspbr_lut_clampf(");
+  o << "\n" << (dialect == LookupDialect::C ? to_c(body) : body);
   o << "\n#endif\n";
   return o.str();
 }

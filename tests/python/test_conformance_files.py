@@ -1,0 +1,73 @@
+"""dspbr.conformance.load and write_results with hostile files (issue 45, findings 10 and 11): load
+reads as `dspbr conformance check` does (docs/limits.md: regular files only, 16 MiB, strict JSON),
+so a FIFO, /dev/zero, an oversized file, NaN / Infinity / 1e999 and duplicate keys are each a
+one-line ValueError naming the file, never a hang or MemoryError; write_results replaces a file in
+one rename, so a NaN in the results raises ValueError and leaves the old file byte for byte."""
+import json
+import os
+import threading
+
+import pytest
+
+import dspbr.conformance as dc
+
+GOOD = {"format": "dspbr-conformance", "version": 1, "vectors": [{"id": "a/00"}]}
+
+
+def write(tmp_path, text, name="v.json"):
+    p = tmp_path / name
+    p.write_text(text)
+    return p
+
+
+def test_load_reads_a_good_file(tmp_path):
+    assert dc.load(write(tmp_path, json.dumps(GOOD))) == [{"id": "a/00"}]
+
+
+@pytest.mark.parametrize("bad, says", [
+    ('{"format": "dspbr-conformance", "version": 1, "vectors": [], "x": NaN}', "malformed JSON"),
+    ('{"format": "dspbr-conformance", "version": 1, "vectors": [], "x": Infinity}', "malformed JSON"),
+    ('{"format": "dspbr-conformance", "version": 1, "vectors": [], "x": 1e999}', "overflows a double"),
+    ('{"format": "dspbr-conformance", "version": 1, "version": 1, "vectors": []}', "duplicate key"),
+])
+def test_load_refuses_what_the_cli_refuses(tmp_path, bad, says):
+    p = write(tmp_path, bad)
+    with pytest.raises(ValueError) as e:
+        dc.load(p)
+    msg = str(e.value)
+    assert str(p) in msg and says in msg and "\n" not in msg, msg
+
+
+def test_load_refuses_a_file_over_the_limit(tmp_path):
+    p = tmp_path / "big.json"
+    with open(p, "w") as f:
+        f.write('{"format": "dspbr-conformance", "version": 1, "vectors": [], "pad": "')
+        f.write("x" * (16 << 20))
+        f.write('"}')
+    with pytest.raises(ValueError, match="larger than the limit"):
+        dc.load(p)
+
+
+def test_load_refuses_a_fifo_and_a_device(tmp_path):
+    fifo = tmp_path / "fifo.json"
+    os.mkfifo(fifo)
+    # A writer that never writes: a reader that blocks on the FIFO would wait for ever; the
+    # refusal comes from the opening, so no time limit is needed to see the difference.
+    with pytest.raises(ValueError, match="not a regular file"):
+        dc.load(fifo)
+    with pytest.raises(ValueError, match="not a regular file"):
+        dc.load("/dev/zero")
+
+
+def test_write_results_is_atomic(tmp_path):
+    p = tmp_path / "results.json"
+    dc.write_results({"results": [{"id": "a/00", "f_cos": [0.1, 0.2, 0.3]}]}, p)
+    old = p.read_bytes()
+    assert json.loads(old)["results"][0]["id"] == "a/00"
+    with pytest.raises(ValueError):
+        dc.write_results({"results": [{"id": "a/00", "f_cos": [0.1, float("nan"), 0.3]}]}, p)
+    assert p.read_bytes() == old
+    assert sorted(os.listdir(tmp_path)) == ["results.json"]  # no temporary left
+    dc.write_results({"results": [{"id": "b/00", "f_cos": [1, 2, 3]}]}, p)
+    assert json.loads(p.read_text())["results"][0]["id"] == "b/00"
+    assert sorted(os.listdir(tmp_path)) == ["results.json"]
