@@ -172,11 +172,13 @@ Vec3 vec3_of(const py::object& obj, const std::string& what) {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// (3,) or (N, 3) array of doubles.
+// (3,) or (..., 3) array of doubles: n rows of 3, the leading shape `lead` ((N,) for (N, 3); empty
+// for (3,)).
 struct Triples {
   Array a;
   size_t n = 1;
   bool single = true;
+  std::vector<py::ssize_t> lead;
   Vec3 at(size_t i) const {
     const double* p = a.data() + 3 * (single ? 0 : i);
     return {p[0], p[1], p[2]};
@@ -192,25 +194,44 @@ Triples triples_of(const py::object& obj, const char* name) {
   } catch (const py::error_already_set& e) {
     if (e.matches(PyExc_MemoryError)) throw;
   }
-  if (!t.a) fail(std::string(name) + " must be an array of numbers of shape (3,) or (N, 3)");
+  if (!t.a) fail(std::string(name) + " must be an array of numbers of shape (3,) or (..., 3)");
   if (t.a.ndim() == 1 && t.a.shape(0) == 3) return t;
-  if (t.a.ndim() == 2 && t.a.shape(1) == 3) {
+  if (t.a.ndim() >= 2 && t.a.shape(t.a.ndim() - 1) == 3) {
     t.single = false;
-    t.n = size_t(t.a.shape(0));
+    t.lead.assign(t.a.shape(), t.a.shape() + t.a.ndim() - 1);
+    t.n = 1;
+    for (py::ssize_t d : t.lead) t.n *= size_t(d);
     return t;
   }
   std::string shape;
   for (py::ssize_t i = 0; i < t.a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(t.a.shape(i));
   if (t.a.ndim() == 1) shape += ",";
-  fail(std::string(name) + " must have shape (3,) or (N, 3), got (" + shape + ")");
+  fail(std::string(name) + " must have shape (3,) or (..., 3), got (" + shape + ")");
 }
 
-// Number of rows of a broadcast of (3,) / (N, 3) arguments.
-size_t common_rows(const Triples& a, const char* an, const Triples& b, const char* bn) {
-  if (!a.single && !b.single && a.n != b.n)
-    fail(std::string(an) + " and " + bn + " have different lengths (" + std::to_string(a.n) + " and " +
-         std::to_string(b.n) + ")");
-  return a.single ? b.n : a.n;
+std::string shape_text(const std::vector<py::ssize_t>& lead) {
+  std::string s;
+  for (py::ssize_t d : lead) s += (s.empty() ? "" : ", ") + std::to_string(d);
+  return "(" + s + (lead.size() == 1 ? ",)" : ")");
+}
+
+// The rows of a broadcast of (3,) / (..., 3) arguments: a (3,) one broadcasts against the other,
+// two (..., 3) ones must have the same leading shape, which the results take.
+struct Rows {
+  size_t n = 1;
+  bool single = true;
+  std::vector<py::ssize_t> lead;
+};
+Rows rows_of(const Triples& t) { return {t.n, t.single, t.lead}; }
+Rows common_rows(const Triples& a, const char* an, const Triples& b, const char* bn) {
+  if (!a.single && !b.single && a.lead != b.lead) {
+    if (a.lead.size() == 1 && b.lead.size() == 1)
+      fail(std::string(an) + " and " + bn + " have different lengths (" + std::to_string(a.n) + " and " +
+           std::to_string(b.n) + ")");
+    fail(std::string(an) + " and " + bn + " have different shapes " + shape_text(a.lead) + " and " +
+         shape_text(b.lead));
+  }
+  return rows_of(a.single ? b : a);
 }
 
 // Normalized directions of a (3,) / (N, 3) argument broadcast to n rows; a zero or non-finite row
@@ -247,10 +268,17 @@ void parallel_rows(size_t n, const std::function<void(size_t)>& body) {
   });
 }
 
-Array rows3(size_t n, bool single) {
-  return single ? Array(std::vector<py::ssize_t>{3}) : Array(std::vector<py::ssize_t>{py::ssize_t(n), 3});
+// Result arrays of shape lead + (3,) and lead (one element for a (3,) argument).
+std::vector<py::ssize_t> shape_of(const Rows& r, py::ssize_t k) {
+  std::vector<py::ssize_t> s = r.single ? std::vector<py::ssize_t>{1} : r.lead;
+  if (k > 0) {
+    if (r.single) s.clear();
+    s.push_back(k);
+  }
+  return s;
 }
-Array rows1(size_t n) { return Array(std::vector<py::ssize_t>{py::ssize_t(n)}); }
+Array rows3(const Rows& r) { return Array(shape_of(r, 3)); }
+Array rows1(const Rows& r) { return Array(shape_of(r, 0)); }
 
 py::object scalar_or_rows(Array a, bool single) {
   if (single) return py::float_(a.at(0));
@@ -307,9 +335,10 @@ class PyBsdf {
 
   py::object eval(const py::object& v_in, const py::object& l_in) const {
     const Triples tv = triples_of(v_in, "v"), tl = triples_of(l_in, "l");
-    const size_t n = common_rows(tv, "v", tl, "l");
+    const Rows r = common_rows(tv, "v", tl, "l");
+    const size_t n = r.n;
     const auto v = directions(tv, "v", n), l = directions(tl, "l", n);
-    Array out = rows3(n, tv.single && tl.single);
+    Array out = rows3(r);
     double* f = out.mutable_data();
     parallel_rows(n, [&](size_t i) {
       const Rgb c = bsdf_->eval(row(v, i), row(l, i));
@@ -320,9 +349,10 @@ class PyBsdf {
 
   py::object pdf(const py::object& v_in, const py::object& l_in) const {
     const Triples tv = triples_of(v_in, "v"), tl = triples_of(l_in, "l");
-    const size_t n = common_rows(tv, "v", tl, "l");
+    const Rows r = common_rows(tv, "v", tl, "l");
+    const size_t n = r.n;
     const auto v = directions(tv, "v", n), l = directions(tl, "l", n);
-    Array out = rows1(n);
+    Array out = rows1(r);
     double* p = out.mutable_data();
     parallel_rows(n, [&](size_t i) { p[i] = bsdf_->pdf(row(v, i), row(l, i)); });
     return scalar_or_rows(out, tv.single && tl.single);
@@ -330,7 +360,8 @@ class PyBsdf {
 
   py::dict sample(const py::object& v_in, const py::object& u_in) const {
     const Triples tv = triples_of(v_in, "v"), tu = triples_of(u_in, "u");
-    const size_t n = common_rows(tv, "v", tu, "u");
+    const Rows r = common_rows(tv, "v", tu, "u");
+    const size_t n = r.n;
     const auto v = directions(tv, "v", n);
     for (size_t i = 0; i < (tu.single ? 1 : n); ++i) {
       const Vec3 u = tu.at(i);
@@ -340,9 +371,9 @@ class PyBsdf {
                py::repr(py::float_(x)).cast<std::string>());
     }
     const bool single = tv.single && tu.single;
-    Array l = rows3(n, single), w = rows3(n, single), pdf = rows1(n);
-    py::array_t<uint32_t> flags(std::vector<py::ssize_t>{py::ssize_t(n)});
-    py::array_t<bool> valid(std::vector<py::ssize_t>{py::ssize_t(n)});
+    Array l = rows3(r), w = rows3(r), pdf = rows1(r);
+    py::array_t<uint32_t> flags(shape_of(r, 0));
+    py::array_t<bool> valid(shape_of(r, 0));
     double *pl = l.mutable_data(), *pw = w.mutable_data(), *pp = pdf.mutable_data();
     uint32_t* pf = flags.mutable_data();
     bool* pv = valid.mutable_data();
@@ -373,7 +404,7 @@ class PyBsdf {
   py::object emission(const py::object& v_in) const {
     const Triples tv = triples_of(v_in, "v");
     const auto v = directions(tv, "v", tv.n);
-    Array out = rows3(tv.n, tv.single);
+    Array out = rows3(rows_of(tv));
     double* e = out.mutable_data();
     parallel_rows(tv.n, [&](size_t i) {
       const Rgb c = bsdf_->emission(row(v, i));
@@ -385,7 +416,7 @@ class PyBsdf {
   py::object delta_probability(const py::object& v_in) const {
     const Triples tv = triples_of(v_in, "v");
     const auto v = directions(tv, "v", tv.n);
-    Array out = rows1(tv.n);
+    Array out = rows1(rows_of(tv));
     double* p = out.mutable_data();
     parallel_rows(tv.n, [&](size_t i) { p[i] = bsdf_->delta_probability(row(v, i)); });
     return scalar_or_rows(out, tv.single);
@@ -648,8 +679,9 @@ tables: "renderer" (default) | "published"; position, object_normal, wavelength,
 the rough-transmission energy compensation (beyond DSPBR 2025x, as the CLI's
 --transmission-compensation; docs/bsdf.md).
 
-Directions are (3,) or (N, 3) arrays in the local shading frame (normal +z), both pointing away
-from the surface, normalized here; a (3,) argument broadcasts against an (N, 3) one.
+Directions are (3,) or (..., 3) arrays in the local shading frame (normal +z), both pointing away
+from the surface, normalized here; a (3,) argument broadcasts against a (..., 3) one, two (..., 3)
+ones have the same shape, and the results have that leading shape: (..., 3) or (...).
 )doc")
       .def(py::init<const py::object&, const py::object&, const std::string&, const std::string&, const py::object&,
                     const py::object&, double, double, bool>(),

@@ -1,7 +1,7 @@
 """DSPBR 2025x reference toolchain in Python (numpy arrays in and out).
 
     dspbr.Bsdf(material, components=None, sheen="main", tables="renderer")
-        .eval(v, l) -> (N, 3), .pdf(v, l) -> (N,), .sample(v, u) -> {"l", "weight", "pdf", "flags", "valid"}
+        .eval(v, l) -> (..., 3), .pdf(v, l) -> (...), .sample(v, u) -> {"l", "weight", "pdf", "flags", "valid"}
     dspbr.lut.generate(tables=None, size=None, **settings) -> {name: array}
     dspbr.lut.load(path) -> {name: Table}: decoded .values, .stored, .errors, .axes (name, warp, grid, coordinates)
     dspbr.scene.analyze(path) -> dict (as `dspbr scene analyze --json`)
