@@ -32,6 +32,7 @@
 #include "dspbr/scene/components.h"
 #include "dspbr/scene/scene_analysis.h"
 #include "dspbr/version.h"
+#include "dspbr/nearest_name.h"
 #include "lut_table.h"
 
 namespace py = pybind11;
@@ -479,7 +480,8 @@ LutOptions lut_options(const py::object& tables, const py::object& size, const s
     opt.tables.clear();
     for (const auto& t : names) {
       if (!is_lut_table_name(t))
-        fail("tables: unknown table '" + t + "' (choose from " + lut_names_list(kPublishedLayout) + ")");
+        fail("tables: unknown table '" + t + "'" + did_you_mean(t, lut_names(kPublishedLayout)) + " (choose from " +
+             lut_names_list(kPublishedLayout) + ")");
       if (std::find(opt.tables.begin(), opt.tables.end(), t) == opt.tables.end()) opt.tables.push_back(t);
     }
   }
@@ -488,7 +490,8 @@ LutOptions lut_options(const py::object& tables, const py::object& size, const s
     for (const auto& [k, v] : size.cast<py::dict>()) {
       const std::string name = py::str(k).cast<std::string>();
       if (!is_lut_table_name(name))
-        fail("size: unknown table '" + name + "' (choose from " + lut_names_list(kPublishedLayout) + ")");
+        fail("size: unknown table '" + name + "'" + did_you_mean(name, lut_names(kPublishedLayout)) + " (choose from " +
+             lut_names_list(kPublishedLayout) + ")");
       opt.sizes[name] = dims_of(v, name);
     }
   }
