@@ -726,17 +726,17 @@ ones have the same shape, and the results have that leading shape: (..., 3) or (
   lut.def("generate", &lut_generate, py::arg("tables") = py::none(), py::arg("size") = py::none(), py::kw_only(),
           py::arg("integrator") = "", py::arg("samples") = 0, py::arg("target_error") = kLutIntegratorDefault,
           py::arg("randomizations") = 8, py::arg("seed") = py::int_(1), py::arg("threads") = 0,
-          py::arg("grid") = "cell", py::arg("errors") = false, py::arg("layout") = "published",
-          R"doc(generate(tables: typing.Optional[list[str]] = None, size: typing.Optional[dict[str, typing.Any]] = None, integrator: str = '', samples: int = 0, target_error: float = float('nan'), randomizations: int = 8, seed: int = 1, threads: int = 0, grid: str = 'cell', errors: bool = False, layout: str = 'published') -> dict[str, typing.Any]
+          py::arg("grid") = "cell", py::arg("errors") = false, py::arg("layout") = "renderer",
+          R"doc(generate(tables: typing.Optional[list[str]] = None, size: typing.Optional[dict[str, typing.Any]] = None, integrator: str = '', samples: int = 0, target_error: float = float('nan'), randomizations: int = 8, seed: int = 1, threads: int = 0, grid: str = 'cell', errors: bool = False, layout: str = 'renderer') -> dict[str, typing.Any]
 
-Generates tables (by default of the published layout) as `dspbr lut` does with the same settings (bit-identical
+Generates tables (layout="published"; the default layout is the renderer one, below) as `dspbr lut` does with the same settings (bit-identical
 values for the same seed, whatever the thread count). tables: list of names (default: all six);
 size: {name: int or tuple of ints, slowest axis first}; integrator "quad" | "qmc" | "mc" ("": quad, deterministic); samples (qmc/mc; 0: the
 table's default maximum); target_error (nan: the integrator's default, 1e-7 quad, 1e-5 qmc/mc;
 qmc/mc 0: fixed budget); randomizations; seed; threads (0: all
 cores); grid "cell" | "endpoint". Returns {name: array of the table's shape}, or with errors=True
 {name: {"values": array, "errors": per-cell standard errors}}.
-layout="renderer": the renderer layout as `dspbr lut --layout renderer` makes it (fixed warped grids;
+layout="renderer" (the default, as in Bsdf and the CLI): the renderer layout as `dspbr lut --layout renderer` makes it (fixed warped grids;
 its glass tables when tables holds Glass_E): {name: stored values}, each lut.load(file)[name].stored
 (encodings and warps: docs/luts.md, "Renderer layout"); size, grid and errors do not apply.
 )doc");

@@ -18,7 +18,7 @@ from conftest import cli_error, dspbr_exe
     (lambda: dspbr.Bsdf(tables="render"), "tables: unknown table layout 'render'; did you mean 'renderer'?"),
     (lambda: dspbr.lut.generate(["GGX_e"]), "tables: unknown table 'GGX_e'; did you mean 'GGX_E'?"),
     (lambda: dspbr.lut.generate(["Base"]), "tables: unknown table 'Base'; did you mean 'Base_E'?"),
-    (lambda: dspbr.lut.generate(["GGX_E"], size={"Sheen_e": 4}), "size: unknown table 'Sheen_e'; did you mean 'Sheen_E'?"),
+    (lambda: dspbr.lut.generate(["GGX_E"], size={"Sheen_e": 4}, layout="published"), "size: unknown table 'Sheen_e'; did you mean 'Sheen_E'?"),
 ])
 def test_python_suggests(call, expected):
     with pytest.raises(ValueError) as e:
