@@ -34,6 +34,7 @@
 #include "dspbr/scene/components.h"
 #include "dspbr/scene/scene_analysis.h"
 #include "dspbr/version.h"
+#include "dspbr/nearest_name.h"
 #include "lut_table.h"
 
 namespace py = pybind11;
@@ -174,11 +175,13 @@ Vec3 vec3_of(const py::object& obj, const std::string& what) {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// (3,) or (N, 3) array of doubles.
+// (3,) or (..., 3) array of doubles: n rows of 3, the leading shape `lead` ((N,) for (N, 3); empty
+// for (3,)).
 struct Triples {
   Array a;
   size_t n = 1;
   bool single = true;
+  std::vector<py::ssize_t> lead;
   Vec3 at(size_t i) const {
     const double* p = a.data() + 3 * (single ? 0 : i);
     return {p[0], p[1], p[2]};
@@ -194,25 +197,44 @@ Triples triples_of(const py::object& obj, const char* name) {
   } catch (const py::error_already_set& e) {
     if (e.matches(PyExc_MemoryError)) throw;
   }
-  if (!t.a) fail(std::string(name) + " must be an array of numbers of shape (3,) or (N, 3)");
+  if (!t.a) fail(std::string(name) + " must be an array of numbers of shape (3,) or (..., 3)");
   if (t.a.ndim() == 1 && t.a.shape(0) == 3) return t;
-  if (t.a.ndim() == 2 && t.a.shape(1) == 3) {
+  if (t.a.ndim() >= 2 && t.a.shape(t.a.ndim() - 1) == 3) {
     t.single = false;
-    t.n = size_t(t.a.shape(0));
+    t.lead.assign(t.a.shape(), t.a.shape() + t.a.ndim() - 1);
+    t.n = 1;
+    for (py::ssize_t d : t.lead) t.n *= size_t(d);
     return t;
   }
   std::string shape;
   for (py::ssize_t i = 0; i < t.a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(t.a.shape(i));
   if (t.a.ndim() == 1) shape += ",";
-  fail(std::string(name) + " must have shape (3,) or (N, 3), got (" + shape + ")");
+  fail(std::string(name) + " must have shape (3,) or (..., 3), got (" + shape + ")");
 }
 
-// Number of rows of a broadcast of (3,) / (N, 3) arguments.
-size_t common_rows(const Triples& a, const char* an, const Triples& b, const char* bn) {
-  if (!a.single && !b.single && a.n != b.n)
-    fail(std::string(an) + " and " + bn + " have different lengths (" + std::to_string(a.n) + " and " +
-         std::to_string(b.n) + ")");
-  return a.single ? b.n : a.n;
+std::string shape_text(const std::vector<py::ssize_t>& lead) {
+  std::string s;
+  for (py::ssize_t d : lead) s += (s.empty() ? "" : ", ") + std::to_string(d);
+  return "(" + s + (lead.size() == 1 ? ",)" : ")");
+}
+
+// The rows of a broadcast of (3,) / (..., 3) arguments: a (3,) one broadcasts against the other,
+// two (..., 3) ones must have the same leading shape, which the results take.
+struct Rows {
+  size_t n = 1;
+  bool single = true;
+  std::vector<py::ssize_t> lead;
+};
+Rows rows_of(const Triples& t) { return {t.n, t.single, t.lead}; }
+Rows common_rows(const Triples& a, const char* an, const Triples& b, const char* bn) {
+  if (!a.single && !b.single && a.lead != b.lead) {
+    if (a.lead.size() == 1 && b.lead.size() == 1)
+      fail(std::string(an) + " and " + bn + " have different lengths (" + std::to_string(a.n) + " and " +
+           std::to_string(b.n) + ")");
+    fail(std::string(an) + " and " + bn + " have different shapes " + shape_text(a.lead) + " and " +
+         shape_text(b.lead));
+  }
+  return rows_of(a.single ? b : a);
 }
 
 // Normalized directions of a (3,) / (N, 3) argument broadcast to n rows; a zero or non-finite row
@@ -249,10 +271,17 @@ void parallel_rows(size_t n, const std::function<void(size_t)>& body) {
   });
 }
 
-Array rows3(size_t n, bool single) {
-  return single ? Array(std::vector<py::ssize_t>{3}) : Array(std::vector<py::ssize_t>{py::ssize_t(n), 3});
+// Result arrays of shape lead + (3,) and lead (one element for a (3,) argument).
+std::vector<py::ssize_t> shape_of(const Rows& r, py::ssize_t k) {
+  std::vector<py::ssize_t> s = r.single ? std::vector<py::ssize_t>{1} : r.lead;
+  if (k > 0) {
+    if (r.single) s.clear();
+    s.push_back(k);
+  }
+  return s;
 }
-Array rows1(size_t n) { return Array(std::vector<py::ssize_t>{py::ssize_t(n)}); }
+Array rows3(const Rows& r) { return Array(shape_of(r, 3)); }
+Array rows1(const Rows& r) { return Array(shape_of(r, 0)); }
 
 py::object scalar_or_rows(Array a, bool single) {
   if (single) return py::float_(a.at(0));
@@ -309,9 +338,10 @@ class PyBsdf {
 
   py::object eval(const py::object& v_in, const py::object& l_in) const {
     const Triples tv = triples_of(v_in, "v"), tl = triples_of(l_in, "l");
-    const size_t n = common_rows(tv, "v", tl, "l");
+    const Rows r = common_rows(tv, "v", tl, "l");
+    const size_t n = r.n;
     const auto v = directions(tv, "v", n), l = directions(tl, "l", n);
-    Array out = rows3(n, tv.single && tl.single);
+    Array out = rows3(r);
     double* f = out.mutable_data();
     parallel_rows(n, [&](size_t i) {
       const Rgb c = bsdf_->eval(row(v, i), row(l, i));
@@ -322,9 +352,10 @@ class PyBsdf {
 
   py::object pdf(const py::object& v_in, const py::object& l_in) const {
     const Triples tv = triples_of(v_in, "v"), tl = triples_of(l_in, "l");
-    const size_t n = common_rows(tv, "v", tl, "l");
+    const Rows r = common_rows(tv, "v", tl, "l");
+    const size_t n = r.n;
     const auto v = directions(tv, "v", n), l = directions(tl, "l", n);
-    Array out = rows1(n);
+    Array out = rows1(r);
     double* p = out.mutable_data();
     parallel_rows(n, [&](size_t i) { p[i] = bsdf_->pdf(row(v, i), row(l, i)); });
     return scalar_or_rows(out, tv.single && tl.single);
@@ -332,7 +363,8 @@ class PyBsdf {
 
   py::dict sample(const py::object& v_in, const py::object& u_in) const {
     const Triples tv = triples_of(v_in, "v"), tu = triples_of(u_in, "u");
-    const size_t n = common_rows(tv, "v", tu, "u");
+    const Rows r = common_rows(tv, "v", tu, "u");
+    const size_t n = r.n;
     const auto v = directions(tv, "v", n);
     for (size_t i = 0; i < (tu.single ? 1 : n); ++i) {
       const Vec3 u = tu.at(i);
@@ -342,9 +374,9 @@ class PyBsdf {
                py::repr(py::float_(x)).cast<std::string>());
     }
     const bool single = tv.single && tu.single;
-    Array l = rows3(n, single), w = rows3(n, single), pdf = rows1(n);
-    py::array_t<uint32_t> flags(std::vector<py::ssize_t>{py::ssize_t(n)});
-    py::array_t<bool> valid(std::vector<py::ssize_t>{py::ssize_t(n)});
+    Array l = rows3(r), w = rows3(r), pdf = rows1(r);
+    py::array_t<uint32_t> flags(shape_of(r, 0));
+    py::array_t<bool> valid(shape_of(r, 0));
     double *pl = l.mutable_data(), *pw = w.mutable_data(), *pp = pdf.mutable_data();
     uint32_t* pf = flags.mutable_data();
     bool* pv = valid.mutable_data();
@@ -375,7 +407,7 @@ class PyBsdf {
   py::object emission(const py::object& v_in) const {
     const Triples tv = triples_of(v_in, "v");
     const auto v = directions(tv, "v", tv.n);
-    Array out = rows3(tv.n, tv.single);
+    Array out = rows3(rows_of(tv));
     double* e = out.mutable_data();
     parallel_rows(tv.n, [&](size_t i) {
       const Rgb c = bsdf_->emission(row(v, i));
@@ -387,7 +419,7 @@ class PyBsdf {
   py::object delta_probability(const py::object& v_in) const {
     const Triples tv = triples_of(v_in, "v");
     const auto v = directions(tv, "v", tv.n);
-    Array out = rows1(tv.n);
+    Array out = rows1(rows_of(tv));
     double* p = out.mutable_data();
     parallel_rows(tv.n, [&](size_t i) { p[i] = bsdf_->delta_probability(row(v, i)); });
     return scalar_or_rows(out, tv.single);
@@ -450,7 +482,8 @@ LutOptions lut_options(const py::object& tables, const py::object& size, const s
     opt.tables.clear();
     for (const auto& t : names) {
       if (!is_lut_table_name(t))
-        fail("tables: unknown table '" + t + "' (choose from " + lut_names_list(kPublishedLayout) + ")");
+        fail("tables: unknown table '" + t + "'" + did_you_mean(t, lut_names(kPublishedLayout)) + " (choose from " +
+             lut_names_list(kPublishedLayout) + ")");
       if (std::find(opt.tables.begin(), opt.tables.end(), t) == opt.tables.end()) opt.tables.push_back(t);
     }
   }
@@ -459,7 +492,8 @@ LutOptions lut_options(const py::object& tables, const py::object& size, const s
     for (const auto& [k, v] : size.cast<py::dict>()) {
       const std::string name = py::str(k).cast<std::string>();
       if (!is_lut_table_name(name))
-        fail("size: unknown table '" + name + "' (choose from " + lut_names_list(kPublishedLayout) + ")");
+        fail("size: unknown table '" + name + "'" + did_you_mean(name, lut_names(kPublishedLayout)) + " (choose from " +
+             lut_names_list(kPublishedLayout) + ")");
       opt.sizes[name] = dims_of(v, name);
     }
   }
@@ -650,8 +684,9 @@ tables: "renderer" (default) | "published"; position, object_normal, wavelength,
 the rough-transmission energy compensation (beyond DSPBR 2025x, as the CLI's
 --transmission-compensation; docs/bsdf.md).
 
-Directions are (3,) or (N, 3) arrays in the local shading frame (normal +z), both pointing away
-from the surface, normalized here; a (3,) argument broadcasts against an (N, 3) one.
+Directions are (3,) or (..., 3) arrays in the local shading frame (normal +z), both pointing away
+from the surface, normalized here; a (3,) argument broadcasts against a (..., 3) one, two (..., 3)
+ones have the same shape, and the results have that leading shape: (..., 3) or (...).
 )doc")
       .def(py::init<const py::object&, const py::object&, const std::string&, const std::string&, const py::object&,
                     const py::object&, double, double, bool>(),
@@ -693,17 +728,17 @@ from the surface, normalized here; a (3,) argument broadcasts against an (N, 3) 
   lut.def("generate", &lut_generate, py::arg("tables") = py::none(), py::arg("size") = py::none(), py::kw_only(),
           py::arg("integrator") = "", py::arg("samples") = 0, py::arg("target_error") = kLutIntegratorDefault,
           py::arg("randomizations") = 8, py::arg("seed") = py::int_(1), py::arg("threads") = 0,
-          py::arg("grid") = "cell", py::arg("errors") = false, py::arg("layout") = "published",
-          R"doc(generate(tables: typing.Optional[list[str]] = None, size: typing.Optional[dict[str, typing.Any]] = None, integrator: str = '', samples: int = 0, target_error: float = float('nan'), randomizations: int = 8, seed: int = 1, threads: int = 0, grid: str = 'cell', errors: bool = False, layout: str = 'published') -> dict[str, typing.Any]
+          py::arg("grid") = "cell", py::arg("errors") = false, py::arg("layout") = "renderer",
+          R"doc(generate(tables: typing.Optional[list[str]] = None, size: typing.Optional[dict[str, typing.Any]] = None, integrator: str = '', samples: int = 0, target_error: float = float('nan'), randomizations: int = 8, seed: int = 1, threads: int = 0, grid: str = 'cell', errors: bool = False, layout: str = 'renderer') -> dict[str, typing.Any]
 
-Generates tables (by default of the published layout) as `dspbr lut` does with the same settings (bit-identical
+Generates tables (layout="published"; the default layout is the renderer one, below) as `dspbr lut` does with the same settings (bit-identical
 values for the same seed, whatever the thread count). tables: list of names (default: all six);
 size: {name: int or tuple of ints, slowest axis first}; integrator "quad" | "qmc" | "mc" ("": quad, deterministic); samples (qmc/mc; 0: the
 table's default maximum); target_error (nan: the integrator's default, 1e-7 quad, 1e-5 qmc/mc;
 qmc/mc 0: fixed budget); randomizations; seed; threads (0: all
 cores); grid "cell" | "endpoint". Returns {name: array of the table's shape}, or with errors=True
 {name: {"values": array, "errors": per-cell standard errors}}.
-layout="renderer": the renderer layout as `dspbr lut --layout renderer` makes it (fixed warped grids;
+layout="renderer" (the default, as in Bsdf and the CLI): the renderer layout as `dspbr lut --layout renderer` makes it (fixed warped grids;
 its glass tables when tables holds Glass_E): {name: stored values}, each lut.load(file)[name].stored
 (encodings and warps: docs/luts.md, "Renderer layout"); size, grid and errors do not apply.
 )doc");

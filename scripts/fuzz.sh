@@ -3,8 +3,8 @@
 # AddressSanitizer + UndefinedBehaviorSanitizer, a seed corpus from the project's own JSON and
 # glTF files, the dictionary fuzz/json.dict.
 #   bash scripts/fuzz.sh [SECONDS]        build, then run each target SECONDS (default 100: 10 min in all)
-#   bash scripts/fuzz.sh --build-only     configure and build only (the main build's dspbr_fuzz target)
-#   bash scripts/fuzz.sh --no-build SECONDS   run only (CTest fuzz_short)
+#   bash scripts/fuzz.sh --build-only     configure and build only (the dspbr_fuzz target of a -DDSPBR_FUZZ=ON build)
+#   bash scripts/fuzz.sh --no-build SECONDS   run only (CTest fuzz_short of a -DDSPBR_FUZZ=ON build)
 # Work folder: ${FUZZ_DIR:-${BUILD_DIR:-build}/fuzz} (build, corpora, artifacts, logs).
 # FUZZ_TARGETS="gltf uri" runs only those targets (default: all seven).
 # Exit status: 0 when no target crashed, hung (10 s per input), leaked past 2 GB or got a
@@ -25,10 +25,15 @@ if ((build)); then
   cxx="${FUZZ_CXX:-$(command -v clang++ || true)}"
   [ -n "$cxx" ] || { echo "fuzz: clang++ not found (Debian: clang, libclang-rt-14-dev)" >&2; exit 1; }
   cmake -S "$here/fuzz" -B "$work/build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-  # FUZZ_JOBS, else the jobs of the make that runs this (its jobserver), else every core.
-  jobs=()
-  if [ -n "${FUZZ_JOBS:-}" ]; then jobs=(-j "$FUZZ_JOBS"); elif [[ "${MAKEFLAGS:-}" != *jobserver* ]]; then jobs=(-j "$(nproc)"); fi
-  cmake --build "$work/build" "${jobs[@]}"
+  # Parallel jobs: FUZZ_JOBS, else the -jN of the make that runs this script (the dspbr_fuzz target
+  # of a -DDSPBR_FUZZ=ON build; a make without -j: 1), else CMAKE_BUILD_PARALLEL_LEVEL, else all cores.
+  jobs="${FUZZ_JOBS:-}"
+  if [ -z "$jobs" ] && [ -n "${MAKEFLAGS+set}" ]; then
+    jobs=1
+    if [[ " $MAKEFLAGS " =~ [[:space:]]-?j([0-9]+) ]]; then jobs="${BASH_REMATCH[1]}"; fi
+  fi
+  jobs="${jobs:-${CMAKE_BUILD_PARALLEL_LEVEL:-$(nproc)}}"
+  cmake --build "$work/build" -j "$jobs"
 fi
 ((run)) || exit 0
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The undefined-behaviour pass of the README's test command (docs/limits.md, "Sanitizers"):
+# The undefined-behaviour pass that CI runs after the README's test command (.ci/run;
+# docs/limits.md, "Sanitizers"):
 # builds the library, the dspbr tool and the GoogleTest suite into ${SANITIZE_DIR:-build-sanitize}
 # with AddressSanitizer and UndefinedBehaviorSanitizer (any report fails the test that hit it)
 # and with link-time optimisation under -Werror=odr (a one-definition-rule clash between

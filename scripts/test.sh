@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
-# The README's test command: install, build, run the whole suite through CTest. CI (.ci/run) then
-# runs the undefined-behaviour pass (scripts/sanitize.sh: every GoogleTest case again under
-# AddressSanitizer and UndefinedBehaviorSanitizer, with an ODR check) and the fuzz targets
-# (scripts/fuzz.sh) as well.
+# The README's test command: install, build, run the whole suite through CTest. The sanitizer and
+# ODR pass (scripts/sanitize.sh: every GoogleTest case again under ASan/UBSan) and the fuzz targets
+# (scripts/fuzz.sh) run in CI after it (.ci/run).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$here/scripts/build.sh"

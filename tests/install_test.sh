@@ -71,7 +71,7 @@ for i in range(len(v)):
     np.testing.assert_allclose(f[i], cli["f"], rtol=1e-6, atol=0)
     np.testing.assert_allclose(pdf[i], cli["pdf"], rtol=1e-6, atol=0)
 tables = dspbr.lut.generate(tables=["GGX_E", "Base_E_avg"], size={"GGX_E": (5, 7), "Base_E_avg": (3, 4)},
-                            samples=256, target_error=0)
+                            samples=256, target_error=0, layout="published")
 assert tables["GGX_E"].shape == (5, 7) and tables["Base_E_avg"].shape == (3, 4), {k: t.shape for k, t in tables.items()}
 print("python: %d directions agree with dspbr eval to 1e-6; lut.generate shapes %s" %
       (len(v), {k: t.shape for k, t in tables.items()}))

@@ -31,9 +31,9 @@ cli = json.loads(subprocess.run([os.environ["DSPBR"], "eval", "--set", "roughnes
                                  "albedo=0.8,0.5,0.2", "--view", "0,0.5,1", "--light", "0.3,-0.2,1"],
                                 check=True, capture_output=True, text=True).stdout)
 assert np.allclose(f, cli["f"], rtol=1e-6, atol=0), (f, cli["f"])
-published = dspbr.lut.generate(["GGX_E"], {"GGX_E": (4, 4)})
+published = dspbr.lut.generate(["GGX_E"], {"GGX_E": (4, 4)}, layout="published")
 assert published["GGX_E"].shape == (4, 4)
-renderer = dspbr.lut.generate(["GGX_E"], layout="renderer")
+renderer = dspbr.lut.generate(["GGX_E"])
 assert renderer["GGX_E"].shape == (32, 64) and "GGX_beta" in renderer
 print("pip-installed dspbr: eval agrees with the CLI, tables of both layouts generated")
 PY

@@ -76,7 +76,7 @@ TEST(LutRegistry, UnknownNamesListEveryTable) {
     (void)published_lut("GGX_F");
     ADD_FAILURE() << "accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), "unknown table 'GGX_F' (known: " + lut_names_list(kPublishedLayout) + ")");
+    EXPECT_EQ(std::string(e.what()), "unknown table 'GGX_F'; did you mean 'GGX_E'? (known: " + lut_names_list(kPublishedLayout) + ")");
   }
   // GGX_beta is a renderer table only.
   EXPECT_EQ(find_lut("GGX_beta", kPublishedLayout), nullptr);

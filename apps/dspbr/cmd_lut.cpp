@@ -23,6 +23,7 @@
 #include "dspbr/scene/scene_analysis.h"
 #include "dspbr/validate/integrator_study.h"
 #include "dspbr/validate/lookup_study.h"
+#include "dspbr/nearest_name.h"
 
 namespace dspbr::cli {
 
@@ -96,7 +97,8 @@ LutOptions to_options(const LutArgs& a) {
     opt.tables.clear();
     for (const std::string& t : split(a.tables, ',')) {
       if (!is_lut_table_name(t))
-        throw UsageError("--tables: unknown table '" + t + "' (choose from " + lut_names_list(kPublishedLayout) + ")");
+        throw UsageError("--tables: unknown table '" + t + "'" + did_you_mean(t, lut_names(kPublishedLayout)) +
+                         " (choose from " + lut_names_list(kPublishedLayout) + ")");
       if (std::find(opt.tables.begin(), opt.tables.end(), t) == opt.tables.end()) opt.tables.push_back(t);
     }
   }
@@ -105,7 +107,8 @@ LutOptions to_options(const LutArgs& a) {
     if (eq == std::string::npos) throw UsageError("--size: '" + s + "' is not NAME=SIZE, e.g. GGX_E=64x64");
     const std::string name = s.substr(0, eq);
     if (!is_lut_table_name(name))
-      throw UsageError("--size: unknown table '" + name + "' (choose from " + lut_names_list(kPublishedLayout) + ")");
+      throw UsageError("--size: unknown table '" + name + "'" + did_you_mean(name, lut_names(kPublishedLayout)) +
+                       " (choose from " + lut_names_list(kPublishedLayout) + ")");
     opt.sizes[name] = parse_dims(s.substr(eq + 1), "--size " + name);
   }
   try {

@@ -1,13 +1,23 @@
 // dspbr: the DSPBR reference toolchain's command-line tool.
 // Exit status: 0 success, 1 checks failed or another failure, 2 bad input or usage (CLI11's
 // parse errors included; --help, --help-all and --version exit 0).
+//
+// Built twice (CMakeLists.txt): `dspbr-full` has every subcommand; `dspbr` (DSPBR_FRONT) has
+// --version, eval, sample, params and scene, links none of OpenImageIO, Ceres and their ~270
+// shared libraries (loading them took ~0.4 s before any command ran), and runs dspbr-full from its
+// own folder, with the same arguments, for everything else (lut, validate, fit, conformance, --help).
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <cstdio>
 #include <exception>
 #include <string>
 #include <vector>
 
 #include "commands.h"
+#include "report_script.h"
 #include "dspbr/io/message.h"
 #include "dspbr/nearest_name.h"
 #include "dspbr/version.h"
@@ -76,22 +86,60 @@ std::string unknown_option(CLI::App& app, int argc, char** argv) {
   return "";
 }
 
+#ifdef DSPBR_FRONT
+// True when the front binary runs this command line itself: a first word among its subcommands,
+// or --version alone.
+bool front_runs(int argc, char** argv) {
+  if (argc < 2) return false;
+  const std::string first = argv[1];
+  if (first == "--version") return argc == 2;
+  for (const char* name : {"eval", "sample", "params", "scene"})
+    if (first == name) return true;
+  return false;
+}
+
+// Replaces the process by dspbr-full of the running binary's folder with the same arguments;
+// returns only on failure (exit status 1, the reason on stderr).
+int run_full(char** argv) {
+  std::string full;
+  try {
+    const std::string self = dspbr::cli::running_executable();
+    full = self.substr(0, self.rfind('/') + 1) + "dspbr-full";
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "dspbr: error: %s\n", dspbr::one_line(e.what()).c_str());
+    return 1;
+  }
+  execv(full.c_str(), argv);
+  std::fprintf(stderr, "dspbr: error: cannot run %s: %s\n", full.c_str(), std::strerror(errno));
+  return 1;
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef DSPBR_FRONT
+  if (!front_runs(argc, argv)) return run_full(argv);
+#endif
   CLI::App app{"dspbr: reference toolchain for the Enterprise PBR Shading Model (DSPBR 2025x)"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
   app.set_version_flag("--version", std::string("dspbr ") + dspbr::version_string(),
                        "Print the version (project version and git describe of the build) and exit");
+#ifndef DSPBR_FRONT
   dspbr::cli::add_lut_command(app);
+#endif
   dspbr::cli::add_eval_commands(app);
+#ifndef DSPBR_FRONT
   dspbr::cli::add_validate_command(app);
   dspbr::cli::add_fit_command(app);
+#endif
   dspbr::cli::add_params_command(app);
   dspbr::cli::add_scene_command(app);
+#ifndef DSPBR_FRONT
   dspbr::cli::add_conformance_command(app);
   dspbr::cli::add_shader_command(app);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -8,6 +8,13 @@
 
 namespace dspbr::cli {
 
+std::string running_executable() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) throw std::runtime_error("cannot locate the dspbr executable (/proc/self/exe): " + ec.message());
+  return exe.string();
+}
+
 std::string shell_quote(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -17,8 +24,7 @@ std::string shell_quote(const std::string& s) {
 std::string shared_path(const std::string& relative, const std::string& hint) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) throw std::runtime_error("cannot locate the dspbr executable (/proc/self/exe): " + ec.message());
+  const fs::path exe = running_executable();
   std::string tried;
   for (const fs::path& dir : {exe.parent_path().parent_path() / "share/dspbr", exe.parent_path() / "share/dspbr"}) {
     const fs::path p = dir / relative;

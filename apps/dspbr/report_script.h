@@ -7,6 +7,9 @@
 
 namespace dspbr::cli {
 
+// The path of the running binary (/proc/self/exe); throws std::runtime_error when it cannot be read.
+std::string running_executable();
+
 // Single-quotes a string for /bin/sh.
 std::string shell_quote(const std::string& s);
 

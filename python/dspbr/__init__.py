@@ -1,8 +1,8 @@
 """DSPBR 2025x reference toolchain in Python (numpy arrays in and out).
 
     dspbr.Bsdf(material, components=None, sheen="main", tables="renderer")
-        .eval(v, l) -> (N, 3), .pdf(v, l) -> (N,), .sample(v, u) -> {"l", "weight", "pdf", "flags", "valid"}
-    dspbr.lut.generate(tables=None, size=None, **settings) -> {name: array}
+        .eval(v, l) -> (..., 3), .pdf(v, l) -> (...), .sample(v, u) -> {"l", "weight", "pdf", "flags", "valid"}
+    dspbr.lut.generate(tables=None, size=None, **settings) -> {name: array} (layout="renderer" by default)
     dspbr.lut.load(path) -> {name: Table}: decoded .values, .stored, .errors, .axes (name, warp, grid, coordinates)
     dspbr.scene.analyze(path) -> dict (as `dspbr scene analyze --json`)
     dspbr.lookup.ggx_E(cos_theta, roughness), ... -> float32 arrays: the functions of the generated

@@ -1,4 +1,5 @@
 #include "dspbr/component.h"
+#include "dspbr/nearest_name.h"
 
 #include <algorithm>
 #include <cmath>
@@ -46,8 +47,13 @@ uint32_t parse_component_names(const std::vector<std::string>& names) {
     const auto it = std::find_if(all.begin(), all.end(), [&](Component c) { return name == component_name(c); });
     if (it == all.end()) {
       std::string known;
-      for (Component c : all) known += std::string(known.empty() ? "" : ", ") + component_name(c);
-      throw std::invalid_argument("unknown component '" + name + "' (known: " + known + ")");
+      std::vector<std::string> names_known;
+      for (Component c : all) {
+        known += std::string(known.empty() ? "" : ", ") + component_name(c);
+        names_known.push_back(component_name(c));
+      }
+      throw std::invalid_argument("unknown component '" + name + "'" + did_you_mean(name, names_known) + " (known: " +
+                                  known + ")");
     }
     mask |= *it;
   }

@@ -1,6 +1,7 @@
 #include "dspbr/nearest_name.h"
 
 #include <algorithm>
+#include <cctype>
 
 namespace dspbr {
 
@@ -26,7 +27,18 @@ std::string nearest_name(const std::string& word, const std::vector<std::string>
     const std::size_t d = edit_distance(word, n);
     if (d < best) best = d, nearest = n;
   }
+  if (!nearest.empty() || word.size() < 3) return nearest;
+  const auto lower = [](unsigned char c) { return static_cast<char>(std::tolower(c)); };
+  for (const std::string& n : names)
+    if (n.size() > word.size() &&
+        std::equal(word.begin(), word.end(), n.begin(), [&](char a, char b) { return lower(a) == lower(b); }))
+      return n;
   return nearest;
+}
+
+std::string did_you_mean(const std::string& word, const std::vector<std::string>& names) {
+  const std::string near = nearest_name(word, names);
+  return near.empty() ? "" : "; did you mean '" + near + "'?";
 }
 
 }  // namespace dspbr

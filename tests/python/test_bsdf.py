@@ -79,6 +79,30 @@ def test_shapes_and_broadcasting():
     np.testing.assert_allclose(bsdf.eval(list(3 * v), l[2]), f[2], rtol=1e-12)
 
 
+def test_any_leading_shape_is_a_loop_over_rows():
+    # A (91, 181, 3) grid of light directions gives (91, 181, k) results, each element the one of the
+    # same direction in a flat (N, 3) call (the long-standing convention the grid is checked against).
+    bsdf = dspbr.Bsdf({"roughness": 0.4, "sheenColor": [0.5, 0.5, 0.5], "clearcoat": 1})
+    theta, phi = np.meshgrid(np.linspace(0, np.pi, 91), np.linspace(0, 2 * np.pi, 181), indexing="ij")
+    grid = np.stack([np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), np.cos(theta)], axis=-1)
+    grid[0, :] = grid[-1, :] = [0.1, 0.0, 1.0]  # no zero-length poles
+    v = np.array([0.3, 0.0, 1.0])
+    flat = grid.reshape(-1, 3)
+    f = bsdf.eval(v, grid)
+    assert f.shape == (91, 181, 3)
+    np.testing.assert_array_equal(f.reshape(-1, 3), np.array([bsdf.eval(v, l) for l in flat]))
+    pdf = bsdf.pdf(grid, v)
+    assert pdf.shape == (91, 181)
+    np.testing.assert_array_equal(pdf.reshape(-1), np.array([bsdf.pdf(l, v) for l in flat]))
+    u = np.random.default_rng(3).random((4, 5, 3))
+    s = bsdf.sample(v, u)
+    assert s["l"].shape == (4, 5, 3) and s["pdf"].shape == (4, 5) and s["valid"].shape == (4, 5)
+    one = bsdf.sample(v, u[2, 3])
+    np.testing.assert_array_equal(s["l"][2, 3], one["l"])
+    assert s["flags"][2, 3] == one["flags"]
+    assert bsdf.emission(grid[:2]).shape == (2, 181, 3) and bsdf.delta_probability(grid[:2]).shape == (2, 181)
+
+
 def test_sample_weight_is_f_cos_over_pdf():
     for material in MATERIALS:
         bsdf = dspbr.Bsdf(material)
@@ -167,10 +191,12 @@ def test_bad_options_raise_the_cli_message(options, cli_options):
 
 def test_bad_arrays_raise():
     bsdf = dspbr.Bsdf()
-    with pytest.raises(ValueError, match=r"v must have shape \(3,\) or \(N, 3\), got \(4, 2\)"):
+    with pytest.raises(ValueError, match=r"v must have shape \(3,\) or \(\.\.\., 3\), got \(4, 2\)"):
         bsdf.eval(np.ones((4, 2)), [0, 0, 1])
     with pytest.raises(ValueError, match="different lengths"):
         bsdf.pdf(np.ones((4, 3)), np.ones((5, 3)))
+    with pytest.raises(ValueError, match=r"v and l have different shapes \(2, 3\) and \(3, 2\)"):
+        bsdf.pdf(np.ones((2, 3, 3)), np.ones((3, 2, 3)))
     with pytest.raises(ValueError, match=r"l\[1\] must be a finite non-zero vector"):
         bsdf.eval([0, 0, 1], [[0, 0, 1], [0, 0, 0]])
     with pytest.raises(ValueError, match=r"u\[0\] expects three numbers in \[0, 1\)"):

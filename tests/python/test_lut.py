@@ -26,7 +26,8 @@ def cli_tables(tmp_path, tables, sizes, *extra):
 def test_generate_agrees_with_cli(tmp_path, integrator, grid):
     sizes = {"GGX_E": (8, 6), "Base_E": (3, 4, 5), "Sheen_E": (4, 7), "GGX_E_avg": (5,)}
     tables = ["GGX_E", "GGX_E_avg", "Base_E", "Sheen_E"]
-    got = dspbr.lut.generate(tables=tables, size=sizes, integrator=integrator, grid=grid, **SETTINGS)
+    got = dspbr.lut.generate(tables=tables, size=sizes, integrator=integrator, grid=grid, layout="published",
+                             **SETTINGS)
     assert list(got) == tables
     for name in tables:
         assert got[name].shape == sizes[name]
@@ -44,8 +45,8 @@ def test_generate_agrees_with_cli(tmp_path, integrator, grid):
 
 
 def test_generate_default_sizes_and_errors_and_threads():
-    one = dspbr.lut.generate(["Sheen_ash_E"], samples=1024, target_error=0, threads=1, errors=True)
-    two = dspbr.lut.generate("Sheen_ash_E", samples=1024, target_error=0, threads=2)
+    one = dspbr.lut.generate(["Sheen_ash_E"], samples=1024, target_error=0, threads=1, errors=True, layout="published")
+    two = dspbr.lut.generate("Sheen_ash_E", samples=1024, target_error=0, threads=2, layout="published")
     values = one["Sheen_ash_E"]["values"]
     assert values.shape == tuple(len(x) for _, x in dspbr.lut.axes("Sheen_ash_E"))
     assert one["Sheen_ash_E"]["errors"].shape == values.shape
@@ -147,7 +148,7 @@ def test_bad_settings_raise_the_cli_message(tmp_path, kwargs, cli_args):
     cli_tables = [] if "--tables" in cli_args else ["--tables", "GGX_E_avg"]
     msg = cli_error("lut", "--out", tmp_path / "x", "--formats", "json", "--samples", "64", *cli_tables, *cli_args)
     with pytest.raises(ValueError) as e:
-        dspbr.lut.generate(tables, samples=64, **kwargs)
+        dspbr.lut.generate(tables, samples=64, layout="published", **kwargs)
     assert str(e.value) == msg or "--" + str(e.value) == msg
 
 
@@ -167,7 +168,7 @@ def test_bad_threads_seed_and_files(tmp_path):
 def test_generate_renderer_layout_equals_the_committed_file():
     # The renderer layout from Python is the CLI's (the committed file was written by `dspbr lut`):
     # same stored values, bit for bit, for the tables without glass.
-    made = dspbr.lut.generate(["GGX_E"], layout="renderer")
+    made = dspbr.lut.generate(["GGX_E"])  # the default layout, as everywhere else
     committed = dspbr.lut.load(os.path.join(SOURCE_DIR, "luts", "dspbr_renderer_luts.json"))
     assert set(made) == {"GGX_E", "GGX_beta", "GGX_E_avg", "GGX_B_avg", "Sheen_E", "Sheen_ash_E"}
     for name, values in made.items():

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "dspbr/io/read_file.h"
+#include "dspbr/nearest_name.h"
 #include "dspbr/params/material_params.h"
 #include "dspbr/params/param_defs.h"
 #include "dspbr/io/json_fields.h"
@@ -153,7 +154,10 @@ std::vector<std::string> check_material_instance(const ParamDefs& defs, const Js
   for (const auto& [id, v] : values.items()) {
     const ParamDef* d = m.find(id);
     if (!d) {
-      problems.push_back("unknown parameter '" + id + "' for material '" + type + "'");
+      std::vector<std::string> ids;
+      for (const ParamDef& p : m.parameters)
+        if (!p.hidden) ids.push_back(p.id);
+      problems.push_back("unknown parameter '" + id + "' for material '" + type + "'" + did_you_mean(id, ids));
       continue;
     }
     if (d->hidden) {

@@ -139,9 +139,7 @@ const std::map<std::string, Field>& fields() {
 const Field& field(const std::string& id) {
   const auto it = fields().find(id);
   if (it == fields().end()) {
-    const std::string near = nearest_name(id, material_parameter_ids());
-    throw std::invalid_argument("unknown material parameter '" + id + "'" +
-                                (near.empty() ? "" : "; did you mean '" + near + "'?"));
+    throw std::invalid_argument("unknown material parameter '" + id + "'" + did_you_mean(id, material_parameter_ids()));
   }
   return it->second;
 }

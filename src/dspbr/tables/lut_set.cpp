@@ -8,6 +8,7 @@
 #include "dspbr/io/read_file.h"
 #include "dspbr/tables/table_files.h"
 #include "dspbr/tables/table_registry.h"
+#include "dspbr/nearest_name.h"
 
 namespace dspbr {
 
@@ -122,7 +123,8 @@ const char* lut_layout_name(LutLayout layout) { return layout == LutLayout::Rend
 LutLayout parse_lut_layout(const std::string& name) {
   if (name == "renderer") return LutLayout::Renderer;
   if (name == "published") return LutLayout::Published;
-  throw std::invalid_argument("unknown table layout '" + name + "' (choose renderer or published)");
+  throw std::invalid_argument("unknown table layout '" + name + "'" + did_you_mean(name, {"renderer", "published"}) +
+                              " (choose renderer or published)");
 }
 
 }  // namespace dspbr

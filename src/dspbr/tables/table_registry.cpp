@@ -1,4 +1,5 @@
 #include "dspbr/tables/table_registry.h"
+#include "dspbr/nearest_name.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -51,7 +52,8 @@ const LutInfo* find_lut(const std::string& name, unsigned layouts) {
 
 const LutInfo& require_lut(const std::string& name, unsigned layouts) {
   if (const LutInfo* t = find_lut(name, layouts)) return *t;
-  throw std::invalid_argument("unknown table '" + name + "' (known: " + lut_names_list(layouts) + ")");
+  throw std::invalid_argument("unknown table '" + name + "'" + did_you_mean(name, lut_names(layouts)) + " (known: " +
+                              lut_names_list(layouts) + ")");
 }
 
 const LutInfo& published_lut(const std::string& name) { return require_lut(name, kPublishedLayout); }
