@@ -17,7 +17,6 @@ add_test(NAME shader_vectors
          WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
 set_tests_properties(shader_vectors PROPERTIES FIXTURES_SETUP shader_vectors TIMEOUT 300)
 
-find_package(Python3 COMPONENTS Interpreter QUIET)
 add_test(NAME shader_material_generated
          COMMAND sh -c "/usr/bin/python3 '${PROJECT_SOURCE_DIR}/scripts/shaders/gen_material.py' \
 '${PROJECT_SOURCE_DIR}/data/dspbr/params-2025x.json' shader_material.glsl && \
