@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <map>
 #include <set>
 
 #include "dspbr/bsdf/dispersion.h"
@@ -173,26 +172,20 @@ TEST(ShaderLibrary, EmissionAndDeltaLobesAsTheVectors) {
                   x.emission_tolerance.admits(e.b, x.emission->b))
           << x.id << ": " << e.r << " " << e.g << " " << e.b << " expected " << x.emission->r;
     }
-    // The delta lobes at v: the sampler's lobe choice swept over 8192 values; weight x probability
-    // of a delta sample is its lobe's reflectance or transmittance (docs/bsdf.md, "Conventions").
-    std::map<std::tuple<long, long, long>, std::pair<Vec3, Rgb>> found;
-    for (int k = 0; k < 8192; ++k) {
-      const BsdfSample s = b.sample(x.v, {(k + 0.5) / 8192, 0.5, 0.5});
-      if (!s.valid || !(s.flags & kLobeDelta)) continue;
-      const auto key = std::make_tuple(std::lround(s.l.x * 1e4), std::lround(s.l.y * 1e4), std::lround(s.l.z * 1e4));
-      found[key] = {s.l, s.weight * s.pdf};
-    }
+    // The delta lobes at v (shader_material.h, delta_lobes: the sampler's lobe choice swept).
+    const dspbr_shader::vec3 vf(float(x.v.x), float(x.v.y), float(x.v.z));
+    const std::vector<DeltaExpectation> found = shader_test::delta_lobes(shader_test::delta_samples(b.prepared(), vf).data());
     EXPECT_EQ(found.size(), x.delta.size()) << x.id;
     for (const DeltaExpectation& d : x.delta) {
       ++delta;
       bool matched = false;
-      for (const auto& [key, lobe] : found) {
-        if (length(lobe.first - d.l) > 1e-4) continue;
+      for (const DeltaExpectation& lobe : found) {
+        if (length(lobe.l - d.l) > 1e-4) continue;
         matched = true;
         const Tolerance t{1e-5, 1e-4};  // float directions and Fresnel
-        EXPECT_TRUE(t.admits(lobe.second.r, d.value.r) && t.admits(lobe.second.g, d.value.g) &&
-                    t.admits(lobe.second.b, d.value.b))
-            << x.id << ": delta lobe " << lobe.second.r << " expected " << d.value.r;
+        EXPECT_TRUE(t.admits(lobe.value.r, d.value.r) && t.admits(lobe.value.g, d.value.g) &&
+                    t.admits(lobe.value.b, d.value.b))
+            << x.id << ": delta lobe " << lobe.value.r << " expected " << d.value.r;
       }
       EXPECT_TRUE(matched) << x.id << ": no delta sample towards " << d.l.x << " " << d.l.y << " " << d.l.z;
     }

@@ -214,8 +214,12 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
   b.sheen_color = m.sheenColor;
   b.alpha_b = max(m.sheenRoughness * m.sheenRoughness, dspbr_min_alpha_b);
   b.sheen_model = o.sheen_model;
-  b.sheen_lambda = dspbr_sheen_lambda_fit(b.alpha_b);
-  if (DSPBR_HAS_SHEEN != 0 && dspbr_max3(m.sheenColor) > 0.0f && !flake_opaque) b.lobes |= 1u << uint(DSPBR_LOBE_SHEEN);
+  // The Lambda fit (five powers) only for a sheen lobe: the main model's eval is its one reader.
+  b.sheen_lambda = dspbr_sheen_lambda_unused();
+  if (DSPBR_HAS_SHEEN != 0 && dspbr_max3(m.sheenColor) > 0.0f && !flake_opaque) {
+    b.lobes |= 1u << uint(DSPBR_LOBE_SHEEN);
+    b.sheen_lambda = dspbr_sheen_lambda_fit(b.alpha_b);
+  }
   if (b.clearcoat > 0.0f) {
     b.lobes |= 1u << uint(DSPBR_LOBE_CLEARCOAT);
     if (b.coat_ggx.mirror) b.delta |= 1u << uint(DSPBR_LOBE_CLEARCOAT);

@@ -37,6 +37,17 @@ DSPBR_FN DspbrSheenLambda dspbr_sheen_lambda_fit(float alpha_b) {
   s.l_half = dspbr_sheen_L(s, 0.5f);
   return s;
 }
+// The row of a BSDF without sheen (never read; every field set, so the prepared value is defined).
+DSPBR_FN DspbrSheenLambda dspbr_sheen_lambda_unused() {
+  DspbrSheenLambda s;
+  s.p0 = 0.0f;
+  s.p1 = 0.0f;
+  s.p2 = 0.0f;
+  s.p3 = 0.0f;
+  s.p4 = 0.0f;
+  s.l_half = 0.0f;
+  return s;
+}
 // Lambda(cos) = exp(L(|cos|)) below 0.5, exp(2 L(0.5) - L(1 - |cos|)) above (spec "Sheen").
 DSPBR_FN float dspbr_sheen_Lambda(DspbrSheenLambda s, float c) {
   float x = min(1.0f, abs(c));
