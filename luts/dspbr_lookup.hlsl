@@ -862,13 +862,15 @@ float dspbr_ggx_E_avg_missing(float roughness) {
   return exp(dspbr_lut_interp_dspbr_GGX_E_avg(sqrt(((dspbr_lut_clampf(roughness, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f))));
 }
 float dspbr_ggx_E_avg(float roughness) { return 1.0f - dspbr_ggx_E_avg_missing(roughness); }
-// Schlick moment B = Integral M_r (1 - v.h)^5 mu_l dl = beta E_m; stored beta - (1 - mu)^5.
-float dspbr_lut_ggx_B(float cos_theta, float roughness) {
+// beta(mu; r) = B / E_m, B = Integral M_r (1 - v.h)^5 mu_l dl the Schlick moment; stored beta - (1 - mu)^5.
+float dspbr_ggx_beta(float cos_theta, float roughness) {
   float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
   float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
   float m = 1.0f - mu, m2 = m * m;
-  float beta = m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(mu, r * r)));
-  return beta * dspbr_ggx_E(mu, r);
+  return m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(mu, r * r)));
+}
+float dspbr_lut_ggx_B(float cos_theta, float roughness) {
+  return dspbr_ggx_beta(cos_theta, roughness) * dspbr_ggx_E(cos_theta, roughness);
 }
 // F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = 20/21 f0 + 1/21 f90 (spec eq. multiscatter);
 // f0, f90, e_avg clamped to [0, 1]; 1 (the limit along F_avg = 1) when F_avg = 1 and E_avg = 0.

@@ -30,10 +30,10 @@ DSPBR_FN DspbrSample dspbr_failed_sample() {
 }
 
 // The side of v (in the frame's local coordinates): true for the back.
-DSPBR_FN bool dspbr_back_side(DspbrBsdf b, vec3 v) { return b.thin_walled ? dot(v, b.core.n) < 0.0f : v.z < 0.0f; }
+DSPBR_FN bool dspbr_back_side(DSPBR_IN(DspbrBsdf) b, vec3 v) { return b.thin_walled ? dot(v, b.core.n) < 0.0f : v.z < 0.0f; }
 // The IOR on v's side (eta_i) and on the other side (eta_o): the volume's only on the inside.
-DSPBR_FN float dspbr_eta_i(DspbrBsdf b, bool back) { return (!b.thin_walled && back) ? b.eta : 1.0f; }
-DSPBR_FN float dspbr_eta_o(DspbrBsdf b, bool back) { return (!b.thin_walled && back) ? 1.0f : b.eta; }
+DSPBR_FN float dspbr_eta_i(DSPBR_IN(DspbrBsdf) b, bool back) { return (!b.thin_walled && back) ? b.eta : 1.0f; }
+DSPBR_FN float dspbr_eta_o(DSPBR_IN(DspbrBsdf) b, bool back) { return (!b.thin_walled && back) ? 1.0f : b.eta; }
 
 // The layer factors of (v, l) times the cut-out opacity s: core, sheen, clearcoat.
 struct DspbrLayers {
@@ -41,7 +41,7 @@ struct DspbrLayers {
   float sheen;
   float coat;
 };
-DSPBR_FN DspbrLayers dspbr_layers(DspbrBsdf b, vec3 v, vec3 l) {
+DSPBR_FN DspbrLayers dspbr_layers(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, DspbrAlbedos av, DspbrAlbedos al) {
   DspbrLayers f;
   float s = b.alpha_cut;
   f.coat = s;
@@ -49,7 +49,7 @@ DSPBR_FN DspbrLayers dspbr_layers(DspbrBsdf b, vec3 v, vec3 l) {
   if (DSPBR_HAS_CLEARCOAT != 0 && b.clearcoat > 0.0f)
     below *= 1.0f - b.clearcoat * max(dspbr_clearcoat_fresnel(dot(v, b.coat.n)), dspbr_clearcoat_fresnel(dot(l, b.coat.n)));
   f.sheen = below;
-  f.core = DSPBR_HAS_SHEEN != 0 && dspbr_has_lobe(b, DSPBR_LOBE_SHEEN) ? below * dspbr_sheen_layer(b, dot(v, b.core.n), dot(l, b.core.n)) : below;
+  f.core = DSPBR_HAS_SHEEN != 0 && dspbr_has_lobe(b, DSPBR_LOBE_SHEEN) ? below * dspbr_sheen_layer(b, av, al) : below;
   return f;
 }
 DSPBR_FN float dspbr_layer_of(DspbrLayers f, int k) {
@@ -59,8 +59,9 @@ DSPBR_FN float dspbr_layer_of(DspbrLayers f, int k) {
 }
 DSPBR_FN vec3 dspbr_flip_z(vec3 w) { return vec3(w.x, w.y, -w.z); }
 
-// f of lobe k (no layer factor) for v, l in the side's coordinates.
-DSPBR_FN vec3 dspbr_lobe_eval(DspbrBsdf b, int k, vec3 v, vec3 l, float eta_i, float eta_o) {
+// f of lobe k (no layer factor) for v, l in the side's coordinates; av, al: the tables at v and l.
+DSPBR_FN vec3 dspbr_lobe_eval(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, float eta_i, float eta_o, DspbrAlbedos av,
+                              DspbrAlbedos al) {
   if (DSPBR_HAS_CLEARCOAT != 0 && k == DSPBR_LOBE_CLEARCOAT) {
     // The coat reflects: nothing towards the other side of the core's surface.
     if (!(dot(l, b.core.n) > 0.0f)) return dspbr_splat(0.0f);
@@ -68,21 +69,21 @@ DSPBR_FN vec3 dspbr_lobe_eval(DspbrBsdf b, int k, vec3 v, vec3 l, float eta_i, f
   }
   vec3 vc = dspbr_to_local(b.core, v), lc = dspbr_to_local(b.core, l);
   if (k == DSPBR_LOBE_CORE_REFLECTION) return dspbr_reflection_eval(b, k, vc, lc, eta_i, eta_o);
-  if (k == DSPBR_LOBE_MULTISCATTER) return dspbr_multiscatter_eval(b, vc, lc);
+  if (k == DSPBR_LOBE_MULTISCATTER) return dspbr_multiscatter_eval(b, vc, lc, av, al);
   if (DSPBR_HAS_VOLUMETRIC_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && !b.thin_walled)
     return dspbr_volumetric_eval(b, vc, lc, eta_i, eta_o);
   if (DSPBR_HAS_THIN_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && b.thin_walled) {
     if (!(lc.z < 0.0f)) return dspbr_splat(0.0f);
     return dspbr_reflection_eval(b, k, vc, dspbr_flip_z(lc), eta_i, eta_o);  // M_t' = M_r(v, l mirrored)
   }
-  if (DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_eval(b, vc, lc);
+  if (DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_eval(b, vc, lc, av, al);
   if (DSPBR_HAS_FLAKES != 0 && k == DSPBR_LOBE_FLAKE) return dspbr_flake_eval(b, vc, lc);
   if (DSPBR_HAS_SHEEN != 0 && k == DSPBR_LOBE_SHEEN) return dspbr_sheen_eval(b, vc, lc);
   return dspbr_splat(0.0f);
 }
 
 // The density with which lobe k samples l.
-DSPBR_FN float dspbr_lobe_pdf(DspbrBsdf b, int k, vec3 v, vec3 l, float eta_i, float eta_o) {
+DSPBR_FN float dspbr_lobe_pdf(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, float eta_i, float eta_o) {
   if (DSPBR_HAS_CLEARCOAT != 0 && k == DSPBR_LOBE_CLEARCOAT)
     return dspbr_ggx_reflection_pdf(b.coat_ggx, dspbr_to_local(b.coat, v), dspbr_to_local(b.coat, l));
   vec3 vc = dspbr_to_local(b.core, v), lc = dspbr_to_local(b.core, l);
@@ -99,18 +100,18 @@ DSPBR_FN float dspbr_lobe_pdf(DspbrBsdf b, int k, vec3 v, vec3 l, float eta_i, f
 }
 
 // The selection weight of lobe k at v, without its layer factor.
-DSPBR_FN float dspbr_lobe_weight(DspbrBsdf b, int k, vec3 v, float eta_i, float eta_o) {
+DSPBR_FN float dspbr_lobe_weight(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, float eta_i, float eta_o, DspbrAlbedos av) {
   if (DSPBR_HAS_CLEARCOAT != 0 && k == DSPBR_LOBE_CLEARCOAT) return dspbr_reflection_weight(b, k, dspbr_to_local(b.coat, v), eta_i, eta_o);
   vec3 vc = dspbr_to_local(b.core, v);
   if (k == DSPBR_LOBE_CORE_REFLECTION) return dspbr_reflection_weight(b, k, vc, eta_i, eta_o);
-  if (k == DSPBR_LOBE_MULTISCATTER) return dspbr_multiscatter_weight(b, vc);
+  if (k == DSPBR_LOBE_MULTISCATTER) return dspbr_multiscatter_weight(b, vc, av);
   if (DSPBR_HAS_VOLUMETRIC_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && !b.thin_walled)
     return dspbr_volumetric_weight(b, vc, eta_i, eta_o);
   if (DSPBR_HAS_THIN_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && b.thin_walled)
     return dspbr_reflection_weight(b, k, vc, eta_i, eta_o);
-  if (DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_weight(b, vc);
+  if (DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && k == DSPBR_LOBE_DIFFUSE) return dspbr_diffuse_weight(b, vc, av);
   if (DSPBR_HAS_FLAKES != 0 && k == DSPBR_LOBE_FLAKE) return dspbr_flake_weight(b, vc);
-  if (DSPBR_HAS_SHEEN != 0 && k == DSPBR_LOBE_SHEEN) return dspbr_sheen_weight(b, vc);
+  if (DSPBR_HAS_SHEEN != 0 && k == DSPBR_LOBE_SHEEN) return dspbr_sheen_weight(b, vc, av);
   return 0.0f;
 }
 
@@ -119,14 +120,14 @@ DSPBR_FN float dspbr_lobe_weight(DspbrBsdf b, int k, vec3 v, float eta_i, float 
 struct DspbrSelection {
   float p[8];
 };
-DSPBR_FN DspbrSelection dspbr_select(DspbrBsdf b, vec3 v, float eta_i, float eta_o) {
+DSPBR_FN DspbrSelection dspbr_select(DSPBR_IN(DspbrBsdf) b, vec3 v, float eta_i, float eta_o, DspbrAlbedos av) {
   DspbrSelection sel;
-  DspbrLayers f = dspbr_layers(b, v, v);
+  DspbrLayers f = dspbr_layers(b, v, v, av, av);
   float max_w = 0.0f;
   for (int k = 0; k < DSPBR_LOBE_COUNT; ++k) {
     float w = 0.0f;
     if (dspbr_has_lobe(b, k)) {
-      w = dspbr_lobe_weight(b, k, v, eta_i, eta_o) * dspbr_layer_of(f, k);
+      w = dspbr_lobe_weight(b, k, v, eta_i, eta_o, av) * dspbr_layer_of(f, k);
       w = (isnan(w) || isinf(w)) ? 0.0f : max(w, 0.0f);
     }
     sel.p[k] = w;
@@ -149,16 +150,20 @@ DSPBR_FN DspbrSelection dspbr_select(DspbrBsdf b, vec3 v, float eta_i, float eta
 DSPBR_CONST float dspbr_tiny = 1e-30f;
 DSPBR_FN float dspbr_flush_tiny(float x) { return x >= dspbr_tiny ? x : 0.0f; }
 
-// f(v, l) and the mixture pdf on one side (v in front, side coordinates).
-DSPBR_FN vec3 dspbr_eval_side(DspbrBsdf b, vec3 v, vec3 l, float eta_i, float eta_o) {
-  DspbrLayers f = dspbr_layers(b, v, l);
+// The tables at w's cosine in the core frame.
+DSPBR_FN DspbrAlbedos dspbr_albedos_at(DSPBR_IN(DspbrBsdf) b, vec3 w) { return dspbr_albedos(b, dot(w, b.core.n)); }
+
+// f(v, l) and the mixture pdf on one side (v in front, side coordinates; av: the tables at v).
+DSPBR_FN vec3 dspbr_eval_side(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, float eta_i, float eta_o, DspbrAlbedos av) {
+  DspbrAlbedos al = dspbr_albedos_at(b, l);
+  DspbrLayers f = dspbr_layers(b, v, l, av, al);
   vec3 sum = dspbr_splat(0.0f);
   for (int k = 0; k < DSPBR_LOBE_COUNT; ++k)
     if (dspbr_has_lobe(b, k) && !dspbr_is_delta_lobe(b, k))
-      sum += dspbr_lobe_eval(b, k, v, l, eta_i, eta_o) * dspbr_layer_of(f, k);
+      sum += dspbr_lobe_eval(b, k, v, l, eta_i, eta_o, av, al) * dspbr_layer_of(f, k);
   return vec3(dspbr_flush_tiny(sum.x), dspbr_flush_tiny(sum.y), dspbr_flush_tiny(sum.z));
 }
-DSPBR_FN float dspbr_pdf_side(DspbrBsdf b, DspbrSelection sel, vec3 v, vec3 l, float eta_i, float eta_o) {
+DSPBR_FN float dspbr_pdf_side(DSPBR_IN(DspbrBsdf) b, DspbrSelection sel, vec3 v, vec3 l, float eta_i, float eta_o) {
   float p = 0.0f;
   for (int k = 0; k < DSPBR_LOBE_COUNT; ++k)
     if (dspbr_has_lobe(b, k) && !dspbr_is_delta_lobe(b, k) && sel.p[k] > 0.0f)
@@ -174,7 +179,7 @@ struct DspbrSide {
   float eta_i;
   float eta_o;
 };
-DSPBR_FN DspbrSide dspbr_side(DspbrBsdf b, vec3 v_in, vec3 l_in) {
+DSPBR_FN DspbrSide dspbr_side(DSPBR_IN(DspbrBsdf) b, vec3 v_in, vec3 l_in) {
   DspbrSide s;
   s.v = dspbr_to_local(b.frame, v_in);
   s.l = dspbr_to_local(b.frame, l_in);
@@ -189,20 +194,20 @@ DSPBR_FN DspbrSide dspbr_side(DspbrBsdf b, vec3 v_in, vec3 l_in) {
 }
 
 // f(v, l) without the cosine (delta lobes excluded).
-DSPBR_FN vec3 dspbr_eval(DspbrBsdf b, vec3 v_in, vec3 l_in) {
+DSPBR_FN vec3 dspbr_eval(DSPBR_IN(DspbrBsdf) b, vec3 v_in, vec3 l_in) {
   DspbrSide s = dspbr_side(b, v_in, l_in);
-  return dspbr_eval_side(b, s.v, s.l, s.eta_i, s.eta_o);
+  return dspbr_eval_side(b, s.v, s.l, s.eta_i, s.eta_o, dspbr_albedos_at(b, s.v));
 }
 
 // The solid-angle density with which dspbr_sample produces l through its non-delta lobes.
-DSPBR_FN float dspbr_pdf(DspbrBsdf b, vec3 v_in, vec3 l_in) {
+DSPBR_FN float dspbr_pdf(DSPBR_IN(DspbrBsdf) b, vec3 v_in, vec3 l_in) {
   DspbrSide s = dspbr_side(b, v_in, l_in);
-  return dspbr_pdf_side(b, dspbr_select(b, s.v, s.eta_i, s.eta_o), s.v, s.l, s.eta_i, s.eta_o);
+  return dspbr_pdf_side(b, dspbr_select(b, s.v, s.eta_i, s.eta_o, dspbr_albedos_at(b, s.v)), s.v, s.l, s.eta_i, s.eta_o);
 }
 
 // A direction from lobe k in the lobe's own frame (v_k: v in that frame); lw: a delta lobe's
 // reflectance or transmittance. False when the sample fails.
-DSPBR_FN bool dspbr_lobe_sample(DspbrBsdf b, int k, vec3 vk, vec3 u, float eta_i, float eta_o, DSPBR_OUT(vec3) l,
+DSPBR_FN bool dspbr_lobe_sample(DSPBR_IN(DspbrBsdf) b, int k, vec3 vk, vec3 u, float eta_i, float eta_o, DSPBR_OUT(vec3) l,
                                 DSPBR_OUT(vec3) lw) {
   l = vec3(0.0f, 0.0f, 1.0f);
   lw = dspbr_splat(0.0f);
@@ -246,13 +251,14 @@ DSPBR_FN bool dspbr_lobe_sample(DspbrBsdf b, int k, vec3 vk, vec3 u, float eta_i
 
 // Samples l for v with three uniform numbers u in [0, 1): u.x chooses the lobe (and is reused,
 // rescaled, by the diffuse lobe's choice of side), u.y and u.z the direction.
-DSPBR_FN DspbrSample dspbr_sample(DspbrBsdf b, vec3 v_in, vec3 u) {
+DSPBR_FN DspbrSample dspbr_sample(DSPBR_IN(DspbrBsdf) b, vec3 v_in, vec3 u) {
   DspbrSample out_s = dspbr_failed_sample();
   vec3 v = dspbr_to_local(b.frame, v_in);
   bool back = dspbr_back_side(b, v);
   if (back) v = -v;
   float eta_i = dspbr_eta_i(b, back), eta_o = dspbr_eta_o(b, back);
-  DspbrSelection sel = dspbr_select(b, v, eta_i, eta_o);
+  DspbrAlbedos av = dspbr_albedos_at(b, v);
+  DspbrSelection sel = dspbr_select(b, v, eta_i, eta_o, av);
   // The slot whose interval of the cumulative probabilities holds u.x (rounding: the last slot
   // with a non-zero probability).
   int chosen = -1, last = -1;
@@ -288,13 +294,13 @@ DSPBR_FN DspbrSample dspbr_sample(DspbrBsdf b, vec3 v_in, vec3 u) {
     uint side = l.z * v.z >= 0.0f ? DSPBR_FLAG_REFLECTION : DSPBR_FLAG_TRANSMISSION;
     if (dspbr_is_delta_lobe(b, chosen)) {
       if (chosen == DSPBR_LOBE_CLEARCOAT && !(dot(l, b.core.n) > 0.0f)) return out_s;  // as in eval
-      out_s.weight = lw * (dspbr_layer_of(dspbr_layers(b, v, l), chosen) / p);
+      out_s.weight = lw * (dspbr_layer_of(dspbr_layers(b, v, l, av, dspbr_albedos_at(b, l)), chosen) / p);
       out_s.pdf = p;
       out_s.flags = DSPBR_FLAG_DELTA | side;
     } else {
       out_s.pdf = dspbr_pdf_side(b, sel, v, l, eta_i, eta_o);
       if (!(out_s.pdf > 0.0f)) return out_s;
-      out_s.weight = dspbr_eval_side(b, v, l, eta_i, eta_o) * (abs(l.z) / out_s.pdf);
+      out_s.weight = dspbr_eval_side(b, v, l, eta_i, eta_o, av) * (abs(l.z) / out_s.pdf);
       bool diffuse = chosen == DSPBR_LOBE_MULTISCATTER || chosen == DSPBR_LOBE_DIFFUSE;
       out_s.flags = (diffuse ? DSPBR_FLAG_DIFFUSE : DSPBR_FLAG_GLOSSY) | side;
     }
@@ -307,7 +313,7 @@ DSPBR_FN DspbrSample dspbr_sample(DspbrBsdf b, vec3 v_in, vec3 u) {
 
 // Emitted radiance L_e(v) = rho_e (1 - c F_c(v.n_c)) for v above the core's surface, times the
 // cut-out opacity (spec "Emission"; cd/m^2).
-DSPBR_FN vec3 dspbr_emission(DspbrBsdf b, vec3 v_in) {
+DSPBR_FN vec3 dspbr_emission(DSPBR_IN(DspbrBsdf) b, vec3 v_in) {
   if (DSPBR_HAS_EMISSION == 0 || !(dspbr_max3(b.rho_e) > 0.0f)) return dspbr_splat(0.0f);
   vec3 vc = dspbr_to_local(b.core, dspbr_to_local(b.frame, v_in));
   if (!(vc.z > 0.0f)) return dspbr_splat(0.0f);

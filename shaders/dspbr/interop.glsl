@@ -3,6 +3,7 @@
 // that differ between C++, GLSL and HLSL.
 #define DSPBR_FN
 #define DSPBR_CONST const
+#define DSPBR_IN(T) T
 #define DSPBR_OUT(T) out T
 #define DSPBR_INOUT(T) inout T
 #define dspbr_atan2(y, x) atan(y, x)

@@ -5,6 +5,7 @@
 #define mix lerp
 #define DSPBR_FN
 #define DSPBR_CONST static const
+#define DSPBR_IN(T) T
 #define DSPBR_OUT(T) out T
 #define DSPBR_INOUT(T) inout T
 #define dspbr_atan2(y, x) atan2(y, x)

@@ -62,9 +62,12 @@ inline bool isinf(float x) { return std::isinf(x); }
 }  // namespace dspbr_shader
 
 // The common subset's keywords (shaders/README.md): functions are inline, constants static,
-// out / inout parameters references, atan2 under one name.
+// large read-only parameters const references (a path tracer's compiler does not always inline,
+// and a DspbrBsdf copied per call cost more than the tables it reads), out / inout parameters
+// references, atan2 under one name.
 #define DSPBR_FN inline
 #define DSPBR_CONST static const
+#define DSPBR_IN(T) const T&
 #define DSPBR_OUT(T) T&
 #define DSPBR_INOUT(T) T&
 #define dspbr_atan2(y, x) std::atan2(y, x)

@@ -9,10 +9,10 @@
 // The film's R over the base IOR at a cosine on v's side: through the base from inside a volume
 // (a lossless stack reflects equally from both sides at corresponding angles; 1 under total
 // internal reflection).
-DSPBR_FN vec3 dspbr_film(DspbrBsdf b, float c, float eta_base) {
+DSPBR_FN vec3 dspbr_film(DSPBR_IN(DspbrBsdf) b, float c, float eta_base) {
   return dspbr_thin_film_reflectance(c, eta_base, b.film_thickness, b.film_ior);
 }
-DSPBR_FN vec3 dspbr_film_side(DspbrBsdf b, float c, float eta_i, float eta_o) {
+DSPBR_FN vec3 dspbr_film_side(DSPBR_IN(DspbrBsdf) b, float c, float eta_i, float eta_o) {
   if (eta_i <= eta_o) return dspbr_film(b, c, b.eta);
   float s2 = dspbr_sin2_transmitted(c, eta_i, eta_o);
   if (s2 >= 1.0f) return dspbr_splat(1.0f);
@@ -21,7 +21,7 @@ DSPBR_FN vec3 dspbr_film_side(DspbrBsdf b, float c, float eta_i, float eta_o) {
 // M_r's factor. Thin-walled: F(rho_s,r,0, rho_s,r,90); volumetric: m F(rho, 1) + (1-m)(1-t) s
 // F(F_0 rho_s, 1) + (1-m) t s F_d(F_0 rho_s, 1); with a film of weight i, (1-i) that + i [m R(eta_rho)
 // + (1-m)(1-t) R(eta) + (1-m) t R(eta, seen from v's side)] (docs/bsdf.md).
-DSPBR_FN vec3 dspbr_core_reflection_factor(DspbrBsdf b, float c, float eta_i, float eta_o) {
+DSPBR_FN vec3 dspbr_core_reflection_factor(DSPBR_IN(DspbrBsdf) b, float c, float eta_i, float eta_o) {
   vec3 one = dspbr_splat(1.0f);
   vec3 f = dspbr_splat(0.0f);
   if (b.thin_walled) {
@@ -44,7 +44,7 @@ DSPBR_FN vec3 dspbr_core_reflection_factor(DspbrBsdf b, float c, float eta_i, fl
 }
 // M_t' of ThinCore: rho_t (1 - s F(F_0 rho_s, 1)); M_t of VolumetricCore: rho_t (1 - s F_d(F_0 rho_s,
 // 1)); with a film (1-i) that + i rho_t (1 - R).
-DSPBR_FN vec3 dspbr_core_transmission_factor(DspbrBsdf b, float c, float eta_i, float eta_o) {
+DSPBR_FN vec3 dspbr_core_transmission_factor(DSPBR_IN(DspbrBsdf) b, float c, float eta_i, float eta_o) {
   vec3 one = dspbr_splat(1.0f);
   vec3 f = b.thin_walled ? dspbr_schlick(c, b.f0_diel, one) : dspbr_schlick_d(c, b.f0_diel, one, eta_i, eta_o);
   vec3 t = b.rho_t * (one - f * b.specular);
@@ -55,34 +55,56 @@ DSPBR_FN vec3 dspbr_core_transmission_factor(DspbrBsdf b, float c, float eta_i, 
   return t;
 }
 // The factor of a lobe built on reflection (core reflection, thin transmission, clearcoat).
-DSPBR_FN vec3 dspbr_lobe_factor(DspbrBsdf b, int k, float c, float eta_i, float eta_o) {
+DSPBR_FN vec3 dspbr_lobe_factor(DSPBR_IN(DspbrBsdf) b, int k, float c, float eta_i, float eta_o) {
   if (k == DSPBR_LOBE_CLEARCOAT) return dspbr_splat(b.clearcoat * dspbr_clearcoat_fresnel(c));
   if (k == DSPBR_LOBE_TRANSMISSION) return dspbr_core_transmission_factor(b, c, eta_i, eta_o);
   return dspbr_core_reflection_factor(b, c, eta_i, eta_o);
 }
-DSPBR_FN DspbrGgx dspbr_lobe_ggx(DspbrBsdf b, int k) { return k == DSPBR_LOBE_CLEARCOAT ? b.coat_ggx : b.ggx; }
+DSPBR_FN DspbrGgx dspbr_lobe_ggx(DSPBR_IN(DspbrBsdf) b, int k) { return k == DSPBR_LOBE_CLEARCOAT ? b.coat_ggx : b.ggx; }
 
-// ---- Table reads ----
-// 1 - E_m(|cos|; r_uv) and 1 - E(|cos|; r_uv, f0_max), clamped to [0, 1].
-DSPBR_FN float dspbr_missing_m(DspbrBsdf b, float c) { return clamp(1.0f - dspbr_ggx_E(abs(c), b.r_uv), 0.0f, 1.0f); }
-DSPBR_FN float dspbr_missing_base(DspbrBsdf b, float c) {
-  return clamp(1.0f - dspbr_base_E(abs(c), b.r_uv, b.f0_max), 0.0f, 1.0f);
-}
-// E_b(|cos|; alpha_b) of the sheen model, clamped to [0, 1].
-DSPBR_FN float dspbr_sheen_albedo(DspbrBsdf b, float c) {
-  float e = b.sheen_model == DSPBR_SHEEN_ASH ? dspbr_sheen_ash_E(abs(c), b.alpha_b) : dspbr_sheen_E(abs(c), b.alpha_b);
-  return clamp(e, 0.0f, 1.0f);
+// ---- Table reads: each table once per cosine ----
+// The tables' values at one cosine c of the core frame, read once per direction and shared by the
+// lobes and the layer factors: 1 - E_m(|c|; r_uv) and 1 - E(|c|; r_uv, f0_max), both clamped to
+// [0, 1], from one E_m and one beta read (E = f0 E_m + (1 - f0) beta E_m + F_ms(f0, 1; E_m,avg)
+// (1 - E_m), spec "Energy Preservation", F_ms from prepare), and E_b(|c|; alpha_b) of the sheen
+// model clamped to [0, 1]. A value no present lobe reads is 0 and costs no fetch.
+struct DspbrAlbedos {
+  float missing_m;
+  float missing_base;
+  float sheen;
+};
+DSPBR_FN DspbrAlbedos dspbr_albedos(DSPBR_IN(DspbrBsdf) b, float c) {
+  DspbrAlbedos a;
+  a.missing_m = 0.0f;
+  a.missing_base = 0.0f;
+  a.sheen = 0.0f;
+  float mu = abs(c);
+  bool diffuse = DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && dspbr_has_lobe(b, DSPBR_LOBE_DIFFUSE);
+  if (diffuse || dspbr_has_lobe(b, DSPBR_LOBE_MULTISCATTER)) {
+    float em = dspbr_ggx_E(mu, b.r_uv);
+    a.missing_m = clamp(1.0f - em, 0.0f, 1.0f);
+    if (diffuse) {
+      float f0 = clamp(b.f0_max, 0.0f, 1.0f);
+      float e = f0 * em + (1.0f - f0) * (dspbr_ggx_beta(mu, b.r_uv) * em) + b.fms_base * (1.0f - em);
+      a.missing_base = clamp(1.0f - e, 0.0f, 1.0f);
+    }
+  }
+  if (DSPBR_HAS_SHEEN != 0 && dspbr_has_lobe(b, DSPBR_LOBE_SHEEN)) {
+    float e = b.sheen_model == DSPBR_SHEEN_ASH ? dspbr_sheen_ash_E(mu, b.alpha_b) : dspbr_sheen_E(mu, b.alpha_b);
+    a.sheen = clamp(e, 0.0f, 1.0f);
+  }
+  return a;
 }
 
 // ---- Microfacet reflection (core, clearcoat) and thin transmission (the reflection mirrored) ----
-DSPBR_FN vec3 dspbr_reflection_eval(DspbrBsdf b, int k, vec3 v, vec3 l, float eta_i, float eta_o) {
+DSPBR_FN vec3 dspbr_reflection_eval(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, float eta_i, float eta_o) {
   DspbrGgx g = dspbr_lobe_ggx(b, k);
   if (g.mirror || !(v.z > 0.0f) || !(l.z > 0.0f)) return dspbr_splat(0.0f);
   vec3 h = normalize(v + l);
   return dspbr_lobe_factor(b, k, dot(v, h), eta_i, eta_o) * dspbr_ggx_M_r(g, v, l, h);
 }
 // Selection weight of a lobe built on reflection: the factor at v.n and at v.n / 2.
-DSPBR_FN float dspbr_reflection_weight(DspbrBsdf b, int k, vec3 v, float eta_i, float eta_o) {
+DSPBR_FN float dspbr_reflection_weight(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, float eta_i, float eta_o) {
   if (!(v.z > 0.0f)) return 0.0f;
   return max(0.0f, 0.5f * (dspbr_mean(dspbr_lobe_factor(b, k, v.z, eta_i, eta_o)) +
                            dspbr_mean(dspbr_lobe_factor(b, k, 0.5f * v.z, eta_i, eta_o))));
@@ -108,7 +130,7 @@ DSPBR_FN bool dspbr_refraction_half(vec3 v, vec3 l, float eta_i, float eta_o, DS
   return h.z > 0.0f && dot(v, h) > 0.0f && dot(l, h) < 0.0f;
 }
 // M_t = |l.h| |v.h| / (|l.n| |v.n|) eta_o^2 D(h) G2 / (eta_i v.h + eta_o l.h)^2, times the factor at v.h.
-DSPBR_FN vec3 dspbr_volumetric_eval(DspbrBsdf b, vec3 v, vec3 l, float eta_i, float eta_o) {
+DSPBR_FN vec3 dspbr_volumetric_eval(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, float eta_i, float eta_o) {
   if (dspbr_is_delta_lobe(b, DSPBR_LOBE_TRANSMISSION) || !(v.z > 0.0f) || !(l.z < 0.0f)) return dspbr_splat(0.0f);
   vec3 h;
   float denom;
@@ -119,7 +141,7 @@ DSPBR_FN vec3 dspbr_volumetric_eval(DspbrBsdf b, vec3 v, vec3 l, float eta_i, fl
   return dspbr_core_transmission_factor(b, vh, eta_i, eta_o) * mt;
 }
 // D_v(h_t) times |dh/dl| = eta_o^2 |l.h| / (eta_i v.h + eta_o l.h)^2 (Walter 2007 eq. 17).
-DSPBR_FN float dspbr_volumetric_pdf(DspbrBsdf b, vec3 v, vec3 l, float eta_i, float eta_o) {
+DSPBR_FN float dspbr_volumetric_pdf(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, float eta_i, float eta_o) {
   if (dspbr_is_delta_lobe(b, DSPBR_LOBE_TRANSMISSION) || !(v.z > 0.0f)) return 0.0f;
   vec3 h;
   float denom;
@@ -127,7 +149,7 @@ DSPBR_FN float dspbr_volumetric_pdf(DspbrBsdf b, vec3 v, vec3 l, float eta_i, fl
   float lh = dot(l, h);
   return dspbr_ggx_D_visible(b.ggx, v, h) * eta_o * eta_o * abs(lh) / (denom * denom);
 }
-DSPBR_FN float dspbr_volumetric_weight(DspbrBsdf b, vec3 v, float eta_i, float eta_o) {
+DSPBR_FN float dspbr_volumetric_weight(DSPBR_IN(DspbrBsdf) b, vec3 v, float eta_i, float eta_o) {
   if (!(v.z > 0.0f)) return 0.0f;
   // A smooth lobe under total internal reflection transmits nothing.
   float eta = eta_i / eta_o;
@@ -138,22 +160,22 @@ DSPBR_FN float dspbr_volumetric_weight(DspbrBsdf b, vec3 v, float eta_i, float e
 }
 
 // ---- Multiple scattering M_r,ms F_ms (spec eq. multiscatter; Kulla & Conty 2017) ----
-DSPBR_FN vec3 dspbr_multiscatter_eval(DspbrBsdf b, vec3 v, vec3 l) {
+DSPBR_FN vec3 dspbr_multiscatter_eval(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, DspbrAlbedos av, DspbrAlbedos al) {
   if (!(v.z > 0.0f) || !(l.z > 0.0f) || b.ms_inv_norm == 0.0f) return dspbr_splat(0.0f);
-  return b.f_ms * (dspbr_missing_m(b, v.z) * dspbr_missing_m(b, l.z) * b.ms_inv_norm);
+  return b.f_ms * (av.missing_m * al.missing_m * b.ms_inv_norm);
 }
-DSPBR_FN float dspbr_multiscatter_weight(DspbrBsdf b, vec3 v) {
+DSPBR_FN float dspbr_multiscatter_weight(DSPBR_IN(DspbrBsdf) b, vec3 v, DspbrAlbedos av) {
   if (!(v.z > 0.0f) || b.ms_inv_norm == 0.0f) return 0.0f;
-  return max(0.0f, dspbr_mean(b.f_ms)) * dspbr_missing_m(b, v.z);
+  return max(0.0f, dspbr_mean(b.f_ms)) * av.missing_m;
 }
 
 // ---- Diffuse base rho_d [B_u (1 - s) + s B_c] with translucency (spec eqs. diffuse, b_c) ----
-DSPBR_FN vec3 dspbr_diffuse_eval(DspbrBsdf b, vec3 v, vec3 l) {
+DSPBR_FN vec3 dspbr_diffuse_eval(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, DspbrAlbedos av, DspbrAlbedos al) {
   if (!(v.z > 0.0f) || l.z == 0.0f) return dspbr_splat(0.0f);
   float t = l.z > 0.0f ? 1.0f - b.translucency : b.translucency;  // T(v, l; l)
   if (t == 0.0f) return dspbr_splat(0.0f);
   float b_u = t * dspbr_inv_pi;
-  float b_c = dspbr_missing_base(b, v.z) * dspbr_missing_base(b, l.z) * b.diffuse_inv_norm * t;
+  float b_c = av.missing_base * al.missing_base * b.diffuse_inv_norm * t;
   vec3 base = dspbr_splat((1.0f - b.film_weight) * (b_u * (1.0f - b.specular) + b.specular * b_c));
   if (DSPBR_HAS_THIN_FILM != 0 && b.film_weight > 0.0f) {
     // ThinFilmOver*: + i B_u (1 - max(R(v.n), R(l.n))).
@@ -162,61 +184,60 @@ DSPBR_FN vec3 dspbr_diffuse_eval(DspbrBsdf b, vec3 v, vec3 l) {
   }
   return b.rho_d * base;
 }
-DSPBR_FN float dspbr_diffuse_pdf(DspbrBsdf b, vec3 v, vec3 l) {
+DSPBR_FN float dspbr_diffuse_pdf(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l) {
   if (!(v.z > 0.0f)) return 0.0f;
   return (1.0f - b.translucency) * dspbr_cosine_hemisphere_pdf(l) + b.translucency * dspbr_cosine_hemisphere_pdf(-l);
 }
-DSPBR_FN float dspbr_diffuse_weight(DspbrBsdf b, vec3 v) {
+DSPBR_FN float dspbr_diffuse_weight(DSPBR_IN(DspbrBsdf) b, vec3 v, DspbrAlbedos av) {
   if (!(v.z > 0.0f)) return 0.0f;
   float s = b.specular;
-  float w = (1.0f - b.film_weight) * ((1.0f - s) + s * dspbr_missing_base(b, v.z) * (b.diffuse_inv_norm > 0.0f ? 1.0f : 0.0f));
+  float w = (1.0f - b.film_weight) * ((1.0f - s) + s * av.missing_base * (b.diffuse_inv_norm > 0.0f ? 1.0f : 0.0f));
   if (DSPBR_HAS_THIN_FILM != 0 && b.film_weight > 0.0f) w += b.film_weight * (1.0f - dspbr_mean(dspbr_film(b, v.z, b.eta)));
   return max(0.0f, dspbr_mean(b.rho_d) * w);
 }
 
 // ---- Sheen M_b rho_b (spec "Sheen"), sampled uniformly over the hemisphere ----
-DSPBR_FN vec3 dspbr_sheen_eval(DspbrBsdf b, vec3 v, vec3 l) {
+DSPBR_FN vec3 dspbr_sheen_eval(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l) {
   if (!(v.z > 0.0f) || !(l.z > 0.0f)) return dspbr_splat(0.0f);
   float mb = b.sheen_model == DSPBR_SHEEN_ASH ? dspbr_sheen_brdf_ash(v, l, b.alpha_b)
                                               : dspbr_sheen_brdf(v, l, b.alpha_b, b.sheen_lambda);
   return b.sheen_color * mb;
 }
-DSPBR_FN float dspbr_sheen_weight(DspbrBsdf b, vec3 v) {
+DSPBR_FN float dspbr_sheen_weight(DSPBR_IN(DspbrBsdf) b, vec3 v, DspbrAlbedos av) {
   if (!(v.z > 0.0f)) return 0.0f;
-  return max(0.0f, dspbr_mean(b.sheen_color)) * max(dspbr_sheen_albedo(b, v.z), 1e-3f);
+  return max(0.0f, dspbr_mean(b.sheen_color)) * max(av.sheen, 1e-3f);
 }
 // ShinyCore's factor on the layers below: min(1 - rho_hat E_b(v.n), 1 - rho_hat E_b(l.n)).
-DSPBR_FN float dspbr_sheen_layer(DspbrBsdf b, float cos_v, float cos_l) {
+DSPBR_FN float dspbr_sheen_layer(DSPBR_IN(DspbrBsdf) b, DspbrAlbedos av, DspbrAlbedos al) {
   float rho_hat = dspbr_max3(b.sheen_color);
-  return clamp(min(1.0f - rho_hat * dspbr_sheen_albedo(b, cos_v), 1.0f - rho_hat * dspbr_sheen_albedo(b, cos_l)), 0.0f,
-               1.0f);
+  return clamp(min(1.0f - rho_hat * av.sheen, 1.0f - rho_hat * al.sheen), 0.0f, 1.0f);
 }
 
 // ---- The flake c_f B_f (spec "Flake BSDF", "Flip-Flop Effect"): a cone around reflect(v, n_f) ----
 // B_f = 1 / Omega_cone inside the cone, 0 outside, for a flake facing v; 0 for a mirror flake.
-DSPBR_FN float dspbr_flake_cone(DspbrBsdf b, vec3 v, vec3 l) {
+DSPBR_FN float dspbr_flake_cone(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l) {
   if (dspbr_is_delta_lobe(b, DSPBR_LOBE_FLAKE) || !(dot(v, b.flake_normal) > 0.0f)) return 0.0f;
   vec3 r = dspbr_reflect(v, b.flake_normal);
   return dot(l, r) > 1.0f - b.flake_one_minus_cos ? 1.0f / (2.0f * dspbr_pi * b.flake_one_minus_cos) : 0.0f;
 }
-DSPBR_FN vec3 dspbr_flake_eval(DspbrBsdf b, vec3 v, vec3 l) {
+DSPBR_FN vec3 dspbr_flake_eval(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l) {
   if (!(v.z > 0.0f) || !(l.z > 0.0f)) return dspbr_splat(0.0f);
   float bf = dspbr_flake_cone(b, v, l);
   if (bf == 0.0f) return dspbr_splat(0.0f);
   return dspbr_flake_tint(v, l, b.flake_color, b.flip_flop, b.flip_flop_color) * bf;
 }
-DSPBR_FN float dspbr_flake_pdf(DspbrBsdf b, vec3 v, vec3 l) {
+DSPBR_FN float dspbr_flake_pdf(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l) {
   if (!(v.z > 0.0f) || !(l.z > 0.0f)) return 0.0f;
   return dspbr_flake_cone(b, v, l);
 }
-DSPBR_FN float dspbr_flake_weight(DspbrBsdf b, vec3 v) {
+DSPBR_FN float dspbr_flake_weight(DSPBR_IN(DspbrBsdf) b, vec3 v) {
   if (!(v.z > 0.0f) || !(dot(v, b.flake_normal) > 0.0f)) return 0.0f;
   vec3 r = dspbr_reflect(v, b.flake_normal);
   return max(0.0f, dspbr_mean(dspbr_flake_tint(v, r, b.flake_color, b.flip_flop, b.flip_flop_color))) * max(r.z, 0.0f);
 }
 // A direction uniform in the cone (1 - cos = u1 (1 - cos theta_cone)), or the mirror direction of a
 // mirror flake with its reflectance lw = c_f l.n (the cone's limit).
-DSPBR_FN bool dspbr_flake_sample(DspbrBsdf b, vec3 v, float u1, float u2, DSPBR_OUT(vec3) l, DSPBR_OUT(vec3) lw) {
+DSPBR_FN bool dspbr_flake_sample(DSPBR_IN(DspbrBsdf) b, vec3 v, float u1, float u2, DSPBR_OUT(vec3) l, DSPBR_OUT(vec3) lw) {
   l = vec3(0.0f, 0.0f, 1.0f);
   lw = dspbr_splat(0.0f);
   if (!(v.z > 0.0f) || !(dot(v, b.flake_normal) > 0.0f)) return false;

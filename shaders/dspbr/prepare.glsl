@@ -82,6 +82,7 @@ struct DspbrBsdf {
   float r_uv;     // sqrt(r_u r_v): the tables' roughness
   float f0_max;   // max(F_0 rho_s): the coordinate of E(mu; r, f0)
   vec3 f_ms;      // F_ms(rho_s,r,0, rho_s,r,90)
+  float fms_base; // F_ms(f0_max, 1; E_m,avg): E(mu; r, f0_max)'s multiple-scattering term
   float ms_inv_norm;       // 1 / (pi (1 - E_m,avg)), 0 in the mirror limit
   float diffuse_inv_norm;  // 1 / (pi (1 - E_avg(r, f0_max))), 0 when nothing is left
   vec3 sheen_color;
@@ -104,11 +105,11 @@ struct DspbrBsdf {
   vec3 flip_flop_color;
 };
 
-DSPBR_FN bool dspbr_has_lobe(DspbrBsdf b, int k) { return ((b.lobes >> uint(k)) & 1u) != 0u; }
-DSPBR_FN bool dspbr_is_delta_lobe(DspbrBsdf b, int k) { return ((b.delta >> uint(k)) & 1u) != 0u; }
+DSPBR_FN bool dspbr_has_lobe(DSPBR_IN(DspbrBsdf) b, int k) { return ((b.lobes >> uint(k)) & 1u) != 0u; }
+DSPBR_FN bool dspbr_is_delta_lobe(DSPBR_IN(DspbrBsdf) b, int k) { return ((b.delta >> uint(k)) & 1u) != 0u; }
 
 // t = t' cos(beta) - (n x t') sin(beta), beta = 2 pi anisotropyRotation (spec "Tangent Space").
-DSPBR_FN DspbrFrame dspbr_core_frame(DspbrMaterial m) {
+DSPBR_FN DspbrFrame dspbr_core_frame(DSPBR_IN(DspbrMaterial) m) {
   vec3 n = dspbr_unit_normal(m.normal);
   DspbrFrame base = dspbr_frame_from_normal_tangent(n, vec3(1.0f, 0.0f, 0.0f));
   float beta = 2.0f * dspbr_pi * m.anisotropyRotation;
@@ -121,7 +122,7 @@ DSPBR_FN DspbrFrame dspbr_core_frame(DspbrMaterial m) {
 
 // rho_e of spec "Emission": L_vc / pi (emittance, lx) or L_vc / (pi A) (power, lm), L_vc the colour
 // times the value, or normalised by the colour's luminance (linear sRGB, D65).
-DSPBR_FN vec3 dspbr_emission_rho_e(DspbrMaterial m, DspbrOptions o) {
+DSPBR_FN vec3 dspbr_emission_rho_e(DSPBR_IN(DspbrMaterial) m, DspbrOptions o) {
   if (!(m.emissionValue > 0.0f)) return dspbr_splat(0.0f);
   vec3 l_vc = m.emissionColor * m.emissionValue;
   if (m.emissionEnergyNormalization) {
@@ -133,7 +134,7 @@ DSPBR_FN vec3 dspbr_emission_rho_e(DspbrMaterial m, DspbrOptions o) {
   return l_vc * (power ? dspbr_inv_pi / area : dspbr_inv_pi);
 }
 
-DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions o) {
+DSPBR_FN DspbrBsdf dspbr_prepare(DSPBR_IN(DspbrMaterial) m, DspbrFrame frame, DSPBR_IN(DspbrOptions) o) {
   DspbrBsdf b;
   b.frame = frame;
   b.core = dspbr_core_frame(m);
@@ -167,7 +168,7 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
   b.film_weight = DSPBR_HAS_THIN_FILM != 0 ? m.thinFilm : 0.0f;
   b.film_thickness = m.thinFilmThickness;
   b.film_ior = m.thinFilmIor;
-  b.film_eta_rho = dspbr_thin_film_metal_eta(m.albedo);
+  b.film_eta_rho = b.film_weight > 0.0f ? dspbr_thin_film_metal_eta(m.albedo) : 0.0f;
   b.lobes = 0u;
   b.delta = 0u;
   // GlitteryCore: an opaque flake at the shading point replaces the core and the sheen.
@@ -192,8 +193,9 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
       if (mirror) b.delta |= 1u << uint(DSPBR_LOBE_CORE_REFLECTION);
     }
     // M_r,ms F_ms (spec eq. multiscatter); none for a mirror (E_m = 1).
-    b.f_ms = dspbr_fresnel_ms3(b.rho_sr0, b.rho_sr90, dspbr_clamp_nan(dspbr_ggx_E_avg(b.r_uv), 0.0f, 1.0f));
     float missing_m = dspbr_ggx_E_avg_missing(b.r_uv);
+    float e_avg = 1.0f - missing_m;  // dspbr_ggx_E_avg
+    b.f_ms = dspbr_fresnel_ms3(b.rho_sr0, b.rho_sr90, dspbr_clamp_nan(e_avg, 0.0f, 1.0f));
     b.ms_inv_norm = missing_m > dspbr_min_missing_energy ? 1.0f / (dspbr_pi * missing_m) : 0.0f;
     if (dspbr_max3(b.f_ms) > 0.0f && !mirror) b.lobes |= 1u << uint(DSPBR_LOBE_MULTISCATTER);
     if (b.w_transp > 0.0f && dspbr_max3(b.rho_t) > 0.0f) {
@@ -201,12 +203,14 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DspbrMaterial m, DspbrFrame frame, DspbrOptions
       bool matched = volumetric && abs(b.eta - 1.0f) < dspbr_index_matched;
       if (mirror || matched) b.delta |= 1u << uint(DSPBR_LOBE_TRANSMISSION);
     }
-    // B_c's normalisation (reads GGX_B_avg: only with the opaque dielectric compiled in).
-    float missing_b = DSPBR_HAS_OPAQUE_DIELECTRIC != 0 ? 1.0f - dspbr_base_E_avg(b.r_uv, b.f0_max) : 0.0f;
+    // B_c's normalisation (reads GGX_B_avg: only for an opaque dielectric part, compiled in).
+    float missing_b = DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && b.w_opaque > 0.0f ? 1.0f - dspbr_base_E_avg(b.r_uv, b.f0_max) : 0.0f;
+    b.fms_base = dspbr_fresnel_ms(b.f0_max, 1.0f, e_avg);
     b.diffuse_inv_norm = missing_b > dspbr_min_missing_energy ? 1.0f / (dspbr_pi * missing_b) : 0.0f;
     if (b.w_opaque > 0.0f && dspbr_max3(b.rho_d) > 0.0f) b.lobes |= 1u << uint(DSPBR_LOBE_DIFFUSE);
   } else {
     b.f_ms = dspbr_splat(0.0f);
+    b.fms_base = 0.0f;
     b.ms_inv_norm = 0.0f;
     b.diffuse_inv_norm = 0.0f;
   }

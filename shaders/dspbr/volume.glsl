@@ -35,7 +35,7 @@ DSPBR_FN float dspbr_mul_inf0(float x, float y) {
   return x >= dspbr_float_max ? dspbr_float_max : x * y;
 }
 
-DSPBR_FN DspbrVolume dspbr_volume(DspbrMaterial m) {
+DSPBR_FN DspbrVolume dspbr_volume(DSPBR_IN(DspbrMaterial) m) {
   DspbrVolume v;
   v.sigma_t = vec3(dspbr_volume_sigma_t(m.attenuationColor.x, m.attenuationDistance),
                    dspbr_volume_sigma_t(m.attenuationColor.y, m.attenuationDistance),

@@ -12,6 +12,7 @@
 //   float dspbr_ggx_E(float cos_theta, float roughness)            E_m
 //   float dspbr_ggx_E_avg(float roughness)                         E_m,avg
 //   float dspbr_ggx_E_avg_missing(float roughness)                 1 - E_m,avg (no cancellation)
+//   float dspbr_ggx_beta(float cos_theta, float roughness)         beta = B / E_m (Schlick moment)
 //   float dspbr_base_E(float cos_theta, float roughness, float f0) E (Base_E)
 //   float dspbr_base_E_avg(float roughness, float f0)              E_avg (Base_E_avg)
 //   float dspbr_sheen_E(float cos_theta, float alpha_b)            E_b, main sheen
