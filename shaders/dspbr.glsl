@@ -16,6 +16,7 @@
 #include "dspbr/features.glsl"
 #include "dspbr/math.glsl"
 #include "dspbr/material.glsl"
+#include "dspbr/gltf.glsl"
 #include "dspbr/ggx.glsl"
 #include "dspbr/sheen.glsl"
 #include "dspbr/sampling.glsl"

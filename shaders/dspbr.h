@@ -11,6 +11,7 @@ namespace dspbr_shader {
 #include "dspbr/features.glsl"
 #include "dspbr/math.glsl"
 #include "dspbr/material.glsl"
+#include "dspbr/gltf.glsl"
 #include "dspbr/ggx.glsl"
 #include "dspbr/sheen.glsl"
 #include "dspbr/sampling.glsl"

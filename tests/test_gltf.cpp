@@ -9,6 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/gltf/gltf_file.h"
 #include "dspbr/gltf/gltf_material.h"
 #include "dspbr/params/material_params.h"
@@ -207,8 +208,8 @@ TEST(Gltf, HandMadeMaterialsMapAllExtensions) {
   EXPECT_DOUBLE_EQ(all.material.thinFilmThickness * 1000.0,  // microns vs nm
                    ae["KHR_materials_iridescence"]["iridescenceThicknessMaximum"].get<double>());
   EXPECT_EQ(all.material.anisotropy, ae["KHR_materials_anisotropy"]["anisotropyStrength"].get<double>());
-  // -pi/2 radians = -1/4 turn = 3/4 turn.
-  EXPECT_NEAR(all.material.anisotropyRotation, 0.75, 1e-15);
+  // -pi/2 radians counter-clockwise = 1/4 turn clockwise, DSPBR's sense (docs/gltf_mapping.md).
+  EXPECT_NEAR(all.material.anisotropyRotation, 0.25, 1e-15);
   EXPECT_EQ(all.material.translucency, ae["KHR_materials_diffuse_transmission"]["diffuseTransmissionFactor"].get<double>());
   expect_rgb(all.material.translucencyColor, ae["KHR_materials_diffuse_transmission"]["diffuseTransmissionColorFactor"], "tc");
   expect_rgb(all.material.sheenColor, ae["KHR_materials_sheen"]["sheenColorFactor"], "sheen");
@@ -292,4 +293,46 @@ TEST(Gltf, LfsPointerBufferIsAWarning) {
   doc["buffers"][0]["byteLength"] = 25;
   std::ofstream(dir + "lfs_short.gltf") << doc.dump();
   EXPECT_NE(error_of([&] { read_gltf(dir + "lfs_short.gltf"); }).find("less than the declared byteLength"), std::string::npos);
+}
+
+// KHR_materials_anisotropy turns the anisotropy direction counter-clockwise (tangent towards
+// bitangent). Turning a material by theta that way is the same as turning the viewer and the light
+// by -theta about the normal: f_theta(v, l) = f_0(R(-theta) v, R(-theta) l). The material turned
+// through 3DS_materials_anisotropy (DSPBR's own rotation) by the same direction agrees; the opposite
+// turn must not (the check's power).
+TEST(Gltf, KhrRotationTurnsCounterClockwise) {
+  const double theta = 0.6;
+  auto material_of = [](const Json& ext) {
+    Json doc = {{"asset", {{"version", "2.0"}}},
+                {"materials",
+                 {{{"name", "m"},
+                   {"pbrMetallicRoughness", {{"metallicFactor", 1.0}, {"roughnessFactor", 0.5}}},
+                   {"extensions", ext}}}}};
+    const std::string text = doc.dump();
+    const auto ms = map_materials(parse_gltf(std::vector<std::uint8_t>(text.begin(), text.end()), "m.gltf"));
+    return ms.at(0).material;
+  };
+  const Material khr = material_of(
+      {{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.8}, {"anisotropyRotation", theta}}}});
+  const Material ds = material_of({{"3DS_materials_anisotropy",
+                                    {{"anisotropyFactor", 0.8}, {"anisotropyRotationFactor", 1.0 - theta / (2 * M_PI)}}}});
+  const Material flat = material_of({{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.8}}}});
+  const MaterialBsdf f_khr(khr), f_ds(ds), f_flat(flat);
+  auto turn = [](const Vec3& w, double a) {
+    return Vec3{w.x * std::cos(a) - w.y * std::sin(a), w.x * std::sin(a) + w.y * std::cos(a), w.z};
+  };
+  auto dir = [](double th_deg, double ph_deg) {
+    const double th = th_deg * M_PI / 180, ph = ph_deg * M_PI / 180;
+    return Vec3{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
+  };
+  double worst_wrong = 0;
+  for (double ph : {0.0, 30.0, 75.0, 140.0}) {
+    const Vec3 v = dir(50, ph), l = dir(35, ph + 160);
+    const double expected = f_flat.eval(turn(v, -theta), turn(l, -theta)).g;
+    EXPECT_NEAR(f_khr.eval(v, l).g, expected, 1e-12 * expected);
+    EXPECT_NEAR(f_ds.eval(v, l).g, expected, 1e-9 * expected);
+    const double wrong = f_flat.eval(turn(v, theta), turn(l, theta)).g;
+    worst_wrong = std::max(worst_wrong, std::abs(wrong - expected) / expected);
+  }
+  EXPECT_GT(worst_wrong, 0.05);  // the clockwise reading would have failed
 }

@@ -64,6 +64,57 @@ dspbr_shader::DspbrMaterial to_shader_material(const dspbr::Material& m) {
   return s;
 }
 
+std::vector<std::pair<std::string, double>> material_fields(const dspbr_shader::DspbrMaterial& m) {
+  // Every field of DspbrMaterial (a field added to material.glsl changes the size and fails here).
+  // 60 floats and ints (4 bytes each), then two bools sharing 4 bytes with their padding.
+  static_assert(sizeof(dspbr_shader::DspbrMaterial) == 60 * 4 + 4, "material_fields: list every DspbrMaterial field");
+  std::vector<std::pair<std::string, double>> out;
+  auto v3 = [&](const char* name, const vec3& c) {
+    out.emplace_back(std::string(name) + ".x", double(c.x));
+    out.emplace_back(std::string(name) + ".y", double(c.y));
+    out.emplace_back(std::string(name) + ".z", double(c.z));
+  };
+  v3("albedo", m.albedo);
+  out.emplace_back("metallic", double(m.metallic));
+  out.emplace_back("roughness", double(m.roughness));
+  out.emplace_back("anisotropy", double(m.anisotropy));
+  out.emplace_back("anisotropyRotation", double(m.anisotropyRotation));
+  v3("normal", m.normal);
+  v3("displacement", m.displacement);
+  out.emplace_back("translucency", double(m.translucency));
+  v3("translucencyColor", m.translucencyColor);
+  out.emplace_back("transparency", double(m.transparency));
+  out.emplace_back("cutoutOpacity", double(m.cutoutOpacity));
+  out.emplace_back("specular", double(m.specular));
+  v3("specularTint", m.specularTint);
+  out.emplace_back("thinFilm", double(m.thinFilm));
+  out.emplace_back("thinFilmThickness", double(m.thinFilmThickness));
+  out.emplace_back("thinFilmIor", double(m.thinFilmIor));
+  v3("sheenColor", m.sheenColor);
+  out.emplace_back("sheenRoughness", double(m.sheenRoughness));
+  out.emplace_back("flakeCoverage", double(m.flakeCoverage));
+  v3("flakeColor", m.flakeColor);
+  out.emplace_back("flakeSize", double(m.flakeSize));
+  out.emplace_back("flakeRoughness", double(m.flakeRoughness));
+  out.emplace_back("flipFlop", double(m.flipFlop));
+  v3("flipFlopColor", m.flipFlopColor);
+  out.emplace_back("clearcoat", double(m.clearcoat));
+  out.emplace_back("clearcoatRoughness", double(m.clearcoatRoughness));
+  v3("clearcoatNormal", m.clearcoatNormal);
+  v3("emissionColor", m.emissionColor);
+  out.emplace_back("emissionValue", double(m.emissionValue));
+  out.emplace_back("emissionMode", double(m.emissionMode));
+  out.emplace_back("emissionEnergyNormalization", double(m.emissionEnergyNormalization));
+  out.emplace_back("thinWalled", double(m.thinWalled));
+  out.emplace_back("ior", double(m.ior));
+  out.emplace_back("abbeNumber", double(m.abbeNumber));
+  v3("attenuationColor", m.attenuationColor);
+  out.emplace_back("attenuationDistance", double(m.attenuationDistance));
+  v3("subsurfaceColor", m.subsurfaceColor);
+  out.emplace_back("subsurfaceAnisotropy", double(m.subsurfaceAnisotropy));
+  return out;
+}
+
 dspbr_shader::DspbrOptions to_shader_options(const dspbr::BsdfOptions& o) {
   dspbr_shader::DspbrOptions s = dspbr_shader::dspbr_default_options();
   s.sheen_model = o.sheen_model == dspbr::SheenModel::Ash ? dspbr_shader::DSPBR_SHEEN_ASH : dspbr_shader::DSPBR_SHEEN_MAIN;

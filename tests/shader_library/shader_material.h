@@ -18,6 +18,8 @@ namespace shader_test {
 
 dspbr_shader::DspbrMaterial to_shader_material(const dspbr::Material& m);
 dspbr_shader::DspbrOptions to_shader_options(const dspbr::BsdfOptions& o);
+// Every field of a DspbrMaterial by name (vec3 fields as name.x, .y, .z), for comparisons.
+std::vector<std::pair<std::string, double>> material_fields(const dspbr_shader::DspbrMaterial& m);
 
 // One vector's record for the device kernels: the material fields the BSDF reads, the options,
 // v and l (kRecordFloats floats). The kernels write kResultFloats floats per vector in mode 0

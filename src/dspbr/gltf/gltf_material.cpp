@@ -224,8 +224,9 @@ class Mapper {
     if (khr_aniso && !ds_aniso) {
       const std::string p = "KHR_materials_anisotropy.";
       m.anisotropy = number(*khr_aniso, "anisotropyStrength", 0.0, p);
-      // Radians, counter-clockwise from the tangent -> DSPBR's [0, 1] for [0, 360 deg).
-      const double turns = number(*khr_aniso, "anisotropyRotation", 0.0, p) / (2 * kPi);
+      // Radians, counter-clockwise from the tangent (towards the bitangent); DSPBR turns the tangent
+      // clockwise (t' cos b - (n x t') sin b, spec "Tangent Space"): -theta / 2 pi, in [0, 1).
+      const double turns = -number(*khr_aniso, "anisotropyRotation", 0.0, p) / (2 * kPi);
       m.anisotropyRotation = turns - std::floor(turns);
       texture(*khr_aniso, "anisotropyTexture", p, {"anisotropy"});
       texture(*khr_aniso, "anisotropyTexture", p, {"anisotropyRotation"}, false);
