@@ -88,3 +88,88 @@ DSPBR_FN DspbrMaterial dspbr_default_material() {
   m.subsurfaceAnisotropy = 0.0f;
   return m;
 }
+
+// The material as DSPBR_MATERIAL_FLOATS consecutive floats, in the struct's order (an enum as its
+// value, a boolean as 0 or 1): a renderer uploads materials in a float buffer with
+// DSPBR_MATERIAL_PACK(m, rec, k) on the host and reads one back in a shader with
+// DSPBR_MATERIAL_UNPACK(m, rec, k); rec is any indexable float array (a buffer member, a C
+// pointer), k the index of the first float (an unsigned expression).
+DSPBR_CONST uint DSPBR_MATERIAL_FLOATS = 62u;
+#define DSPBR_MATERIAL_UNPACK(m, rec, k) \
+  (m).albedo = vec3((rec)[(k) + 0u], (rec)[(k) + 1u], (rec)[(k) + 2u]); \
+  (m).metallic = (rec)[(k) + 3u]; \
+  (m).roughness = (rec)[(k) + 4u]; \
+  (m).anisotropy = (rec)[(k) + 5u]; \
+  (m).anisotropyRotation = (rec)[(k) + 6u]; \
+  (m).normal = vec3((rec)[(k) + 7u], (rec)[(k) + 8u], (rec)[(k) + 9u]); \
+  (m).displacement = vec3((rec)[(k) + 10u], (rec)[(k) + 11u], (rec)[(k) + 12u]); \
+  (m).translucency = (rec)[(k) + 13u]; \
+  (m).translucencyColor = vec3((rec)[(k) + 14u], (rec)[(k) + 15u], (rec)[(k) + 16u]); \
+  (m).transparency = (rec)[(k) + 17u]; \
+  (m).cutoutOpacity = (rec)[(k) + 18u]; \
+  (m).specular = (rec)[(k) + 19u]; \
+  (m).specularTint = vec3((rec)[(k) + 20u], (rec)[(k) + 21u], (rec)[(k) + 22u]); \
+  (m).thinFilm = (rec)[(k) + 23u]; \
+  (m).thinFilmThickness = (rec)[(k) + 24u]; \
+  (m).thinFilmIor = (rec)[(k) + 25u]; \
+  (m).sheenColor = vec3((rec)[(k) + 26u], (rec)[(k) + 27u], (rec)[(k) + 28u]); \
+  (m).sheenRoughness = (rec)[(k) + 29u]; \
+  (m).flakeCoverage = (rec)[(k) + 30u]; \
+  (m).flakeColor = vec3((rec)[(k) + 31u], (rec)[(k) + 32u], (rec)[(k) + 33u]); \
+  (m).flakeSize = (rec)[(k) + 34u]; \
+  (m).flakeRoughness = (rec)[(k) + 35u]; \
+  (m).flipFlop = (rec)[(k) + 36u]; \
+  (m).flipFlopColor = vec3((rec)[(k) + 37u], (rec)[(k) + 38u], (rec)[(k) + 39u]); \
+  (m).clearcoat = (rec)[(k) + 40u]; \
+  (m).clearcoatRoughness = (rec)[(k) + 41u]; \
+  (m).clearcoatNormal = vec3((rec)[(k) + 42u], (rec)[(k) + 43u], (rec)[(k) + 44u]); \
+  (m).emissionColor = vec3((rec)[(k) + 45u], (rec)[(k) + 46u], (rec)[(k) + 47u]); \
+  (m).emissionValue = (rec)[(k) + 48u]; \
+  (m).emissionMode = int((rec)[(k) + 49u]); \
+  (m).emissionEnergyNormalization = (rec)[(k) + 50u] > 0.5f; \
+  (m).thinWalled = (rec)[(k) + 51u] > 0.5f; \
+  (m).ior = (rec)[(k) + 52u]; \
+  (m).abbeNumber = (rec)[(k) + 53u]; \
+  (m).attenuationColor = vec3((rec)[(k) + 54u], (rec)[(k) + 55u], (rec)[(k) + 56u]); \
+  (m).attenuationDistance = (rec)[(k) + 57u]; \
+  (m).subsurfaceColor = vec3((rec)[(k) + 58u], (rec)[(k) + 59u], (rec)[(k) + 60u]); \
+  (m).subsurfaceAnisotropy = (rec)[(k) + 61u];
+#define DSPBR_MATERIAL_PACK(m, rec, k) \
+  (rec)[(k) + 0u] = (m).albedo.x; (rec)[(k) + 1u] = (m).albedo.y; (rec)[(k) + 2u] = (m).albedo.z; \
+  (rec)[(k) + 3u] = (m).metallic; \
+  (rec)[(k) + 4u] = (m).roughness; \
+  (rec)[(k) + 5u] = (m).anisotropy; \
+  (rec)[(k) + 6u] = (m).anisotropyRotation; \
+  (rec)[(k) + 7u] = (m).normal.x; (rec)[(k) + 8u] = (m).normal.y; (rec)[(k) + 9u] = (m).normal.z; \
+  (rec)[(k) + 10u] = (m).displacement.x; (rec)[(k) + 11u] = (m).displacement.y; (rec)[(k) + 12u] = (m).displacement.z; \
+  (rec)[(k) + 13u] = (m).translucency; \
+  (rec)[(k) + 14u] = (m).translucencyColor.x; (rec)[(k) + 15u] = (m).translucencyColor.y; (rec)[(k) + 16u] = (m).translucencyColor.z; \
+  (rec)[(k) + 17u] = (m).transparency; \
+  (rec)[(k) + 18u] = (m).cutoutOpacity; \
+  (rec)[(k) + 19u] = (m).specular; \
+  (rec)[(k) + 20u] = (m).specularTint.x; (rec)[(k) + 21u] = (m).specularTint.y; (rec)[(k) + 22u] = (m).specularTint.z; \
+  (rec)[(k) + 23u] = (m).thinFilm; \
+  (rec)[(k) + 24u] = (m).thinFilmThickness; \
+  (rec)[(k) + 25u] = (m).thinFilmIor; \
+  (rec)[(k) + 26u] = (m).sheenColor.x; (rec)[(k) + 27u] = (m).sheenColor.y; (rec)[(k) + 28u] = (m).sheenColor.z; \
+  (rec)[(k) + 29u] = (m).sheenRoughness; \
+  (rec)[(k) + 30u] = (m).flakeCoverage; \
+  (rec)[(k) + 31u] = (m).flakeColor.x; (rec)[(k) + 32u] = (m).flakeColor.y; (rec)[(k) + 33u] = (m).flakeColor.z; \
+  (rec)[(k) + 34u] = (m).flakeSize; \
+  (rec)[(k) + 35u] = (m).flakeRoughness; \
+  (rec)[(k) + 36u] = (m).flipFlop; \
+  (rec)[(k) + 37u] = (m).flipFlopColor.x; (rec)[(k) + 38u] = (m).flipFlopColor.y; (rec)[(k) + 39u] = (m).flipFlopColor.z; \
+  (rec)[(k) + 40u] = (m).clearcoat; \
+  (rec)[(k) + 41u] = (m).clearcoatRoughness; \
+  (rec)[(k) + 42u] = (m).clearcoatNormal.x; (rec)[(k) + 43u] = (m).clearcoatNormal.y; (rec)[(k) + 44u] = (m).clearcoatNormal.z; \
+  (rec)[(k) + 45u] = (m).emissionColor.x; (rec)[(k) + 46u] = (m).emissionColor.y; (rec)[(k) + 47u] = (m).emissionColor.z; \
+  (rec)[(k) + 48u] = (m).emissionValue; \
+  (rec)[(k) + 49u] = float((m).emissionMode); \
+  (rec)[(k) + 50u] = ((m).emissionEnergyNormalization ? 1.0f : 0.0f); \
+  (rec)[(k) + 51u] = ((m).thinWalled ? 1.0f : 0.0f); \
+  (rec)[(k) + 52u] = (m).ior; \
+  (rec)[(k) + 53u] = (m).abbeNumber; \
+  (rec)[(k) + 54u] = (m).attenuationColor.x; (rec)[(k) + 55u] = (m).attenuationColor.y; (rec)[(k) + 56u] = (m).attenuationColor.z; \
+  (rec)[(k) + 57u] = (m).attenuationDistance; \
+  (rec)[(k) + 58u] = (m).subsurfaceColor.x; (rec)[(k) + 59u] = (m).subsurfaceColor.y; (rec)[(k) + 60u] = (m).subsurfaceColor.z; \
+  (rec)[(k) + 61u] = (m).subsurfaceAnisotropy;

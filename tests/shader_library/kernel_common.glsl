@@ -1,6 +1,7 @@
 // The shader-library conformance kernel's body, common to its GLSL and HLSL entries
-// (conformance.comp, conformance.hlsl): vector i's record of kRecordFloats floats (the order of
-// shader_material.cpp's pack_record) from `rec`, and in `res`:
+// (conformance.comp, conformance.hlsl): vector i's record of DSPBR_TEST_RECORD_FLOATS floats
+// (shader_material.cpp's pack_record: the material as DSPBR_MATERIAL_PACK writes it, then the
+// options, v and l) from `rec`, and in `res`:
 //   mode 0  f cos, pdf, emission of vector i (10 floats: f cos, pdf, 3 unused, emission);
 //   mode 1  invocation i = a * DSPBR_TEST_ALBEDO_NODES + node: one cos-theta node of the albedo of
 //           vector a (3 floats), albedo.glsl;
@@ -12,51 +13,22 @@
 // lobes, and a workgroup in which some invocations ran the albedo and others did not returned
 // wrong pdfs for the others; one loop over phi per invocation does not.
 
+DSPBR_CONST int DSPBR_TEST_RECORD_FLOATS = 80;  // shader_material.h's kRecordFloats
 DSPBR_FN vec3 dspbr_test_vec3(uint k) { return vec3(rec[k], rec[k + 1u], rec[k + 2u]); }
 
 DSPBR_FN void dspbr_test_run(uint id, uint mode) {
   uint i = mode == 1u ? id / uint(DSPBR_TEST_ALBEDO_NODES) : (mode == 2u ? id / 8192u : id);
-  uint k = i * 64u;
-  DspbrMaterial m = dspbr_default_material();
-  m.albedo = dspbr_test_vec3(k); k += 3u;
-  m.metallic = rec[k]; k += 1u;
-  m.roughness = rec[k]; k += 1u;
-  m.anisotropy = rec[k]; k += 1u;
-  m.anisotropyRotation = rec[k]; k += 1u;
-  m.normal = dspbr_test_vec3(k); k += 3u;
-  m.translucency = rec[k]; k += 1u;
-  m.translucencyColor = dspbr_test_vec3(k); k += 3u;
-  m.transparency = rec[k]; k += 1u;
-  m.cutoutOpacity = rec[k]; k += 1u;
-  m.specular = rec[k]; k += 1u;
-  m.specularTint = dspbr_test_vec3(k); k += 3u;
-  m.sheenColor = dspbr_test_vec3(k); k += 3u;
-  m.sheenRoughness = rec[k]; k += 1u;
-  m.clearcoat = rec[k]; k += 1u;
-  m.clearcoatRoughness = rec[k]; k += 1u;
-  m.clearcoatNormal = dspbr_test_vec3(k); k += 3u;
-  m.emissionColor = dspbr_test_vec3(k); k += 3u;
-  m.emissionValue = rec[k]; k += 1u;
-  m.emissionMode = int(rec[k]); k += 1u;
-  m.emissionEnergyNormalization = rec[k] > 0.5f; k += 1u;
-  m.thinWalled = rec[k] > 0.5f; k += 1u;
-  m.ior = rec[k]; k += 1u;
+  uint k = i * uint(DSPBR_TEST_RECORD_FLOATS);
+  DspbrMaterial m;
+  DSPBR_MATERIAL_UNPACK(m, rec, k);
+  k += DSPBR_MATERIAL_FLOATS;
   DspbrOptions o = dspbr_default_options();
-  o.sheen_model = int(rec[k]); k += 1u;
-  o.object_area_m2 = rec[k]; k += 1u;
-  m.thinFilm = rec[k]; k += 1u;
-  m.thinFilmThickness = rec[k]; k += 1u;
-  m.thinFilmIor = rec[k]; k += 1u;
-  m.flakeCoverage = rec[k]; k += 1u;
-  m.flakeColor = dspbr_test_vec3(k); k += 3u;
-  m.flakeSize = rec[k]; k += 1u;
-  m.flakeRoughness = rec[k]; k += 1u;
-  m.flipFlop = rec[k]; k += 1u;
-  m.flipFlopColor = dspbr_test_vec3(k); k += 3u;
-  o.position = dspbr_test_vec3(k); k += 3u;
-  o.object_normal = dspbr_test_vec3(k); k += 3u;
-  vec3 v = dspbr_test_vec3(k); k += 3u;
-  vec3 l = dspbr_test_vec3(k);
+  o.sheen_model = int(rec[k]);
+  o.object_area_m2 = rec[k + 1u];
+  o.position = dspbr_test_vec3(k + 2u);
+  o.object_normal = dspbr_test_vec3(k + 5u);
+  vec3 v = dspbr_test_vec3(k + 8u);
+  vec3 l = dspbr_test_vec3(k + 11u);
   DspbrBsdf b = dspbr_prepare(m, dspbr_identity_frame(), o);
 #ifndef DSPBR_TEST_NO_ALBEDO  // (specializations.sh: mode 0 alone, a smaller kernel)
   if (mode == 1u) {

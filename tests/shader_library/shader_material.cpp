@@ -128,19 +128,12 @@ dspbr_shader::DspbrOptions to_shader_options(const dspbr::BsdfOptions& o) {
 void pack_record(const dspbr::conformance::Vector& x, float* out) {
   const dspbr_shader::DspbrMaterial m = to_shader_material(dspbr::conformance::vector_material(x));
   const dspbr_shader::DspbrOptions o = to_shader_options(dspbr::conformance::vector_options(x));
-  int i = 0;
+  // The order of kernel_common.glsl's dspbr_test_run: the material, the options, v, l.
+  DSPBR_MATERIAL_PACK(m, out, 0u);
+  int i = int(dspbr_shader::DSPBR_MATERIAL_FLOATS);
   auto put = [&](float f) { out[i++] = f; };
   auto put3 = [&](vec3 c) { put(c.x), put(c.y), put(c.z); };
-  // The order of conformance.comp's dspbr_unpack (tests/shader_library/kernel_common.glsl).
-  put3(m.albedo), put(m.metallic), put(m.roughness), put(m.anisotropy), put(m.anisotropyRotation);
-  put3(m.normal), put(m.translucency), put3(m.translucencyColor), put(m.transparency), put(m.cutoutOpacity);
-  put(m.specular), put3(m.specularTint), put3(m.sheenColor), put(m.sheenRoughness), put(m.clearcoat);
-  put(m.clearcoatRoughness), put3(m.clearcoatNormal), put3(m.emissionColor), put(m.emissionValue);
-  put(float(m.emissionMode)), put(m.emissionEnergyNormalization ? 1.0f : 0.0f), put(m.thinWalled ? 1.0f : 0.0f);
-  put(m.ior), put(float(o.sheen_model)), put(o.object_area_m2);
-  put(m.thinFilm), put(m.thinFilmThickness), put(m.thinFilmIor);
-  put(m.flakeCoverage), put3(m.flakeColor), put(m.flakeSize), put(m.flakeRoughness), put(m.flipFlop);
-  put3(m.flipFlopColor), put3(o.position), put3(o.object_normal);
+  put(float(o.sheen_model)), put(o.object_area_m2), put3(o.position), put3(o.object_normal);
   put3(vec3(float(x.v.x), float(x.v.y), float(x.v.z))), put3(vec3(float(x.l.x), float(x.l.y), float(x.l.z)));
   while (i < kRecordFloats) put(0.0f);
 }

@@ -21,10 +21,10 @@ dspbr_shader::DspbrOptions to_shader_options(const dspbr::BsdfOptions& o);
 // Every field of a DspbrMaterial by name (vec3 fields as name.x, .y, .z), for comparisons.
 std::vector<std::pair<std::string, double>> material_fields(const dspbr_shader::DspbrMaterial& m);
 
-// One vector's record for the device kernels: the material fields the BSDF reads, the options,
+// One vector's record for the device kernels: the material (DSPBR_MATERIAL_PACK), the options,
 // v and l (kRecordFloats floats). The kernels write kResultFloats floats per vector in mode 0
 // (kernel_common.glsl).
-constexpr int kRecordFloats = 64;
+constexpr int kRecordFloats = 80;  // kernel_common.glsl's DSPBR_TEST_RECORD_FLOATS
 constexpr int kResultFloats = 10;
 constexpr int kAlbedoNodes = 256;  // albedo.glsl's DSPBR_TEST_ALBEDO_NODES
 void pack_record(const dspbr::conformance::Vector& v, float* out);
