@@ -14,9 +14,10 @@
 # 100 s to create its pipeline (67 s with the tables as private variables instead of constants),
 # the whole set over 300 s (measured 2026-12-04 on this project's 2-core machine). The rest of
 # that mode is the compile check lookup_glsl_arrays (tests/lookup_code.cmake).
-# 2. The renderer-side example (examples/vulkan/sphere.cpp, CTest vulkan_sphere_example): spheres
-# shaded by examples/vulkan/sphere.comp with the core BRDF and the energy compensation read from
-# the tables, written to build/vulkan_sphere.exr and compared with the C++ reference BSDF.
+# 2. The renderer-side example (examples/vulkan/sphere.cpp, CTest vulkan_sphere_example): a sphere
+# per material of the validation scenes shaded by examples/vulkan/sphere.comp with the shader
+# library (dspbr.glsl, the tables as textures), written to build/vulkan_sphere.exr and compared
+# with the C++ reference BSDF.
 find_package(Vulkan QUIET)
 find_program(DSPBR_GLSLANG_VK glslangValidator)
 set(_vk_tests vulkan_lookup_textures vulkan_lookup_arrays_1d vulkan_sphere_example)
@@ -54,17 +55,21 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
   set_tests_properties(vulkan_lookup_textures vulkan_lookup_arrays_1d PROPERTIES TIMEOUT 300)
 
   set(_spv ${PROJECT_BINARY_DIR}/vulkan_sphere.spv)
+  file(GLOB _sphere_deps ${PROJECT_SOURCE_DIR}/shaders/*.* ${PROJECT_SOURCE_DIR}/shaders/dspbr/*)
   add_custom_command(OUTPUT ${_spv}
-    COMMAND ${DSPBR_GLSLANG_VK} -V -I${PROJECT_SOURCE_DIR}/luts -o ${_spv} ${_vk_dir}/sphere.comp
-    DEPENDS ${_vk_dir}/sphere.comp ${_vk_dir}/dspbr_core.glsl ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl
+    COMMAND ${DSPBR_GLSLANG_VK} -V -I${PROJECT_SOURCE_DIR}/shaders -I${PROJECT_SOURCE_DIR}/luts -o ${_spv}
+            ${_vk_dir}/sphere.comp
+    DEPENDS ${_vk_dir}/sphere.comp ${_sphere_deps} ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl
     COMMENT "glslangValidator: sphere.comp" VERBATIM)
   add_custom_target(vulkan_sphere_shader ALL DEPENDS ${_spv})
-  add_executable(example_vulkan_sphere ${_vk_dir}/sphere.cpp ${_vk_dir}/sphere_scene.cpp)
+  add_executable(example_vulkan_sphere ${_vk_dir}/sphere.cpp ${_vk_dir}/sphere_scene.cpp ${_vk_dir}/gltf_factors.cpp)
   add_dependencies(example_vulkan_sphere vulkan_sphere_shader)
-  target_link_libraries(example_vulkan_sphere PRIVATE dspbr_vk_compute dspbr_core PkgConfig::OIIO)
+  target_link_libraries(example_vulkan_sphere PRIVATE dspbr_vk_compute dspbr_formats dspbr_shaders PkgConfig::OIIO
+                                                      nlohmann_json::nlohmann_json)
   target_compile_options(example_vulkan_sphere PRIVATE -Wall -Wextra)
   add_test(NAME vulkan_sphere_example
-           COMMAND example_vulkan_sphere ${_spv} ${PROJECT_SOURCE_DIR}/luts ${PROJECT_BINARY_DIR}/vulkan_sphere.exr)
+           COMMAND example_vulkan_sphere ${_spv} ${PROJECT_SOURCE_DIR}/luts ${PROJECT_SOURCE_DIR}/data/dspbr/scenes/sphere
+                   ${PROJECT_BINARY_DIR}/vulkan_sphere.exr)
   set_tests_properties(vulkan_sphere_example PROPERTIES TIMEOUT 120)
   # 77: no Vulkan device (reported skipped); the driver's runtime folder inside the build tree.
   set_tests_properties(${_vk_tests} PROPERTIES SKIP_RETURN_CODE 77 ENVIRONMENT "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}")

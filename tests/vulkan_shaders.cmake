@@ -29,9 +29,10 @@ target_compile_options(shader_cpp_warnings PRIVATE -Wall -Wextra -Wpedantic -Wco
                        -Wfloat-conversion -Wsign-conversion -Werror)
 add_test(NAME shader_cpp_warnings COMMAND shader_cpp_warnings)
 
-add_library(dspbr_shader_test STATIC ${_sl}/shader_material.cpp)
-target_include_directories(dspbr_shader_test PUBLIC ${_sl})
-target_link_libraries(dspbr_shader_test PUBLIC dspbr_shaders dspbr_conformance)
+# The helpers, and the example's glTF loader for the shader library (examples/vulkan/gltf_factors.h).
+add_library(dspbr_shader_test STATIC ${_sl}/shader_material.cpp ${PROJECT_SOURCE_DIR}/examples/vulkan/gltf_factors.cpp)
+target_include_directories(dspbr_shader_test PUBLIC ${_sl} ${PROJECT_SOURCE_DIR}/examples/vulkan)
+target_link_libraries(dspbr_shader_test PUBLIC dspbr_shaders dspbr_conformance nlohmann_json::nlohmann_json)
 target_compile_options(dspbr_shader_test PRIVATE -Wall -Wextra)
 # The GoogleTest cases of tests/test_shader_library.cpp (chi-square, stability, reciprocity,
 # emission and delta lobes of the C++ compile) use the same helpers.

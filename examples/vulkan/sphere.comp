@@ -1,26 +1,20 @@
 #version 450
-// A renderer's use of the generated lookups: spheres under a point light shaded with the DSPBR
-// core BRDF and its energy compensation (dspbr_core.glsl), one invocation per pixel, one tile
-// of tile x tile pixels per material, left to right. examples/vulkan/sphere.cpp uploads the
-// tables (texture mode, bindings 2..7), runs it and compares with the C++ reference BSDF.
+// A renderer's use of the shader library (docs/renderer.md): spheres under a point light shaded
+// with the whole DSPBR BSDF (dspbr.glsl), one invocation per pixel, one tile of tile x tile pixels
+// per material, left to right. examples/vulkan/sphere.cpp uploads the tables (texture mode,
+// bindings 2..7) and the materials (DSPBR_MATERIAL_PACK), runs it and compares with the C++
+// reference BSDF.
 #extension GL_GOOGLE_include_directive : require
-// The tables as R32F textures at bindings 2..7 of set 0 (docs/luts.md, "Using the tables in your
-// renderer"); bindings 0 and 1 are this shader's buffers.
-#define DSPBR_LOOKUP_TEXTURES
+// The tables as R32F textures at bindings 2..7 of set 0; bindings 0 and 1 are this shader's buffers.
 #define DSPBR_LOOKUP_BINDING_BASE 2
-#include "dspbr_lookup.glsl"
-#include "dspbr_core.glsl"
+#include "dspbr.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-struct SphereMaterial {
-  vec4 albedo_metallic;         // rho, m
-  vec4 roughness_specular_ior;  // r, s, eta, unused
-};
-// The scene (sphere_scene.h, SceneBuffer): the unit sphere at the origin.
+// The scene (sphere_scene.h, Scene::buffer): the unit sphere at the origin, then the materials.
 layout(std430, binding = 0) readonly buffer Scene {
   vec4 eye;    // camera position (looking down -z, y up), w = tan(half the field of view)
   vec4 light;  // point light position, w = its intensity I
-  SphereMaterial materials[];
+  float materials[];  // DSPBR_MATERIAL_FLOATS per material
 };
 layout(std430, binding = 1) writeonly buffer Image { vec4 pixels[]; };  // RGBA, row by row
 layout(push_constant) uniform Size { uint tile; uint tiles; } size;
@@ -40,12 +34,14 @@ void main() {
     vec3 n = normalize(x), v = -d, to_light = light.xyz - x;
     float d2 = dot(to_light, to_light);
     vec3 l = to_light * inversesqrt(d2);
-    SphereMaterial sm = materials[p.x / size.tile];
-    DspbrCoreMaterial mat = DspbrCoreMaterial(sm.albedo_metallic.rgb, sm.albedo_metallic.w,
-                                              sm.roughness_specular_ior.x, sm.roughness_specular_ior.y,
-                                              sm.roughness_specular_ior.z);
-    // L = f(v, l) (n.l) I / d^2: a point light of intensity I at distance d.
-    radiance = vec4(dspbr_core_brdf(mat, n, v, l) * max(dot(n, l), 0.0) * light.w / d2, 1.0);
+    DspbrMaterial m;
+    DSPBR_MATERIAL_UNPACK(m, materials, (p.x / size.tile) * DSPBR_MATERIAL_FLOATS);
+    // The shading frame: the normal and the x axis made orthogonal to it (sphere_scene.h).
+    DspbrBsdf bsdf = dspbr_prepare(m, dspbr_frame_from_normal_tangent(n, vec3(1.0, 0.0, 0.0)),
+                                   dspbr_default_options());
+    // L = f(v, l) |n.l| I / d^2: a point light of intensity I at distance d, seen through the
+    // surface where it is behind it (the transmission lobes; an example of the BSDF, not of shadows).
+    radiance = vec4(dspbr_eval(bsdf, v, l) * (abs(dot(n, l)) * light.w / d2), 1.0);
   }
   pixels[p.y * width + p.x] = radiance;
 }

@@ -1,9 +1,11 @@
-// A renderer-side example of the generated lookups (CTest vulkan_sphere_example; docs/luts.md,
-// "Using the tables in your renderer"): spheres under a point light shaded on the GPU by
-// sphere.comp with the DSPBR core BRDF and its energy compensation (dspbr_core.glsl, the tables
-// luts/renderer/*.exr uploaded as textures), written to an EXR, and compared with the reference
-// BSDF (dspbr::MaterialBsdf, dspbr::core) evaluated on the CPU in double for the same pixels.
-//   example_vulkan_sphere SHADER.spv LUT_DIR OUT.exr
+// A renderer-side example of the shader library (CTest vulkan_sphere_example; docs/renderer.md,
+// "How it is checked"): every material of the validation scenes (data/dspbr/scenes/sphere, read
+// from glTF as a renderer would: gltf_factors.h, dspbr_material_from_gltf) on a sphere under a point
+// light, shaded on the GPU by sphere.comp with the whole BSDF of dspbr.glsl (the tables
+// luts/renderer/*.exr uploaded as textures), written to an EXR, and compared with the reference BSDF
+// (dspbr::MaterialBsdf of the project's glTF importer) evaluated on the CPU in double for the same
+// pixels.
+//   example_vulkan_sphere SHADER.spv LUT_DIR SCENE_DIR OUT.exr
 // Exit 0: the relative errors within the bounds below; 1: above them; 2: bad arguments or a
 // Vulkan error; 77: no Vulkan device (CTest reports the test skipped).
 #include <OpenImageIO/imageio.h>
@@ -24,24 +26,25 @@
 
 namespace {
 
-constexpr uint32_t kTile = 128;  // pixels per side of one material's tile
+constexpr uint32_t kTile = 64;  // pixels per side of one material's tile
 constexpr int kSkip = 77;
 constexpr uint32_t kTextureBinding = 2;  // sphere.comp's DSPBR_LOOKUP_BINDING_BASE
 
 // What is compared: each channel of a pixel whose reference radiance is at least kDark times
 // I / (pi d^2), the radiance of a white Lambertian sphere facing the light at its distance d
-// from the centre (the background and the terminator's last pixels, where the radiance goes to 0
-// with n.l, are left out).
+// from the centre, by its relative error; every darker one (the background, the terminator's last
+// pixels, where the radiance goes to 0 with n.l, and a material the point light barely shows) by
+// its absolute difference in units of that threshold.
 constexpr double kDark = 1e-3;
-// The bounds cover what differs between the two sides: the shader's float arithmetic (its
-// geometry, the BRDF, the driver's sqrt / exp / pow) against double, and the lookups'
-// Catmull-Rom interpolation of the same renderer tables in float (the reference reads the
-// built-in renderer tables, the same values, in double). Measured 2026-12-04 on lavapipe
-// (docs/luts.md): max 3.4e-4 (at the terminator, where n.l is a float difference of nearly
-// orthogonal vectors), mean 3.3e-6 (the largest per material 1.1e-5: the low-roughness metal, whose
-// M_r,ms reads 1 - E_m of order 1e-2, an ulp of E_m amplified); the bounds leave a factor 3 and 30 for
-// drivers whose sqrt / exp / pow are less exact (Vulkan allows a few ulp).
+// The bound covers what differs between the two sides: the shader's float arithmetic (its
+// geometry, the BSDF, the driver's sqrt / exp / pow) against double, and the lookups' Catmull-Rom
+// interpolation of the same renderer tables in float (the reference reads the built-in renderer
+// tables, the same values, in double). The measured errors are in docs/renderer.md
+// ("Measurements"); 1e-3 is the bound of issue 43 for the maximum over pixels and channels.
 constexpr double kMaxBound = 1e-3, kMeanBound = 1e-4;
+// Below the threshold the values are near 0 (a relative error says little): the absolute
+// difference is bounded by 1e-2 of the threshold, 1e-5 of the white sphere's radiance.
+constexpr double kDarkBound = 1e-2;
 
 void write_exr(const std::string& path, const std::vector<float>& rgba, int width, int height) {
   auto out = OIIO::ImageOutput::create(path);
@@ -67,10 +70,11 @@ struct Errors {
 
 int main(int argc, char** argv) {
   try {
-    if (argc != 4) throw std::invalid_argument("usage: example_vulkan_sphere SHADER.spv LUT_DIR OUT.exr");
+    if (argc != 5) throw std::invalid_argument("usage: example_vulkan_sphere SHADER.spv LUT_DIR SCENE_DIR OUT.exr");
     const std::vector<uint32_t> spirv = vk_compute::read_spirv(argv[1]);
     const std::vector<vk_compute::TableImage> textures = vk_compute::read_lookup_textures(argv[2], false);
-    const std::vector<dspbr::Material> mats = sphere::materials();
+    const std::vector<sphere::SceneMaterial> mats = sphere::materials(argv[3]);
+    if (mats.empty()) throw std::invalid_argument(std::string(argv[3]) + ": no .gltf material");
     const sphere::Scene scene;
     const std::vector<float> buffer = scene.buffer(mats);
     const uint32_t tiles = uint32_t(mats.size()), width = kTile * tiles, height = kTile;
@@ -93,17 +97,18 @@ int main(int argc, char** argv) {
     job.groups[0] = (width + 7) / 8;
     job.groups[1] = (height + 7) / 8;
     const std::vector<float> gpu = vk.run(job);
-    write_exr(argv[3], gpu, int(width), int(height));
+    write_exr(argv[4], gpu, int(width), int(height));
 
     // The reference: the same materials, the same pixels, in double.
     std::printf("device: %s; %u x %u pixels, %u materials -> %s\n", vk.device_name().c_str(), width, height, tiles,
-                argv[3]);
+                argv[4]);
     const double dark = kDark * scene.intensity / (M_PI * dot(scene.light, scene.light));
     std::printf("relative error per channel where the reference is >= %g (%g I / (pi d^2)):\n", dark, kDark);
-    Errors all;
+    Errors all, dark_err;
+    unsigned not_judged = 0;
     size_t coverage_mismatch = 0;
     for (uint32_t k = 0; k < tiles; ++k) {
-      const dspbr::MaterialBsdf bsdf(mats[k], dspbr::LutSet::builtin());
+      const dspbr::MaterialBsdf bsdf(mats[k].reference, dspbr::LutSet::builtin());
       std::vector<dspbr::Rgb> ref(size_t(kTile) * kTile, dspbr::Rgb(0));
       std::vector<bool> hit(ref.size());
       for (uint32_t y = 0; y < kTile; ++y)
@@ -111,9 +116,9 @@ int main(int argc, char** argv) {
           const sphere::PixelGeometry g = sphere::pixel_geometry(scene, int(x), int(y), int(kTile));
           hit[y * kTile + x] = g.hit;
           if (!g.hit) continue;
-          const dspbr::Frame frame = dspbr::Frame::from_normal(g.n);
+          const dspbr::Frame frame = dspbr::Frame::from_normal_tangent(g.n, sphere::kTangentHint);
           const dspbr::Vec3 v = frame.to_local(g.v), l = frame.to_local(g.l);
-          const dspbr::Rgb L = bsdf.eval(v, l) * (std::max(l.z, 0.0) * g.light_scale);
+          const dspbr::Rgb L = bsdf.eval(v, l) * (std::abs(l.z) * g.light_scale);
           ref[y * kTile + x] = L;
         }
       Errors tile;
@@ -123,23 +128,33 @@ int main(int argc, char** argv) {
           if ((p[3] > 0) != hit[y * kTile + x]) ++coverage_mismatch;
           for (int c = 0; c < 3; ++c) {
             const double r = ref[y * kTile + x][c];
-            if (r < dark) continue;
+            if (r < dark) {  // below the threshold: the difference in units of the threshold
+              dark_err.add(std::abs(double(p[c]) - r) / dark, int(k * kTile + x), int(y));
+              continue;
+            }
             const double e = std::abs(double(p[c]) - r) / r;
             tile.add(e, int(k * kTile + x), int(y));
             all.add(e, int(k * kTile + x), int(y));
           }
         }
-      const dspbr::Material& m = mats[k];
       const sphere::PixelGeometry w =
           sphere::pixel_geometry(scene, tile.worst_x - int(k * kTile), tile.worst_y, int(kTile));
-      std::printf("  %u: rho (%.2f %.2f %.2f) m %.2f r %.2f s %.2f: max %.3g (pixel %d,%d: n.v %.3f, n.l %.3f), "
-                  "mean %.3g over %zu\n", k, m.albedo.r, m.albedo.g, m.albedo.b, m.metallic, m.roughness, m.specular,
-                  tile.max, tile.worst_x, tile.worst_y, dot(w.n, w.v), dot(w.n, w.l), tile.mean(), tile.count);
+      if (tile.count == 0) {
+        ++not_judged;
+        std::printf("  %2u %-44s no pixel above the threshold: judged by the absolute bound alone\n", k,
+                    mats[k].name.c_str());
+        continue;
+      }
+      std::printf("  %2u %-44s max %.3g (pixel %d,%d: n.v %.3f, n.l %.3f), mean %.3g over %zu\n", k,
+                  mats[k].name.c_str(), tile.max, tile.worst_x, tile.worst_y, dot(w.n, w.v), dot(w.n, w.l), tile.mean(),
+                  tile.count);
     }
-    std::printf("all: max relative error %.3g (bound %g), mean %.3g (bound %g) over %zu pixel channels; "
-                "%zu pixels hit on one side only\n", all.max, kMaxBound, all.mean(), kMeanBound, all.count,
-                coverage_mismatch);
-    const bool within = all.max <= kMaxBound && all.mean() <= kMeanBound && coverage_mismatch == 0;
+    std::printf("all: max relative error %.3g (bound %g), mean %.3g (bound %g) over %zu pixel channels of %u "
+                "materials; below the threshold, max |difference| %.3g of it (bound %g) over %zu pixel channels of "
+                "all %u; %zu pixels hit on one side only\n", all.max, kMaxBound, all.mean(), kMeanBound, all.count,
+                tiles - not_judged, dark_err.max, kDarkBound, dark_err.count, tiles, coverage_mismatch);
+    const bool within = all.max <= kMaxBound && all.mean() <= kMeanBound && dark_err.max <= kDarkBound &&
+                        coverage_mismatch == 0;
     std::printf(within ? "PASSED\n" : "FAILED: above the bounds\n");
     return within ? 0 : 1;
   } catch (const std::exception& e) {  // bad arguments, unreadable files, vk_compute::VkError

@@ -1,33 +1,50 @@
 #include "sphere_scene.h"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "dspbr/gltf/gltf_file.h"
+#include "dspbr/gltf/gltf_material.h"
+#include "gltf_factors.h"
 
 namespace sphere {
 
-using dspbr::Material;
-using dspbr::Rgb;
 using dspbr::Vec3;
 
-std::vector<Material> materials() {
-  auto make = [](Rgb albedo, double metallic, double roughness, double specular) {
-    Material m;  // DSPBR 2025x defaults (thin-walled, ior 1.5, specular tint 1), then these
-    m.albedo = albedo;
-    m.metallic = metallic;
-    m.roughness = roughness;
-    m.specular = specular;
-    return m;
-  };
-  return {make(Rgb(0.8, 0.2, 0.1), 0, 0.5, 1),     make(Rgb(0.1, 0.3, 0.8), 0, 0.2, 1),
-          make(Rgb(1.0, 0.77, 0.34), 1, 0.5, 1),   make(Rgb(0.95, 0.64, 0.54), 1, 0.2, 1),
-          make(Rgb(0.5, 0.8, 0.5), 0.5, 0.35, 0.5)};
+std::vector<SceneMaterial> materials(const std::string& folder) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(folder))
+    if (e.path().extension() == ".gltf") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::vector<SceneMaterial> out;
+  for (const auto& f : files) {
+    std::ifstream in(f);
+    const nlohmann::json doc = nlohmann::json::parse(in);
+    const auto mapped = dspbr::gltf::map_materials(dspbr::gltf::read_gltf(f.string()));
+    for (std::size_t i = 0; i < mapped.size(); ++i) {
+      SceneMaterial m;
+      m.name = f.stem().string() + (mapped.size() > 1 ? "#" + std::to_string(i) : "");
+      m.shader = dspbr_shader::dspbr_material_from_gltf(gltf_factors(doc["materials"][i]));
+      m.reference = mapped[i].material;
+      out.push_back(m);
+    }
+  }
+  return out;
 }
 
-std::vector<float> Scene::buffer(const std::vector<Material>& mats) const {
+std::vector<float> Scene::buffer(const std::vector<SceneMaterial>& mats) const {
   std::vector<float> b = {float(eye.x),   float(eye.y),   float(eye.z),   float(tan_half_fov),
                           float(light.x), float(light.y), float(light.z), float(intensity)};
-  for (const Material& m : mats)
-    b.insert(b.end(), {float(m.albedo.r), float(m.albedo.g), float(m.albedo.b), float(m.metallic),
-                       float(m.roughness), float(m.specular), float(m.ior), 0.0f});
+  const std::size_t first = b.size();
+  b.resize(first + mats.size() * dspbr_shader::DSPBR_MATERIAL_FLOATS);
+  for (std::size_t k = 0; k < mats.size(); ++k) {
+    float* rec = &b[first + k * dspbr_shader::DSPBR_MATERIAL_FLOATS];
+    DSPBR_MATERIAL_PACK(mats[k].shader, rec, 0u);
+  }
   return b;
 }
 

@@ -1,28 +1,39 @@
 // The scene of the Vulkan sphere example (examples/vulkan/sphere.comp, sphere.cpp): a unit sphere
 // at the origin per material, a camera on +z looking at it, a point light, as the buffer the
-// shader reads (std430, vec4s only), and each pixel's geometry computed again in double on the
-// CPU for the reference.
+// shader reads (std430: two vec4s, then each material's DSPBR_MATERIAL_FLOATS floats), and each
+// pixel's geometry computed again in double on the CPU for the reference.
 #pragma once
+#include <string>
 #include <vector>
 
+#include "dspbr.h"
 #include "dspbr/material.h"
 #include "dspbr/vec3.h"
 
 namespace sphere {
 
-// The materials, one tile each: a dielectric and a metal at a mid and a low roughness (energy
-// compensation matters at both: B_c and M_r,ms F_ms) and a half-metallic mixture with s = 0.5.
-std::vector<dspbr::Material> materials();
+// One material of the validation scenes, both ways: the shader library's, from the glTF factors
+// (gltf_factors.h, dspbr_material_from_gltf), and the reference's, from the project's glTF
+// importer (src/dspbr/gltf).
+struct SceneMaterial {
+  std::string name;  // file stem, and "#i" for the i-th material of a file with several
+  dspbr_shader::DspbrMaterial shader;
+  dspbr::Material reference;
+};
+// Every material of the .gltf files of `folder` (sorted by file name).
+std::vector<SceneMaterial> materials(const std::string& folder);
 
-// The shader's Scene buffer: eye (xyz, tan of half the field of view), light (xyz, intensity I),
-// then per material (rho.rgb, m), (r, s, eta, 0).
 struct Scene {
   dspbr::Vec3 eye{0, 0, 3.5};
   double tan_half_fov = 0.35;
   dspbr::Vec3 light{-2.5, 3.0, 3.0};
   double intensity = 20.0;
-  std::vector<float> buffer(const std::vector<dspbr::Material>& mats) const;
+  std::vector<float> buffer(const std::vector<SceneMaterial>& mats) const;
 };
+
+// The tangent hint of the shading frames (Gram-Schmidt against the normal): the x axis, never
+// parallel to a normal the camera sees (those have n.z >= 1 / |eye| > 0).
+const dspbr::Vec3 kTangentHint{1, 0, 0};
 
 // What a pixel sees, in double: hit = false for the background.
 struct PixelGeometry {
