@@ -17,72 +17,26 @@
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
-#include "dspbr/params/material_instance.h"
-#include "dspbr/params/param_defs.h"
 #include "dspbr/rng.h"
 #include "dspbr/scene/components.h"
+#include "bench_materials.h"
 
 namespace {
 
 using namespace dspbr;
-
-Material subtype(const char* id) {
-  static const ParamDefs defs = default_param_defs();
-  return material_from_instance(defs, nlohmann::json{{"material", id}});
-}
-
-Material full_material() {
-  Material m;
-  m.albedo = Rgb(0.6, 0.3, 0.2);
-  m.metallic = 0.3;
-  m.roughness = 0.4;
-  m.anisotropy = 0.5;
-  m.translucency = 0.3;
-  m.transparency = 0.3;
-  m.thinFilm = 0.5;
-  m.sheenColor = Rgb(0.5);
-  m.flakeCoverage = 0.5;
-  m.flakeSize = 0.05;
-  m.flakeRoughness = 0.3;
-  m.clearcoat = 0.5;
-  m.clearcoatRoughness = 0.1;
-  m.emissionValue = 10;
-  m.thinWalled = false;
-  m.abbeNumber = 40;
-  m.attenuationColor = Rgb(0.8, 0.7, 0.6);
-  m.attenuationDistance = 0.1;
-  m.subsurfaceColor = Rgb(0.5);
-  return m;
-}
-
-Material thin_film_material() {
-  Material m = subtype("plastic");
-  m.thinFilm = 1.0;  // thickness 0.4 um, film IOR 1.3: the parameter defaults
-  return m;
-}
-
-Material rough_glass() {
-  Material m = subtype("glass");
-  m.roughness = 0.5;
-  return m;
-}
 
 const char* kNames[] = {"plastic", "metal", "glass", "carpaint", "thin_film", "full"};
 constexpr int kMaterials = 6;
 constexpr int kRoughGlassCompensated = kMaterials;  // not in the all_components rows
 
 Material material(int index) {
-  switch (index) {
-    case 0: return subtype("plastic");
-    case 1: return subtype("metal");
-    case 2: return subtype("glass");
-    case 3: return subtype("carpaint");
-    case 4: return thin_film_material();
-    case kRoughGlassCompensated: return rough_glass();
-    default: return full_material();
+  if (index == kRoughGlassCompensated) {
+    Material m = bench::material("glass");
+    m.roughness = 0.5;
+    return m;
   }
+  return bench::material(kNames[index]);
 }
-
 
 // Fixed sets of directions / random numbers (upper hemisphere for v, both for l).
 struct Inputs {
@@ -151,7 +105,7 @@ void construct(benchmark::State& state, int index) {
 // The yardstick: f = D G2 F / (4 |v.n| |l.n|) of one isotropic GGX lobe with Schlick's F, the
 // plastic's roughness, on the same directions.
 void bare_ggx(benchmark::State& state) {
-  const double alpha = roughness_to_alpha(subtype("plastic").roughness);
+  const double alpha = roughness_to_alpha(bench::material("plastic").roughness);
   const GgxDistribution ggx(alpha, alpha);
   const Inputs& in = inputs();
   std::size_t i = 0;

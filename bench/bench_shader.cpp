@@ -1,50 +1,29 @@
 // The shader library's C++ compile (shaders/dspbr.h, float, renderer-layout tables) per hit, as a
 // path tracer pays it: prepare + eval, prepare alone, eval and sample of a prepared BSDF, for the
-// params-2025x.json subtypes the library implements, against a bare isotropic GGX reflection eval
-// (D, height-correlated G2, Schlick F) in float in the same run.
+// materials of bench_materials.h, against a bare isotropic GGX reflection eval (D, height-correlated
+// G2, Schlick F) in float in the same run; dspbr_bench_shader_fits: the same over the LUT-free fits
+// (DSPBR_USE_FITS) instead of the tables.
 //   dspbr_bench --benchmark_filter='BM_Shader'
-// Ratios and the table: scripts/bench_shader.py, docs/renderer.md ("Cost").
+//   dspbr_bench_shader_fits
+// Ratios and the table: scripts/bench_ratios.py --shader [--bench build/dspbr_bench_shader_fits], docs/renderer.md ("Cost").
 #include <benchmark/benchmark.h>
 
 #include <string>
 #include <vector>
 
+#include "bench_materials.h"
 #include "dspbr.h"
-#include "dspbr/params/material_instance.h"
-#include "dspbr/params/param_defs.h"
 #include "dspbr/rng.h"
+#include "shader_material.h"
 
 namespace {
 
 using namespace dspbr_shader;
 
-DspbrMaterial subtype(const std::string& id) {
-  static const dspbr::ParamDefs defs = dspbr::default_param_defs();
-  const dspbr::Material m = dspbr::material_from_instance(defs, nlohmann::json{{"material", id}});
-  DspbrMaterial s = dspbr_default_material();
-  auto v3 = [](const dspbr::Rgb& c) { return vec3(float(c.r), float(c.g), float(c.b)); };
-  s.albedo = v3(m.albedo), s.metallic = float(m.metallic), s.roughness = float(m.roughness);
-  s.anisotropy = float(m.anisotropy), s.specular = float(m.specular), s.specularTint = v3(m.specularTint);
-  s.transparency = float(m.transparency), s.thinWalled = m.thinWalled, s.ior = float(m.ior);
-  s.sheenColor = v3(m.sheenColor), s.sheenRoughness = float(m.sheenRoughness);
-  s.clearcoat = float(m.clearcoat), s.clearcoatRoughness = float(m.clearcoatRoughness);
-  return s;
-}
-
-// The materials: three subtypes at their defaults, and a coated plastic.
-DspbrMaterial material(int index) {
-  switch (index) {
-    case 0: return subtype("plastic");
-    case 1: return subtype("metal");
-    case 2: return subtype("glass");
-    default: {
-      DspbrMaterial m = subtype("plastic");
-      m.clearcoat = 1.0f, m.clearcoatRoughness = 0.1f;
-      return m;
-    }
-  }
-}
-const char* kNames[] = {"plastic", "metal", "glass", "coated_plastic"};
+// The materials of bench_materials.h, as the shader library's (shader_test::to_shader_material).
+const char* kNames[] = {"plastic", "metal", "glass", "coated_plastic", "carpaint", "thin_film", "full"};
+constexpr int kMaterials = 7;
+DspbrMaterial material(int index) { return shader_test::to_shader_material(bench::material(kNames[index])); }
 
 struct Inputs {
   std::vector<vec3> v, l, u;
@@ -67,7 +46,7 @@ const Inputs& inputs() {
 }
 
 void bare_ggx(benchmark::State& state) {
-  const float a = subtype("plastic").roughness;
+  const float a = material(0).roughness;
   const DspbrGgx g = dspbr_ggx(a * a, a * a);
   const Inputs& in = inputs();
   std::size_t i = 0;
@@ -121,7 +100,7 @@ void run(benchmark::State& state, int index, What what) {
 [[maybe_unused]] const bool registered = [] {
   benchmark::RegisterBenchmark("BM_Shader/bare_ggx", bare_ggx);
   benchmark::RegisterBenchmark("BM_Shader/thin_film_R", thin_film_R);
-  for (int m = 0; m < 4; ++m) {
+  for (int m = 0; m < kMaterials; ++m) {
     const std::string name = kNames[m];
     benchmark::RegisterBenchmark(("BM_Shader/prepare_eval/" + name).c_str(), run, m, What::PrepareEval);
     benchmark::RegisterBenchmark(("BM_Shader/prepare/" + name).c_str(), run, m, What::Prepare);

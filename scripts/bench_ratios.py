@@ -36,7 +36,8 @@ LOOKUPS = {"BM_FitLutTableLookup/0": "published", "BM_FitLutTableLookup/1": "ren
 LOOKUPS_PER_ITERATION = 1024  # bench/bench_fits.cpp: 1024 (mu, r) per iteration
 FILTER = "BM_(Eval|Sample)/[a-z_]*$|BM_FitLutTableLookup|BM_SliceLookup|BM_WarpGgxCos|BM_LookupGeneratedC|BM_FitLutBilinearFloat"
 # --shader: the shader library per hit (prepare + eval as a textured material pays it).
-SHADER_TARGETS = {"BM_Shader/prepare_eval/plastic": 6, "BM_Shader/prepare_eval/metal": 5}
+SHADER_TARGETS = {"BM_Shader/prepare_eval/plastic": 6, "BM_Shader/prepare_eval/metal": 5,
+                  "BM_Shader/prepare_eval/carpaint": 12, "BM_Shader/prepare_eval/full": 20}
 SHADER_FILTER = "BM_Shader/"
 
 

@@ -6,12 +6,20 @@
 #define DSPBR_HLSL_INCLUDED
 // The tables: textures unless DSPBR_LOOKUP_ARRAYS asks for constant arrays (slow to compile on
 // some drivers: docs/renderer.md, "Tables").
+// DSPBR_USE_FITS: the LUT-free fits instead (fits/dspbr_fits.hlsl on the include path; no table).
+#ifdef DSPBR_USE_FITS
+#include "dspbr_fits.hlsl"
+#else
 #if !defined(DSPBR_LOOKUP_ARRAYS) && !defined(DSPBR_LOOKUP_TEXTURES)
 #define DSPBR_LOOKUP_TEXTURES
 #endif
 #include "dspbr_lookup.hlsl"
+#endif
 #include "dspbr/interop.hlsl"
 #include "dspbr/features.glsl"
+#ifdef DSPBR_USE_FITS
+#include "dspbr/fits.glsl"
+#endif
 #include "dspbr/math.glsl"
 #include "dspbr/material.glsl"
 #include "dspbr/gltf.glsl"

@@ -39,6 +39,7 @@ inline float sin(float x) { return std::sin(x); }
 inline float cos(float x) { return std::cos(x); }
 inline float acos(float x) { return std::acos(x); }
 inline float floor(float x) { return std::floor(x); }
+inline float ceil(float x) { return std::ceil(x); }
 // GLSL min/max/clamp: for a NaN argument the result is unspecified in GLSL; the body never relies
 // on it (shaders/README.md, "NaN and Inf").
 inline float min(float a, float b) { return b < a ? b : a; }
