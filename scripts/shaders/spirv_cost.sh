@@ -3,7 +3,10 @@
 # compiled by glslangValidator and optimised by spirv-opt -O for each variant; prints a Markdown
 # table of the static texel-fetch count and the size in bytes. With --scenes DSPBR (the built dspbr
 # command), also a row per distinct specialisation of the validation scenes (`dspbr shader
-# --scene`), each the eval kernel with every component's parameters read from the buffer.
+# --scene`), each the eval kernel with every component's parameters read from the buffer, and the
+# C++ cost of prepare + eval of the scene's material (scripts/shaders/scene_bench.cpp, Google
+# Benchmark, median of three repetitions): generic, then with the scene's header, each also as a
+# ratio to a bare GGX eval in the same run.
 #   bash scripts/shaders/spirv_cost.sh [--scenes build/dspbr]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -26,11 +29,32 @@ for variant in "eval, metal/dielectric parameters read from a buffer|" \
   cost "${variant%%|*}" ${variant#*|}
 done
 [ -n "$dspbr" ] || exit 0
+# scene_bench BINARY SCENE: "NS (RATIO)" of prepare + eval, the median of three repetitions.
+scene_bench() {
+  "$1" "$2" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true --benchmark_format=json 2> /dev/null |
+    /usr/bin/python3 -c 'import json, sys
+med = {b["run_name"]: b["cpu_time"] for b in json.load(sys.stdin)["benchmarks"] if b.get("aggregate_name") == "median"}
+print("%.0f ns (%.1f\u00d7)" % (med["prepare_eval"], med["prepare_eval"] / med["bare_ggx"]))'
+}
+build_bench() {  # build_bench OUT [-include HEADER]
+  local out=$1; shift
+  g++ -std=c++17 -O2 "$@" -I"$here/shaders" -I"$here/luts" -I"$here/examples/vulkan" -o "$out" \
+    "$here/scripts/shaders/scene_bench.cpp" "$here/examples/vulkan/gltf_factors.cpp" -lbenchmark -lpthread
+}
+build_bench "$tmp/generic"
+echo
+echo "| scene (first material) | components | texel fetches | SPIR-V bytes | C++ prepare + eval, generic | with the header |"
+echo "|---|---|---|---|---|---|"
 declare -A seen
 for scene in "$here"/data/dspbr/scenes/sphere/*.gltf; do
   "$dspbr" shader --scene "$scene" --out "$tmp/s" > /dev/null
   comps=$(sed -n 's|^// Compiled in: \(.*\)\.$|\1|p' "$tmp/s/dspbr_specialization.h")
   [ -z "${seen[$comps]:-}" ] || continue
   seen[$comps]=1
-  cost "eval, every parameter, \`dspbr shader\` for $(basename "$scene" .gltf): $comps" -DFULL -DDSPBR_USE_SPECIALIZATION -I"$tmp/s"
+  row=$(cost x -DFULL -DDSPBR_USE_SPECIALIZATION -I"$tmp/s")
+  fetches=$(echo "$row" | cut -d'|' -f3 | tr -d ' ')
+  bytes=$(echo "$row" | cut -d'|' -f4 | tr -d ' ')
+  build_bench "$tmp/special" -include "$tmp/s/dspbr_specialization.h"
+  printf '| %s | %s | %s | %s | %s | %s |\n' "$(basename "$scene" .gltf)" "$comps" "$fetches" "$bytes" \
+    "$(scene_bench "$tmp/generic" "$scene")" "$(scene_bench "$tmp/special" "$scene")"
 done
