@@ -50,44 +50,15 @@ const std::vector<Vector>& materials() {
 }  // namespace
 
 TEST(ShaderLibrary, SamplingMatchesPdfByChiSquare) {
-  const auto& set = materials();
-  ASSERT_GT(set.size(), 30u);
-  validate::Chi2Settings s;
-  s.samples = 100000;
-  s.theta_bins = 60;  // 30 bins are too coarse for the expected counts of the IOR-1.01 glass (its
-                      // transmission peak): the reference fails there too (p 1.6e-13), both pass at 60
-  s.consistency_tol = 1e-4;  // sample.pdf and weight against pdf() and f |cos| / pdf, in float
-  // Two views from above; volumes also from inside (a thin wall seen from below is the same lobes).
-  struct View {
-    std::size_t material;
-    double mu;
-  };
-  std::vector<View> views;
-  for (std::size_t i = 0; i < set.size(); ++i) {
-    // A thin film costs spectral quadratures per pdf call (6.8 us each): one view, 30 theta bins
-    // and the consistency of every 20th sample for those (the expected counts call pdf ~10^5 times).
-    const Material m = vector_material(set[i]);
-    views.push_back({i, 0.7});
-    if (m.thinFilm > 0) continue;
-    views.push_back({i, 0.2});
-    if (!m.thinWalled) views.push_back({i, -0.5});
-  }
-  s.num_tests = int(views.size());
+  const std::vector<shader_test::Chi2Case> cases = shader_test::chi2_cases();
+  ASSERT_GT(cases.size(), 60u);
   int failed = 0;
-  for (std::size_t k = 0; k < views.size(); ++k) {
-    const Vector& x = set[views[k].material];
-    const double mu = views[k].mu, st = std::sqrt(1 - mu * mu);
-    const shader_test::ShaderBsdf b(vector_material(x), vector_options(x));
-    s.stream = k;
-    validate::Chi2Settings sk = s;
-    if (vector_material(x).thinFilm > 0) sk.theta_bins = 30, sk.consistency_stride = 20;  // see above
-    const validate::Chi2Result r = validate::chi2_test(b, {st * 0.8, st * 0.6, mu}, sk);
+  for (const shader_test::Chi2Case& c : cases) {
+    const shader_test::ShaderBsdf b(vector_material(c.vector), vector_options(c.vector));
+    const validate::Chi2Result r = validate::chi2_test(b, c.v, c.settings);
     if (!r.passed()) {
       ++failed;
-      ADD_FAILURE() << x.id << " at cos " << mu << ": p " << r.p_value << " (alpha " << r.alpha << "), outside "
-                    << r.outside_support << ", integral " << r.pdf_integral << " vs " << r.pdf_integral_expected << " +- "
-                    << r.pdf_integral_tol << ", pdf dev " << r.max_pdf_rel_dev << ", weight dev " << r.max_weight_rel_dev
-                    << ", non-finite " << r.non_finite;
+      ADD_FAILURE() << c.vector.id << " at cos " << c.v.z << ": " << shader_test::chi2_summary(r);
     }
   }
   EXPECT_EQ(failed, 0);

@@ -73,9 +73,11 @@ Device::Device(const char* application) {
 Device::~Device() {
   if (device_ != VK_NULL_HANDLE) {
     vkDeviceWaitIdle(device_);
-    for (auto& b : buffers_) {
-      vkDestroyBuffer(device_, b.buffer, nullptr);
-      vkFreeMemory(device_, b.memory, nullptr);
+    for (auto& [key, p] : pipelines_) {
+      vkDestroyPipeline(device_, p.pipeline, nullptr);
+      vkDestroyShaderModule(device_, p.module, nullptr);
+      vkDestroyPipelineLayout(device_, p.layout, nullptr);
+      vkDestroyDescriptorSetLayout(device_, p.set_layout, nullptr);
     }
     for (auto& i : images_) {
       vkDestroyImageView(device_, i.view, nullptr);
@@ -89,15 +91,20 @@ Device::~Device() {
   if (instance_ != VK_NULL_HANDLE) vkDestroyInstance(instance_, nullptr);
 }
 
-std::vector<float> Device::run(const Job& job) {
-  const size_t out_bytes = job.output_floats * sizeof(float);
-  Buffer& in = make_buffer(job.input_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  Buffer& out = make_buffer(out_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  std::memcpy(in.mapped, job.input, job.input_bytes);
-  std::memset(out.mapped, 0xFF, out_bytes);  // NaN until written
+Device::Pipeline& Device::pipeline_for(const Job& job) {
   const std::vector<TableImage> none;
   const std::vector<TableImage>& textures = job.textures ? *job.textures : none;
+  // The key: everything the pipeline and its tables are made of, byte for byte.
+  std::string key(reinterpret_cast<const char*>(job.spirv->data()), job.spirv->size() * sizeof(uint32_t));
+  key += "|" + std::to_string(job.texture_binding) + "|" + std::to_string(job.push_bytes);
+  for (const TableImage& t : textures) {
+    key += "|" + std::to_string(t.width) + "x" + std::to_string(t.height) + ":";
+    key.append(reinterpret_cast<const char*>(t.pixels.data()), t.pixels.size() * sizeof(float));
+  }
+  const auto found = pipelines_.find(key);
+  if (found != pipelines_.end()) return found->second;
 
+  Pipeline p;
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   for (uint32_t b = 0; b < 2; ++b)
     bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
@@ -106,36 +113,43 @@ std::vector<float> Device::run(const Job& job) {
         {job.texture_binding + t, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
   const size_t first_image = images_.size();
   if (!textures.empty()) upload_textures(textures);
+  for (size_t i = first_image; i < images_.size(); ++i) p.views.push_back(images_[i].view);
 
   VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   lci.bindingCount = uint32_t(bindings.size());
   lci.pBindings = bindings.data();
-  VkDescriptorSetLayout set_layout;
-  check(vkCreateDescriptorSetLayout(device_, &lci, nullptr, &set_layout), "vkCreateDescriptorSetLayout");
+  check(vkCreateDescriptorSetLayout(device_, &lci, nullptr, &p.set_layout), "vkCreateDescriptorSetLayout");
   VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, job.push_bytes};
   VkPipelineLayoutCreateInfo plci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   plci.setLayoutCount = 1;
-  plci.pSetLayouts = &set_layout;
+  plci.pSetLayouts = &p.set_layout;
   plci.pushConstantRangeCount = job.push_bytes ? 1 : 0;
   plci.pPushConstantRanges = &push;
-  VkPipelineLayout pipeline_layout;
-  check(vkCreatePipelineLayout(device_, &plci, nullptr, &pipeline_layout), "vkCreatePipelineLayout");
+  check(vkCreatePipelineLayout(device_, &plci, nullptr, &p.layout), "vkCreatePipelineLayout");
   VkShaderModuleCreateInfo smci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   smci.codeSize = job.spirv->size() * sizeof(uint32_t);
   smci.pCode = job.spirv->data();
-  VkShaderModule module;
-  check(vkCreateShaderModule(device_, &smci, nullptr, &module), "vkCreateShaderModule");
+  check(vkCreateShaderModule(device_, &smci, nullptr, &p.module), "vkCreateShaderModule");
   VkComputePipelineCreateInfo cpci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   cpci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  cpci.stage.module = module;
+  cpci.stage.module = p.module;
   cpci.stage.pName = "main";
-  cpci.layout = pipeline_layout;
-  VkPipeline pipeline;
-  check(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline), "vkCreateComputePipelines");
+  cpci.layout = p.layout;
+  check(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &cpci, nullptr, &p.pipeline), "vkCreateComputePipelines");
+  return pipelines_.emplace(key, p).first->second;
+}
+
+std::vector<float> Device::run(const Job& job) {
+  const size_t out_bytes = job.output_floats * sizeof(float);
+  const Pipeline& p = pipeline_for(job);
+  const Buffer in = make_buffer(job.input_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  const Buffer out = make_buffer(out_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  std::memcpy(in.mapped, job.input, job.input_bytes);
+  std::memset(out.mapped, 0xFF, out_bytes);  // NaN until written
 
   std::vector<VkDescriptorPoolSize> sizes = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
-  if (!textures.empty()) sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(textures.size())});
+  if (!p.views.empty()) sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(p.views.size())});
   VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   dpci.maxSets = 1;
   dpci.poolSizeCount = uint32_t(sizes.size());
@@ -145,13 +159,12 @@ std::vector<float> Device::run(const Job& job) {
   VkDescriptorSetAllocateInfo dsai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   dsai.descriptorPool = descriptor_pool;
   dsai.descriptorSetCount = 1;
-  dsai.pSetLayouts = &set_layout;
+  dsai.pSetLayouts = &p.set_layout;
   VkDescriptorSet set;
   check(vkAllocateDescriptorSets(device_, &dsai, &set), "vkAllocateDescriptorSets");
   VkDescriptorBufferInfo buffer_infos[2] = {{in.buffer, 0, VK_WHOLE_SIZE}, {out.buffer, 0, VK_WHOLE_SIZE}};
   std::vector<VkDescriptorImageInfo> image_infos;
-  for (size_t i = first_image; i < images_.size(); ++i)
-    image_infos.push_back({sampler_, images_[i].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+  for (VkImageView view : p.views) image_infos.push_back({sampler_, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
   std::vector<VkWriteDescriptorSet> writes;
   for (uint32_t b = 0; b < 2; ++b) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -174,10 +187,9 @@ std::vector<float> Device::run(const Job& job) {
   vkUpdateDescriptorSets(device_, uint32_t(writes.size()), writes.data(), 0, nullptr);
 
   VkCommandBuffer cmd = begin();
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout, 0, 1, &set, 0, nullptr);
-  if (job.push_bytes)
-    vkCmdPushConstants(cmd, pipeline_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, job.push_bytes, job.push);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout, 0, 1, &set, 0, nullptr);
+  if (job.push_bytes) vkCmdPushConstants(cmd, p.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, job.push_bytes, job.push);
   vkCmdDispatch(cmd, job.groups[0], job.groups[1], job.groups[2]);
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
@@ -189,10 +201,8 @@ std::vector<float> Device::run(const Job& job) {
   std::vector<float> values(job.output_floats);
   std::memcpy(values.data(), out.mapped, out_bytes);
   vkDestroyDescriptorPool(device_, descriptor_pool, nullptr);
-  vkDestroyPipeline(device_, pipeline, nullptr);
-  vkDestroyShaderModule(device_, module, nullptr);
-  vkDestroyPipelineLayout(device_, pipeline_layout, nullptr);
-  vkDestroyDescriptorSetLayout(device_, set_layout, nullptr);
+  release(in);
+  release(out);
   return values;
 }
 
@@ -215,7 +225,7 @@ VkDeviceMemory Device::allocate(const VkMemoryRequirements& req, VkMemoryPropert
 }
 
 // A host-visible, coherent, mapped buffer.
-Device::Buffer& Device::make_buffer(size_t bytes, VkBufferUsageFlags usage) {
+Device::Buffer Device::make_buffer(size_t bytes, VkBufferUsageFlags usage) {
   VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   bci.size = bytes;
   bci.usage = usage;
@@ -227,8 +237,12 @@ Device::Buffer& Device::make_buffer(size_t bytes, VkBufferUsageFlags usage) {
   b.memory = allocate(req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
   check(vkBindBufferMemory(device_, b.buffer, b.memory, 0), "vkBindBufferMemory");
   check(vkMapMemory(device_, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory");
-  buffers_.push_back(b);
-  return buffers_.back();
+  return b;
+}
+
+void Device::release(const Buffer& b) {
+  vkDestroyBuffer(device_, b.buffer, nullptr);
+  vkFreeMemory(device_, b.memory, nullptr);
 }
 
 VkCommandBuffer Device::begin() {
@@ -265,7 +279,7 @@ void Device::upload_textures(const std::vector<TableImage>& textures) {
   }
   for (const TableImage& t : textures) {
     const size_t bytes = t.pixels.size() * sizeof(float);
-    Buffer& staging = make_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    const Buffer staging = make_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     std::memcpy(staging.mapped, t.pixels.data(), bytes);
     VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     ici.imageType = VK_IMAGE_TYPE_2D;
@@ -305,6 +319,7 @@ void Device::upload_textures(const std::vector<TableImage>& textures) {
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 0, nullptr, 0,
                          nullptr, 1, &to_read);
     submit(cmd);
+    release(staging);
     VkImageViewCreateInfo vci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     vci.image = img.image;
     vci.viewType = VK_IMAGE_VIEW_TYPE_2D;

@@ -8,7 +8,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
-#include <deque>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -48,7 +48,10 @@ class Device {
   bool has_device() const { return device_ != VK_NULL_HANDLE; }
   const std::string& device_name() const { return device_name_; }
 
-  // Runs the job and returns the output buffer; VkError when a Vulkan call fails.
+  // Runs the job and returns the output buffer; VkError when a Vulkan call fails. The pipeline
+  // and the uploaded tables are kept for later jobs with the same SPIR-V, tables, binding and
+  // push-constant size (a driver that compiles at pipeline creation, lavapipe, takes seconds per
+  // pipeline of the shader library); the job's buffers are released when it returns.
   std::vector<float> run(const Job& job);
 
  private:
@@ -62,9 +65,19 @@ class Device {
     VkDeviceMemory memory;
     VkImageView view;
   };
+  // A pipeline and its tables, by what built them (run's cache).
+  struct Pipeline {
+    VkDescriptorSetLayout set_layout;
+    VkPipelineLayout layout;
+    VkShaderModule module;
+    VkPipeline pipeline;
+    std::vector<VkImageView> views;  // the tables, in binding order
+  };
+  Pipeline& pipeline_for(const Job& job);
+  void release(const Buffer& b);
   uint32_t memory_type(uint32_t bits, VkMemoryPropertyFlags want) const;
   VkDeviceMemory allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags want);
-  Buffer& make_buffer(size_t bytes, VkBufferUsageFlags usage);
+  Buffer make_buffer(size_t bytes, VkBufferUsageFlags usage);  // host-visible, mapped; release() it
   VkCommandBuffer begin();
   void submit(VkCommandBuffer cmd);
   void upload_textures(const std::vector<TableImage>& textures);
@@ -77,8 +90,8 @@ class Device {
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkSampler sampler_ = VK_NULL_HANDLE;
   std::string device_name_;
-  std::deque<Buffer> buffers_;  // a deque: the references make_buffer returns stay valid
   std::vector<Image> images_;
+  std::map<std::string, Pipeline> pipelines_;  // key: the SPIR-V, the tables, binding, push size
 };
 
 }  // namespace vk_compute

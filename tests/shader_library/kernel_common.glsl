@@ -7,7 +7,9 @@
 //           vector a (3 floats), albedo.glsl;
 //   mode 2  invocation i = a * 8192 + k: the sample of vector a at the k-th of 8192 stratified lobe
 //           choices (u = ((k + 0.5) / 8192, 0.5, 0.5)): 1 when it is a Dirac sample, l, weight x pdf
-//           (7 floats), from which the host finds the Dirac lobes (shader_material.h, delta_lobes).
+//           (7 floats), from which the host finds the Dirac lobes (shader_material.h, delta_lobes);
+//   mode 3  invocation i: vector 0's sample at the i-th u after its record (9 floats: valid, l,
+//           weight, pdf, flags), for the chi-square test on the device (shader_vk_chi2).
 // The albedo is split so: on lavapipe (Mesa 22.3, LLVM 15) nested loops around dspbr_eval returned
 // wrong sums and corrupted the caller's values, a loop of 8192 dspbr_sample calls missed Dirac
 // lobes, and a workgroup in which some invocations ran the albedo and others did not returned
@@ -17,7 +19,7 @@ DSPBR_CONST int DSPBR_TEST_RECORD_FLOATS = 80;  // shader_material.h's kRecordFl
 DSPBR_FN vec3 dspbr_test_vec3(uint k) { return vec3(rec[k], rec[k + 1u], rec[k + 2u]); }
 
 DSPBR_FN void dspbr_test_run(uint id, uint mode) {
-  uint i = mode == 1u ? id / uint(DSPBR_TEST_ALBEDO_NODES) : (mode == 2u ? id / 8192u : id);
+  uint i = mode == 1u ? id / uint(DSPBR_TEST_ALBEDO_NODES) : (mode == 2u ? id / 8192u : (mode == 3u ? 0u : id));
   uint k = i * uint(DSPBR_TEST_RECORD_FLOATS);
   DspbrMaterial m;
   DSPBR_MATERIAL_UNPACK(m, rec, k);
@@ -49,6 +51,21 @@ DSPBR_FN void dspbr_test_run(uint id, uint mode) {
     res[7u * id + 4u] = value.x;
     res[7u * id + 5u] = value.y;
     res[7u * id + 6u] = value.z;
+    return;
+  }
+  // Mode 3: the chi-square test's samples (shader_vk_chi2), vector 0's material and v; the id-th u
+  // follows the record.
+  if (mode == 3u) {  // valid, l, weight, pdf, flags (9 floats)
+    DspbrSample d = dspbr_sample(b, v, dspbr_test_vec3(uint(DSPBR_TEST_RECORD_FLOATS) + 3u * id));
+    res[9u * id] = d.valid ? 1.0f : 0.0f;
+    res[9u * id + 1u] = d.l.x;
+    res[9u * id + 2u] = d.l.y;
+    res[9u * id + 3u] = d.l.z;
+    res[9u * id + 4u] = d.weight.x;
+    res[9u * id + 5u] = d.weight.y;
+    res[9u * id + 6u] = d.weight.z;
+    res[9u * id + 7u] = d.pdf;
+    res[9u * id + 8u] = float(d.flags);
     return;
   }
 #endif

@@ -13,6 +13,7 @@
 #include "dspbr/conformance/vector.h"
 #include "dspbr/conformance/vector_set.h"
 #include "dspbr/material.h"
+#include "dspbr/validate/chi2.h"
 
 namespace shader_test {
 
@@ -52,6 +53,21 @@ void write_results(const std::string& path, const std::vector<dspbr::conformance
 // returns the number of failing vectors.
 int judge(const std::vector<dspbr::conformance::Vector>& vectors, const std::vector<Outcome>& results,
           const std::string& what, int show = 12);
+
+// The chi-square cases of the shader library (ShaderLibrary.SamplingMatchesPdfByChiSquare in C++,
+// shader_vk_chi2 on the device): every built-in conformance material (one vector each), viewed at
+// cos 0.7 and 0.2 from above and, for a volume, at -0.5 from inside; a thin film (spectral
+// quadratures in every pdf call) at cos 0.7 only, with 30 theta bins and every 20th sample's
+// consistency. settings.num_tests and stream are set for the whole list.
+struct Chi2Case {
+  dspbr::conformance::Vector vector;
+  dspbr::Vec3 v;
+  dspbr::validate::Chi2Settings settings;
+};
+std::vector<Chi2Case> chi2_cases();
+// A failed chi-square result in one line: p and alpha, the support, the pdf's integral, the
+// consistency deviations, the non-finite samples.
+std::string chi2_summary(const dspbr::validate::Chi2Result& r);
 
 // The Dirac lobes from the samples at kDeltaChoices stratified lobe choices (u = ((k + 0.5) /
 // kDeltaChoices, 0.5, 0.5)), each as 7 floats: 1 for a Dirac sample, l, weight x pdf. A lobe's
