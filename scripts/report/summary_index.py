@@ -33,6 +33,16 @@ def figures(report_dir):
     return out
 
 
+# The checkout (scripts/report/..): the command is recorded relative to it, so that the index does
+# not change with the folder the project sits in.
+CHECKOUT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def relative_command(command):
+    """The run's command line with paths inside the checkout written relative to it."""
+    return command.replace(CHECKOUT + os.sep, "")
+
+
 def index_text(rep, figs):
     p, run = rep["provenance"], rep["run"]
     tables = p.get("tables") or {}
@@ -49,7 +59,7 @@ def index_text(rep, figs):
         f"| mode, seed | {rep['mode']}, {p['seed']} |",
         f"| git commit (at build configuration) | `{p['git_commit']}` |",
         f"| project version | {p['project_version']} |",
-        f"| command | `{run['command_line']}` |",
+        f"| command | `{relative_command(run['command_line'])}` |",
         f"| date (UTC) | {run['date_utc']} |",
         f"| threads | {run['threads']} |",
         f"| table file | {tables.get('file', 'none')} (FNV-1a {tables.get('fnv1a64', '-')}) |",
