@@ -12,7 +12,8 @@
 # - shader_glsl_conformance / shader_hlsl_conformance: the kernels on the first Vulkan device
 #   (lavapipe here), tables as textures, judged by `dspbr conformance check` (f cos, pdf, albedo,
 #   emission); skipped (77) without a device;
-# - shader_glsl_chi2: the chi-square test of sample against pdf on the device (shader_vk_chi2).
+# - shader_glsl_chi2 / shader_hlsl_chi2: the chi-square test of sample against pdf with the samples
+#   drawn on the device (shader_vk_chi2).
 set(_sl ${CMAKE_CURRENT_LIST_DIR}/shader_library)
 set(_sl_vectors ${PROJECT_BINARY_DIR}/shader-vectors/vectors.json)
 add_test(NAME shader_vectors
@@ -108,12 +109,15 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
   target_link_libraries(shader_vk_chi2 PRIVATE dspbr_shader_test dspbr_vk_compute dspbr_validate)
   target_compile_options(shader_vk_chi2 PRIVATE -Wall -Wextra)
   add_dependencies(shader_vk_chi2 shader_conformance_kernels)
-  add_test(NAME shader_glsl_chi2
-           COMMAND shader_vk_chi2 ${PROJECT_BINARY_DIR}/shader_conformance_glsl.spv ${PROJECT_SOURCE_DIR}/luts glsl)
-  set_tests_properties(shader_glsl_chi2 PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900
-                       ENVIRONMENT "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}")
+  foreach(lang glsl hlsl)
+    add_test(NAME shader_${lang}_chi2
+             COMMAND shader_vk_chi2 ${PROJECT_BINARY_DIR}/shader_conformance_${lang}.spv ${PROJECT_SOURCE_DIR}/luts ${lang})
+    set_tests_properties(shader_${lang}_chi2 PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900
+                         ENVIRONMENT "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}")
+  endforeach()
 else()
-  foreach(t shader_glsl_compile shader_hlsl_compile shader_glsl_conformance shader_hlsl_conformance shader_glsl_chi2)
+  foreach(t shader_glsl_compile shader_hlsl_compile shader_glsl_conformance shader_hlsl_conformance shader_glsl_chi2
+            shader_hlsl_chi2)
     add_test(NAME ${t} COMMAND ${CMAKE_COMMAND} -E echo "Vulkan or glslangValidator not found: ${t} not run")
     set_tests_properties(${t} PROPERTIES DISABLED TRUE)
   endforeach()
