@@ -29,25 +29,6 @@
 using namespace dspbr;
 using namespace dspbr::conformance;
 
-namespace {
-
-// One vector per built-in material (the kit's own materials: each component, the plain sets, the
-// combinations, the extremes).
-const std::vector<Vector>& materials() {
-  static const std::vector<Vector> set = [] {
-    GenerateSettings s;
-    s.directions = 1;
-    s.albedo = false;
-    std::vector<Vector> out;
-    std::set<std::string> seen;  // the extremes give several vectors per material
-    for (Vector& x : generate_vectors(s))
-      if (seen.insert(x.id.substr(0, x.id.rfind('/'))).second) out.push_back(std::move(x));
-    return out;
-  }();
-  return set;
-}
-
-}  // namespace
 
 TEST(ShaderLibrary, SamplingMatchesPdfByChiSquare) {
   const std::vector<shader_test::Chi2Case> cases = shader_test::chi2_cases();
@@ -118,7 +99,7 @@ TEST(ShaderLibrary, ReciprocalWhereTheReferenceIs) {
   validate::ReciprocitySettings s;
   s.pairs = 2000;
   int judged = 0;
-  for (const Vector& x : materials()) {
+  for (const Vector& x : shader_test::builtin_materials()) {
     const Material m = vector_material(x);
     s.eta_below = m.thinWalled ? 1.0 : m.ior;
     const validate::ReciprocityResult lib = validate::reciprocity_check(shader_test::ShaderBsdf(m, vector_options(x)), s);

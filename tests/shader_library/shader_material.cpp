@@ -140,19 +140,28 @@ void pack_record(const dspbr::conformance::Vector& x, float* out) {
   while (i < kRecordFloats) put(0.0f);
 }
 
+const std::vector<dspbr::conformance::Vector>& builtin_materials() {
+  static const std::vector<dspbr::conformance::Vector> set = [] {
+    dspbr::conformance::GenerateSettings g;
+    g.directions = 1;
+    g.albedo = false;
+    std::vector<dspbr::conformance::Vector> out;
+    std::set<std::string> seen;  // the extremes give several vectors per material
+    for (dspbr::conformance::Vector& x : dspbr::conformance::generate_vectors(g))
+      if (seen.insert(x.id.substr(0, x.id.rfind('/'))).second) out.push_back(std::move(x));
+    return out;
+  }();
+  return set;
+}
+
 std::vector<Chi2Case> chi2_cases() {
-  dspbr::conformance::GenerateSettings g;
-  g.directions = 1;
-  g.albedo = false;
   std::vector<Chi2Case> out;
-  std::set<std::string> seen;  // the extremes give several vectors per material
   dspbr::validate::Chi2Settings s;
   s.samples = 100000;
   s.theta_bins = 60;  // 30 bins are too coarse for the expected counts of the IOR-1.01 glass (its
                       // transmission peak): the reference fails there too (p 1.6e-13), both pass at 60
   s.consistency_tol = 1e-4;  // sample.pdf and weight against pdf() and f |cos| / pdf, in float
-  for (dspbr::conformance::Vector& x : dspbr::conformance::generate_vectors(g)) {
-    if (!seen.insert(x.id.substr(0, x.id.rfind('/'))).second) continue;
+  for (const dspbr::conformance::Vector& x : builtin_materials()) {
     const dspbr::Material m = dspbr::conformance::vector_material(x);
     dspbr::validate::Chi2Settings sk = s;
     if (m.thinFilm > 0) sk.theta_bins = 30, sk.consistency_stride = 20;  // see chi2_cases' comment

@@ -54,6 +54,10 @@ void write_results(const std::string& path, const std::vector<dspbr::conformance
 int judge(const std::vector<dspbr::conformance::Vector>& vectors, const std::vector<Outcome>& results,
           const std::string& what, int show = 12);
 
+// One vector per built-in conformance material (the kit's own materials: each component, the plain
+// sets, the combinations, the extremes), one direction each.
+const std::vector<dspbr::conformance::Vector>& builtin_materials();
+
 // The chi-square cases of the shader library (ShaderLibrary.SamplingMatchesPdfByChiSquare in C++,
 // shader_vk_chi2 on the device): every built-in conformance material (one vector each), viewed at
 // cos 0.7 and 0.2 from above and, for a volume, at -0.5 from inside; a thin film (spectral

@@ -20,6 +20,7 @@
 #include <mutex>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "shader_material.h"
@@ -52,7 +53,7 @@ class DeviceBsdf : public dspbr::Bsdf {
       std::lock_guard<std::mutex> lock(mutex_);
       const auto it = samples_.find(key_of(u));
       if (it != samples_.end()) return it->second;
-      if (pending_keys_.emplace(key_of(u), 0).second) pending_.push_back(u);
+      if (pending_keys_.insert(key_of(u)).second) pending_.push_back(u);
     }
     return cpp_.sample(v, u);
   }
@@ -68,7 +69,7 @@ class DeviceBsdf : public dspbr::Bsdf {
   const shader_test::ShaderBsdf& cpp_;
   mutable std::mutex mutex_;
   std::unordered_map<Key, dspbr::BsdfSample, KeyHash> samples_;
-  mutable std::unordered_map<Key, int, KeyHash> pending_keys_;
+  mutable std::unordered_set<Key, KeyHash> pending_keys_;
   mutable std::vector<dspbr::Vec3> pending_;
 };
 
