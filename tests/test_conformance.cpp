@@ -115,7 +115,7 @@ TEST(Conformance, TheReferencePasses) {
   // And the stored expectations are the re-evaluated ones to the last bit.
   const auto rs = reference_results(vs);
   for (std::size_t i = 0; i < vs.size(); ++i) {
-    EXPECT_EQ(rs[i].f_cos.r, vs[i].f_cos.r) << vs[i].id;
+    EXPECT_EQ(rs[i].f_cos->r, vs[i].f_cos.r) << vs[i].id;
     EXPECT_EQ(*rs[i].pdf, vs[i].pdf) << vs[i].id;
   }
 }
@@ -127,11 +127,68 @@ TEST(Conformance, FivePercentOnOneGroupFailsThatGroupAlone) {
   for (const std::string& g : groups) {
     std::vector<Result> rs = reference_results(vs);
     for (std::size_t i = 0; i < vs.size(); ++i)
-      if (vs[i].group == g) rs[i].f_cos = rs[i].f_cos * 1.05;
+      if (vs[i].group == g) rs[i].f_cos = *rs[i].f_cos * 1.05;
     const Check c = check_results(vs, rs);
     const auto verdicts = group_verdicts(check_report(vs, rs, c, {}));
     for (const auto& [name, verdict] : verdicts) EXPECT_EQ(verdict, name == g ? "FAIL" : "PASS") << g << " changed";
   }
+}
+
+// Results that leave vectors or quantities out: what is missing is NOT SUPPLIED, neither passed nor
+// failed; a group without any judged vector is NOT SUPPLIED; selections keep what they name.
+TEST(Conformance, SubsetsAreNotSuppliedAndSelectionsKeepWhatTheyName) {
+  const auto& vs = small_set();
+  std::vector<Result> partial;
+  std::size_t dropped = 0, kept = 0;
+  for (Result r : reference_results(vs)) {
+    const Vector& v = vs[partial.size() + dropped];
+    if (v.group == "sheen") {  // no result at all
+      ++dropped;
+      continue;
+    }
+    if (v.group == "clearcoat") r.pdf.reset(), r.f_cos = *r.f_cos * 2.0;  // wrong f cos: FAIL
+    partial.push_back(std::move(r));
+    ++kept;
+  }
+  ASSERT_GT(dropped, 0u);
+  EXPECT_THROW(match_results(vs, partial, "r.json", "v.json", true), std::runtime_error);
+  std::vector<Result> rs = match_results(vs, partial, "r.json", "v.json");
+  const Check c = check_results(vs, rs);
+  EXPECT_EQ(c.not_supplied, dropped);
+  EXPECT_EQ(c.judged(), kept);
+  const auto report = check_report(vs, rs, c, {});
+  for (const auto& [name, verdict] : group_verdicts(report))
+    EXPECT_EQ(verdict, name == "sheen" ? "NOT SUPPLIED" : (name == "clearcoat" ? "FAIL" : "PASS")) << name;
+  EXPECT_EQ(report["summary"]["not_supplied"].get<std::size_t>(), dropped);
+  // The clearcoat's pdf left out is not judged; the sheen's vectors are not counted there.
+  std::size_t coat = 0;
+  for (const Vector& v : vs) coat += v.group == "clearcoat" ? 1 : 0;
+  EXPECT_EQ(report["quantities"]["pdf"]["not_judged"].get<std::size_t>(), coat);
+
+  // Null members and empty CSV fields are not supplied; a colour half given is an error.
+  const auto j = parse_results(R"({"results": [{"id": "a", "f_cos": null, "pdf": null, "albedo": null}]})", "r.json");
+  EXPECT_FALSE(j[0].f_cos || j[0].pdf || j[0].albedo);
+  const auto csv = parse_results("id,f_cos_r,f_cos_g,f_cos_b,pdf\na,1,2,3,\nb,,,,0.5\n", "r.csv");
+  EXPECT_TRUE(csv[0].f_cos && !csv[0].pdf);
+  EXPECT_TRUE(!csv[1].f_cos && csv[1].pdf);
+  EXPECT_THROW(parse_results("id,f_cos_r,f_cos_g,f_cos_b\na,1,,3\n", "r.csv"), std::runtime_error);
+
+  // --groups / --components.
+  std::vector<Vector> sel_v = vs;
+  std::vector<Result> sel_r = reference_results(vs);
+  select_vectors({{"clearcoat", "sheen"}, {}}, sel_v, sel_r);
+  ASSERT_FALSE(sel_v.empty());
+  for (std::size_t i = 0; i < sel_v.size(); ++i) {
+    EXPECT_TRUE(sel_v[i].group == "clearcoat" || sel_v[i].group == "sheen") << sel_v[i].id;
+    EXPECT_EQ(sel_v[i].id, sel_r[i].id);
+  }
+  sel_v = vs, sel_r = reference_results(vs);
+  select_vectors({{}, {"flakes"}}, sel_v, sel_r);
+  ASSERT_FALSE(sel_v.empty());
+  for (const Vector& v : sel_v)
+    EXPECT_NE(std::find(v.components.begin(), v.components.end(), "flakes"), v.components.end()) << v.id;
+  sel_v = vs, sel_r = reference_results(vs);
+  EXPECT_THROW(select_vectors({{"nope"}, {}}, sel_v, sel_r), std::invalid_argument);
 }
 
 TEST(Conformance, DeltaLobesOfSmoothGlassAreFresnel) {
@@ -193,7 +250,7 @@ TEST(Conformance, ResultsCsvWithPdfAndAlbedo) {
   const auto rs = parse_results("id,f_cos_r,f_cos_g,f_cos_b,pdf,albedo_r,albedo_g,albedo_b\r\na,1,2,3,4,0.5,0.6,0.7\n\"b,c\",1e-3,0,0,1,1,1,1\n",
                                 "r.csv");
   ASSERT_EQ(rs.size(), 2u);
-  EXPECT_EQ(rs[0].f_cos.g, 2);
+  EXPECT_EQ(rs[0].f_cos->g, 2);
   EXPECT_EQ(*rs[0].pdf, 4);
   EXPECT_EQ(rs[0].albedo->b, 0.7);
   EXPECT_EQ(rs[1].id, "b,c");
@@ -214,7 +271,7 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
   const auto rs = reference_results(vs);
   for (const Result& r : rs) {
     char line[512];
-    std::snprintf(line, sizeof line, "%s,%.17g,%.17g,%.17g,%.17g\n", r.id.c_str(), r.f_cos.r, r.f_cos.g, r.f_cos.b, *r.pdf);
+    std::snprintf(line, sizeof line, "%s,%.17g,%.17g,%.17g,%.17g\n", r.id.c_str(), r.f_cos->r, r.f_cos->g, r.f_cos->b, *r.pdf);
     csv += line;
   }
   write(dir / "ok.csv", csv);
@@ -228,8 +285,8 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
   for (std::size_t i = 0; i < vs.size(); ++i) {
     const double k = vs[i].group == "clearcoat" ? 1.05 : 1.0;
     char line[512];
-    std::snprintf(line, sizeof line, "%s,%.17g,%.17g,%.17g\n", rs[i].id.c_str(), k * rs[i].f_cos.r, k * rs[i].f_cos.g,
-                  k * rs[i].f_cos.b);
+    std::snprintf(line, sizeof line, "%s,%.17g,%.17g,%.17g\n", rs[i].id.c_str(), k * rs[i].f_cos->r, k * rs[i].f_cos->g,
+                  k * rs[i].f_cos->b);
     bad += line;
   }
   write(dir / "bad.csv", bad);
@@ -238,6 +295,15 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
   EXPECT_EQ(fail.status, 1) << fail.output;
   const auto report = nlohmann::ordered_json::parse(read_all(dir / "rep2" / "report.json"));
   for (const auto& [name, verdict] : group_verdicts(report)) EXPECT_EQ(verdict, name == "clearcoat" ? "FAIL" : "PASS");
+  // --groups judges only the groups named: the same results pass without clearcoat, fail with it.
+  const std::string bad_check = "conformance check '" + vectors + "' '" + (dir / "bad.csv").string() + "' --no-html ";
+  const ToolRun metal = run_dspbr(bad_check + "--groups plain_metal,sheen --out '" + (dir / "rep3").string() + "'");
+  EXPECT_EQ(metal.status, 0) << metal.output;
+  const ToolRun coat = run_dspbr(bad_check + "--components clearcoat --out '" + (dir / "rep4").string() + "'");
+  EXPECT_EQ(coat.status, 1) << coat.output;
+  const ToolRun typo = run_dspbr(bad_check + "--groups plain_metl --out '" + (dir / "never").string() + "'");
+  EXPECT_EQ(typo.status, 2) << typo.output;
+  EXPECT_NE(typo.output.find("--groups: no vector has 'plain_metl' (the set has: "), std::string::npos) << typo.output;
 
   // A vector file of another version: exit 2 naming it.
   std::string doc = read_all(vectors);
@@ -263,12 +329,14 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
   // Malformed: exit 2, one line naming the file and the record; no report folder.
   const std::string first = vs[0].id, second = vs[1].id;
   struct Case {
-    std::string text, needle;
+    std::string text, needle, flags;
   };
   const std::vector<Case> cases = {
       {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,nan,0\n", "line 2 (id '" + first + "'): f_cos_g is not a finite number"},
       {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,0\n", "line 2 (id '" + first + "'): 3 fields"},
-      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,0,0\n", "no result for vector '" + second + "'"},
+      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,0,0\n", "no result for vector '" + second + "'", "--require-all"},
+      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",,,\n", "no result for any of the " + std::to_string(vs.size()) + " vectors"},
+      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,,0\n", "line 2 (id '" + first + "'): f_cos_g is not a finite number"},
       {"{\"results\": [{\"id\": \"" + first + "\", \"f_cos\": [1, 2]}]}", "results[0] (id '" + first + "')"},
       {"{\"results\": [{\"id\": \"nope\", \"f_cos\": [1, 2, 3]}]}", "id 'nope' is not a vector of"},
       {"{\"results\": [{\"id\": \"" + first + "\", \"f_cos\": [1, 2, 3]}, ", "malformed JSON"},
@@ -278,7 +346,7 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
     const fs::path f = dir / ("malformed" + std::to_string(k) + ".txt");
     write(f, cases[k].text);
     const ToolRun r = run_dspbr("conformance check '" + vectors + "' '" + f.string() + "' --no-html --out '" +
-                                (dir / "never").string() + "'");
+                                (dir / "never").string() + "' " + cases[k].flags);
     EXPECT_EQ(r.status, 2) << r.output;
     EXPECT_EQ(r.output.rfind("dspbr: error: " + f.string() + ": ", 0), 0u) << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;

@@ -47,7 +47,8 @@ struct ReferenceArgs {
 struct CheckArgs {
   std::string vectors, results, out;
   std::string python = "/usr/bin/python3";
-  bool html = true;
+  bool html = true, require_all = false;
+  conformance::Selection selection;
 };
 
 void write_text(const std::string& path, const std::string& text) {
@@ -118,11 +119,18 @@ void run_check(const CheckArgs& a) {
   std::vector<conformance::Result> results;
   try {
     vectors = conformance::read_vectors(a.vectors);
-    results = conformance::match_results(vectors, conformance::read_results(a.results), a.results, a.vectors);
-  } catch (const std::runtime_error& e) {
+    results = conformance::match_results(vectors, conformance::read_results(a.results), a.results, a.vectors,
+                                         a.require_all);
+    conformance::select_vectors(a.selection, vectors, results);
+  } catch (const std::exception& e) {
     throw UsageError(e.what());
   }
   const conformance::Check check = conformance::check_results(vectors, results);
+  // A check that judged nothing could not have failed: bad input, not a PASS.
+  if (check.judged() == 0)
+    throw UsageError(a.results + ": no result for any of the " + std::to_string(vectors.size()) +
+                     (a.selection.groups.empty() && a.selection.components.empty() ? "" : " selected") + " vectors of " +
+                     a.vectors);
   InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
   OutputFolder& out = cleanup.out();
   OJson provenance = output_provenance();
@@ -133,20 +141,23 @@ void run_check(const CheckArgs& a) {
   if (a.html) run_report_script(a.python, script, out.staging(), a.out);
   out.commit();
 
-  std::printf("conformance: %s, %zu of %zu vectors pass; report in %s/%s\n", check.passed() ? "PASS" : "FAIL",
-              vectors.size() - check.failed, vectors.size(), a.out.c_str(), a.html ? "index.html" : "report.json");
-  std::printf("  %-28s %7s %6s %6s %12s  %s\n", "group", "verdict", "PASS", "FAIL", "worst ratio", "worst vector");
+  std::printf("conformance: %s, %zu of %zu judged vectors pass", check.passed() ? "PASS" : "FAIL",
+              check.judged() - check.failed, check.judged());
+  if (check.not_supplied > 0) std::printf(" (%zu of %zu NOT SUPPLIED)", check.not_supplied, vectors.size());
+  std::printf("; report in %s/%s\n", a.out.c_str(), a.html ? "index.html" : "report.json");
+  std::printf("  %-28s %12s %6s %6s %6s %12s  %s\n", "group", "verdict", "PASS", "FAIL", "N/S", "worst ratio",
+              "worst vector");
   for (const auto& g : report["groups"])
-    std::printf("  %-28s %7s %6d %6d %12.3g  %s\n", g["name"].get<std::string>().c_str(),
+    std::printf("  %-28s %12s %6d %6d %6d %12.3g  %s\n", g["name"].get<std::string>().c_str(),
                 g["verdict"].get<std::string>().c_str(), g["passed"].get<int>(), g["failed"].get<int>(),
-                g["worst_ratio"].get<double>(), g["worst_id"].get<std::string>().c_str());
+                g["not_supplied"].get<int>(), g["worst_ratio"].get<double>(), g["worst_id"].get<std::string>().c_str());
   for (const auto& [name, q] : report["quantities"].items())
     if (q["not_judged"].get<int>() > 0)
       std::printf("  NOT JUDGED: %s of %d vectors (not in %s)\n", name.c_str(), q["not_judged"].get<int>(),
                   a.results.c_str());
   if (!check.passed())
-    throw std::runtime_error(std::to_string(check.failed) + " of " + std::to_string(vectors.size()) +
-                             " conformance vectors fail (details in " + a.out + ")");
+    throw std::runtime_error(std::to_string(check.failed) + " of " + std::to_string(check.judged()) +
+                             " judged conformance vectors fail (details in " + a.out + ")");
 }
 
 // The results of the reference BSDF reading another table set (f cos and pdf; the quantities that
@@ -217,6 +228,17 @@ void add_conformance_command(CLI::App& app) {
   chk->add_option("--out", c->out, "Report folder")->required();
   chk->add_option("--python", c->python, "Python interpreter with numpy, matplotlib and jinja2")->capture_default_str();
   chk->add_flag("--no-html", [c](int64_t) { c->html = false; }, "Write only report.json");
+  chk->add_option("--groups", c->selection.groups,
+                  "Judge only the vectors of these groups (comma-separated: plain_metal, sheen, ...; the report "
+                  "lists them)")
+      ->delimiter(',');
+  chk->add_option("--components", c->selection.components,
+                  "Judge only the vectors whose material has one of these components (comma-separated: "
+                  "clearcoat, sheen, ...)")
+      ->delimiter(',');
+  chk->add_flag("--require-all", c->require_all,
+                "Every vector needs a result (by default a vector without one, or a quantity left out or null, "
+                "is NOT SUPPLIED and not judged)");
   chk->callback([c] { run_check(*c); });
 
   auto r = std::make_shared<ReferenceArgs>();

@@ -7,8 +7,10 @@
  *
  * The renderer plugs in through one function (renderer.h): link your own renderer_eval instead of
  * reference_renderer.cpp (the reference BSDF, used here so that the example passes). A GLSL or
- * HLSL implementation can be driven the same way: upload the materials and directions, read back
- * f cos. Exit status 0, or 2 with one line on stderr naming the file and the line. */
+ * HLSL implementation runs through `dspbr conformance run --glsl/--hlsl` instead. A vector the
+ * renderer does not support gets no line (NOT SUPPLIED), a pdf it does not compute an empty field.
+ * Exit status 0, or 2 with one line on stderr naming the file and the line. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -55,6 +57,16 @@ static int parse_numbers(char** fields, double* out, int count) {
   return 1;
 }
 
+/* One CSV field, quoted (RFC 4180: a quote inside doubled), so that an id with a comma stays one. */
+static void write_csv_field(FILE* out, const char* s) {
+  fputc('"', out);
+  for (; *s; ++s) {
+    if (*s == '"') fputc('"', out);
+    fputc(*s, out);
+  }
+  fputc('"', out);
+}
+
 int main(int argc, char** argv) {
   if (argc != 3) {
     fprintf(stderr, "usage: %s VECTORS.csv RESULTS.csv\n", argv[0]);
@@ -82,16 +94,21 @@ int main(int argc, char** argv) {
       continue;
     }
     if (len == 0) continue;
-    double vl[6], f_cos[3], pdf = 0;
+    double vl[6], f_cos[3], pdf = NAN;
     if (split_csv(line, f) < 11 || !parse_numbers(f + 5, vl, 6)) {
       fprintf(stderr, "%s: line %ld: malformed vector\n", argv[1], number);
       return 2;
     }
-    if (renderer_eval(f[3], f[4], vl, vl + 3, f_cos, &pdf) != 0) {
+    const int status = renderer_eval(f[3], f[4], vl, vl + 3, f_cos, &pdf);
+    if (status != RENDERER_OK && status != RENDERER_UNSUPPORTED) {
       fprintf(stderr, "%s: line %ld (id '%s'): the renderer cannot evaluate this material\n", argv[1], number, f[0]);
       return 2;
     }
-    fprintf(out, "%s,%.17g,%.17g,%.17g,%.17g\n", f[0], f_cos[0], f_cos[1], f_cos[2], pdf);
+    if (status == RENDERER_UNSUPPORTED) continue; /* no result: NOT SUPPLIED */
+    write_csv_field(out, f[0]);
+    fprintf(out, ",%.17g,%.17g,%.17g,", f_cos[0], f_cos[1], f_cos[2]);
+    if (!isnan(pdf)) fprintf(out, "%.17g", pdf); /* an empty field: not supplied */
+    fputc('\n', out);
     ++written;
   }
   fclose(in);

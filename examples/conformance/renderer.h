@@ -9,8 +9,11 @@ extern "C" {
  * {...}} (values not given are the generic defaults, docs/params.md); options_json: "" or
  * {"sheen": "ash"} / {"position": [...], "object_normal": [...]}; v, l: unit vectors in the local
  * frame of docs/bsdf.md (normal +z, both away from the surface). Writes f(v, l) |l.z| (delta lobes
- * excluded) and the sampler's pdf of l (0 when the renderer has none to compare). Returns 0, or
- * non-zero when the material cannot be evaluated. */
+ * excluded) and the sampler's pdf of l; *pdf is NAN on entry and left so when the renderer has no
+ * pdf to compare (the checker then does not judge it). Returns RENDERER_OK, RENDERER_UNSUPPORTED
+ * when the renderer does not implement the material (the vector is NOT SUPPLIED, not judged), or
+ * another value when the material cannot be evaluated (the harness stops). */
+enum { RENDERER_OK = 0, RENDERER_UNSUPPORTED = 1 };
 int renderer_eval(const char* material_json, const char* options_json, const double v[3], const double l[3],
                   double f_cos[3], double* pdf);
 

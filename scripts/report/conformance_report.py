@@ -28,7 +28,7 @@ td, th { border: 1px solid #bbb; padding: 0.2em 0.6em; text-align: left; font-si
 .NJ { color: #777; } code { font-size: 85%; }
 </style></head><body>
 <h1>DSPBR conformance: <span class="{{ r.verdict }}">{{ r.verdict }}</span></h1>
-<p>{{ r.summary.passed }} of {{ r.summary.vectors }} vectors pass. Vectors <code>{{ r.provenance.vectors }}</code>,
+<p>{{ r.summary.passed }} of {{ r.summary.vectors - r.summary.not_supplied }} judged vectors pass{% if r.summary.not_supplied %}; {{ r.summary.not_supplied }} of {{ r.summary.vectors }} NOT SUPPLIED (no quantity in the results){% endif %}. Vectors <code>{{ r.provenance.vectors }}</code>,
 results <code>{{ r.provenance.results }}</code>; {{ r.provenance.dspbr }}.
 A value passes when, per channel, |result − expected| ≤ abs + rel · |expected| (the vector's tolerance);
 the ratio is the error over that bound (≤ 1 passes).</p>
@@ -40,15 +40,15 @@ the ratio is the error over that bound (≤ 1 passes).</p>
 {% endfor %}</table>
 
 <h2>Verdict per group (the component a set of vectors tests)</h2>
-<table><tr><th>group</th><th>verdict</th><th>vectors</th><th>PASS</th><th>FAIL</th><th>worst ratio</th><th>worst vector</th></tr>
+<table><tr><th>group</th><th>verdict</th><th>vectors</th><th>PASS</th><th>FAIL</th><th>NOT SUPPLIED</th><th>worst ratio</th><th>worst vector</th></tr>
 {% for g in r.groups %}<tr><td>{{ g.name }}</td><td class="{{ g.verdict }}">{{ g.verdict }}</td><td>{{ g.vectors }}</td>
-<td>{{ g.passed }}</td><td>{{ g.failed }}</td><td>{{ "%.3g"|format(g.worst_ratio) }}</td><td><code>{{ g.worst_id }}</code></td></tr>
+<td>{{ g.passed }}</td><td>{{ g.failed }}</td><td class="NJ">{{ g.not_supplied }}</td><td>{{ "%.3g"|format(g.worst_ratio) }}</td><td><code>{{ g.worst_id }}</code></td></tr>
 {% endfor %}</table>
 
 <h2>Per active component (every vector whose material has it)</h2>
-<table><tr><th>component</th><th>verdict</th><th>vectors</th><th>PASS</th><th>FAIL</th><th>worst ratio</th><th>worst vector</th></tr>
+<table><tr><th>component</th><th>verdict</th><th>vectors</th><th>PASS</th><th>FAIL</th><th>NOT SUPPLIED</th><th>worst ratio</th><th>worst vector</th></tr>
 {% for g in r.components %}<tr><td>{{ g.name }}</td><td class="{{ g.verdict }}">{{ g.verdict }}</td><td>{{ g.vectors }}</td>
-<td>{{ g.passed }}</td><td>{{ g.failed }}</td><td>{{ "%.3g"|format(g.worst_ratio) }}</td><td><code>{{ g.worst_id }}</code></td></tr>
+<td>{{ g.passed }}</td><td>{{ g.failed }}</td><td class="NJ">{{ g.not_supplied }}</td><td>{{ "%.3g"|format(g.worst_ratio) }}</td><td><code>{{ g.worst_id }}</code></td></tr>
 {% endfor %}</table>
 
 <h2>Error distributions</h2>
@@ -59,7 +59,7 @@ the ratio is the error over that bound (≤ 1 passes).</p>
 <table><tr><th>id</th><th>verdict</th><th>ratio</th><th>v</th><th>l</th><th>expected f cos</th><th>result</th><th>tolerance</th><th>material</th></tr>
 {% for w in r.worst %}<tr><td><code>{{ w.id }}</code></td><td class="{{ w.verdict }}">{{ w.verdict }}</td>
 <td>{{ "%.3g"|format(w.worst_ratio) }}</td><td>{{ vec(w.v) }}</td><td>{{ vec(w.l) }}</td><td>{{ vec(w.f_cos) }}</td>
-<td>{{ vec(w.result.f_cos) }}{% if w.result.pdf is defined %}<br>pdf {{ "%.6g"|format(w.result.pdf) }} (expected {{ "%.6g"|format(w.pdf) }}){% endif %}</td>
+<td>{% if w.result.f_cos is defined %}{{ vec(w.result.f_cos) }}{% else %}f cos not supplied{% endif %}{% if w.result.pdf is defined %}<br>pdf {{ "%.6g"|format(w.result.pdf) }} (expected {{ "%.6g"|format(w.pdf) }}){% endif %}</td>
 <td>abs {{ "%.3g"|format(w.tolerance.abs) }}, rel {{ "%.3g"|format(w.tolerance.rel) }}</td>
 <td><code>{{ w.material['values']|tojson }}</code>{% if w.options is defined %}<br>options <code>{{ w.options|tojson }}</code>{% endif %}</td></tr>
 {% endfor %}</table>

@@ -4,8 +4,11 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <set>
+#include <stdexcept>
 
 #include "dspbr/conformance/vector_file.h"
+#include "dspbr/io/message.h"
 
 namespace dspbr::conformance {
 
@@ -61,16 +64,17 @@ Check check_results(const std::vector<Vector>& vectors, const std::vector<Result
     const Vector& v = vectors[i];
     const Result& r = results[i];
     VectorVerdict x;
-    x.ratio[int(Quantity::FCos)] = rgb_ratio(v.tolerance, r.f_cos, v.f_cos);
+    if (r.f_cos) x.ratio[int(Quantity::FCos)] = rgb_ratio(v.tolerance, *r.f_cos, v.f_cos);
     if (r.pdf) x.ratio[int(Quantity::Pdf)] = v.pdf_tolerance.ratio(*r.pdf, v.pdf);
     if (r.albedo && v.albedo) x.ratio[int(Quantity::Albedo)] = rgb_ratio(v.albedo_tolerance, *r.albedo, *v.albedo);
     if (r.emission && v.emission)
       x.ratio[int(Quantity::Emission)] = rgb_ratio(v.emission_tolerance, *r.emission, *v.emission);
     if (r.delta) x.ratio[int(Quantity::Delta)] = delta_ratio(v.delta_tolerance, *r.delta, v.delta);
     for (const auto& q : x.ratio)
-      if (q) x.worst_ratio = std::max(x.worst_ratio, *q);
-    x.passed = x.worst_ratio <= 1;
-    c.failed += x.passed ? 0 : 1;
+      if (q) x.worst_ratio = std::max(x.worst_ratio, *q), x.supplied = true;
+    x.passed = x.supplied && x.worst_ratio <= 1;
+    c.failed += x.supplied && !x.passed ? 1 : 0;
+    c.not_supplied += x.supplied ? 0 : 1;
     c.verdicts.push_back(x);
   }
   return c;
@@ -83,16 +87,20 @@ OJson check_report(const std::vector<Vector>& vectors, const std::vector<Result>
   rep["version"] = kFormatVersion;
   rep["provenance"] = provenance;
   rep["verdict"] = check.passed() ? "PASS" : "FAIL";
-  rep["summary"] = {{"vectors", vectors.size()}, {"passed", vectors.size() - check.failed}, {"failed", check.failed}};
+  rep["summary"] = {{"vectors", vectors.size()},
+                    {"passed", check.judged() - check.failed},
+                    {"failed", check.failed},
+                    {"not_supplied", check.not_supplied}};
 
-  // Per quantity: judged where both the vector has the expectation and the results supply it.
+  // Per quantity: judged where both the vector has the expectation and the results supply it; not
+  // judged where a vector with a result lacks it.
   OJson quantities = OJson::object();
   for (int q = 0; q < kQuantities; ++q) {
     std::size_t judged = 0, passed = 0, not_judged = 0;
     for (std::size_t i = 0; i < vectors.size(); ++i) {
       const auto& r = check.verdicts[i].ratio[q];
       if (r) ++judged, passed += *r <= 1 ? 1 : 0;
-      else {
+      else if (check.verdicts[i].supplied) {  // (a vector not supplied at all is counted as such)
         const Vector& v = vectors[i];
         const bool expected = q == int(Quantity::FCos) || q == int(Quantity::Pdf) ||
                               (q == int(Quantity::Albedo) && v.albedo) || (q == int(Quantity::Emission) && v.emission) ||
@@ -114,13 +122,16 @@ OJson check_report(const std::vector<Vector>& vectors, const std::vector<Result>
         auto it = acc.find(k);
         if (it == acc.end()) {
           order.push_back(k);
-          it = acc.emplace(k, OJson{{"name", k}, {"verdict", "PASS"}, {"vectors", 0}, {"passed", 0}, {"failed", 0},
-                                    {"worst_ratio", 0.0}, {"worst_id", vectors[i].id}}).first;
+          it = acc.emplace(k, OJson{{"name", k}, {"verdict", "NOT SUPPLIED"}, {"vectors", 0}, {"passed", 0}, {"failed", 0},
+                                    {"not_supplied", 0}, {"worst_ratio", 0.0}, {"worst_id", vectors[i].id}}).first;
         }
         OJson& g = it->second;
         g["vectors"] = g["vectors"].get<int>() + 1;
-        g[x.passed ? "passed" : "failed"] = g[x.passed ? "passed" : "failed"].get<int>() + 1;
-        if (!x.passed) g["verdict"] = "FAIL";
+        const char* count = !x.supplied ? "not_supplied" : (x.passed ? "passed" : "failed");
+        g[count] = g[count].get<int>() + 1;
+        // FAIL when one fails; PASS when one passes and none fails; else NOT SUPPLIED.
+        if (x.supplied && !x.passed) g["verdict"] = "FAIL";
+        else if (x.passed && g["verdict"] == "NOT SUPPLIED") g["verdict"] = "PASS";
         if (x.worst_ratio > g["worst_ratio"].get<double>()) {
           g["worst_ratio"] = std::min(x.worst_ratio, 1e300);
           g["worst_id"] = vectors[i].id;
@@ -141,15 +152,17 @@ OJson check_report(const std::vector<Vector>& vectors, const std::vector<Result>
     return check.verdicts[a].worst_ratio > check.verdicts[b].worst_ratio;
   });
   OJson worst_list = OJson::array();
-  for (std::size_t k = 0; k < std::min(worst, order.size()); ++k) {
+  for (std::size_t k = 0; k < order.size() && worst_list.size() < worst; ++k) {
     const std::size_t i = order[k];
+    if (!check.verdicts[i].supplied) continue;
     OJson w = vector_json(vectors[i]);
-    OJson got{{"f_cos", {results[i].f_cos.r, results[i].f_cos.g, results[i].f_cos.b}}};
+    OJson got = OJson::object();
+    if (results[i].f_cos) got["f_cos"] = {results[i].f_cos->r, results[i].f_cos->g, results[i].f_cos->b};
     if (results[i].pdf) got["pdf"] = *results[i].pdf;
     if (results[i].albedo) got["albedo"] = {results[i].albedo->r, results[i].albedo->g, results[i].albedo->b};
     if (results[i].emission) got["emission"] = {results[i].emission->r, results[i].emission->g, results[i].emission->b};
     w["result"] = got;
-    w["verdict"] = check.verdicts[i].passed ? "PASS" : "FAIL";
+    w["verdict"] = check.verdicts[i].verdict();
     w["worst_ratio"] = std::min(check.verdicts[i].worst_ratio, 1e300);
     worst_list.push_back(w);
   }
@@ -160,16 +173,52 @@ OJson check_report(const std::vector<Vector>& vectors, const std::vector<Result>
   for (std::size_t i = 0; i < vectors.size(); ++i) {
     const VectorVerdict& x = check.verdicts[i];
     const Vector& v = vectors[i];
-    const Rgb& got = results[i].f_cos;
-    double rel = 0;
-    for (auto [g, e] : {std::pair{got.r, v.f_cos.r}, {got.g, v.f_cos.g}, {got.b, v.f_cos.b}})
-      rel = std::max(rel, std::abs(g - e) / std::max(std::abs(e), v.tolerance.abs));
-    OJson j{{"id", v.id}, {"group", v.group}, {"verdict", x.passed ? "PASS" : "FAIL"}, {"f_cos_error", std::min(rel, 1e300)}};
+    OJson error = nullptr;  // f cos not supplied
+    if (const auto& got = results[i].f_cos) {
+      double rel = 0;
+      for (auto [g, e] : {std::pair{got->r, v.f_cos.r}, {got->g, v.f_cos.g}, {got->b, v.f_cos.b}})
+        rel = std::max(rel, std::abs(g - e) / std::max(std::abs(e), v.tolerance.abs));
+      error = std::min(rel, 1e300);
+    }
+    OJson j{{"id", v.id}, {"group", v.group}, {"verdict", x.verdict()}, {"f_cos_error", error}};
     for (int q = 0; q < kQuantities; ++q) j[std::string(quantity_name(Quantity(q))) + "_ratio"] = ratio_json(x.ratio[q]);
     all.push_back(j);
   }
   rep["vectors"] = all;
   return rep;
+}
+
+void select_vectors(const Selection& s, std::vector<Vector>& vectors, std::vector<Result>& results) {
+  // Every name asked for must be one of the set's, else a misspelling would silently judge nothing.
+  const auto check_names = [&](const std::vector<std::string>& asked, const char* option, auto names_of) {
+    std::set<std::string> known;
+    for (const Vector& v : vectors)
+      for (const std::string& n : names_of(v)) known.insert(n);
+    for (const std::string& a : asked)
+      if (!known.count(a)) {
+        std::string list;
+        for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+        throw std::invalid_argument(std::string(option) + ": no vector has " + in_quotes(a) + " (the set has: " + list + ")");
+      }
+  };
+  check_names(s.groups, "--groups", [](const Vector& v) { return std::vector<std::string>{v.group}; });
+  check_names(s.components, "--components", [](const Vector& v) { return v.components; });
+  const auto has = [](const std::vector<std::string>& list, const std::string& x) {
+    return std::find(list.begin(), list.end(), x) != list.end();
+  };
+  std::vector<Vector> kept_vectors;
+  std::vector<Result> kept_results;
+  for (std::size_t i = 0; i < vectors.size(); ++i) {
+    bool keep = s.groups.empty() || has(s.groups, vectors[i].group);
+    if (keep && !s.components.empty())
+      keep = std::any_of(vectors[i].components.begin(), vectors[i].components.end(),
+                         [&](const std::string& c) { return has(s.components, c); });
+    if (!keep) continue;
+    kept_vectors.push_back(std::move(vectors[i]));
+    kept_results.push_back(std::move(results[i]));
+  }
+  vectors = std::move(kept_vectors);
+  results = std::move(kept_results);
 }
 
 }  // namespace dspbr::conformance

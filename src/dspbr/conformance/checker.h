@@ -2,7 +2,8 @@
 // "Checking"): each supplied quantity of each vector within its tolerance (per channel
 // |result - expected| <= abs + rel |expected|); a vector passes when every quantity judged
 // passes; a group (the component a set of vectors tests, "plain_metal", ...) passes when all its
-// vectors do. Quantities a results file does not supply are NOT JUDGED (f cos is always supplied).
+// vectors do. Quantities a results file does not supply are NOT JUDGED; a vector of which no
+// quantity is judged is NOT SUPPLIED (neither passes nor fails), and so is a group of such vectors.
 #pragma once
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -23,15 +24,26 @@ struct VectorVerdict {
   // Per quantity: the worst channel's error over its tolerance (<= 1 passes); nullopt when the
   // vector has no such expectation or the results do not supply it (NOT JUDGED).
   std::optional<double> ratio[kQuantities];
-  bool passed = true;
+  bool supplied = false;  // a quantity is judged
+  bool passed = false;    // supplied and every judged quantity within its tolerance
   double worst_ratio = 0;  // over the judged quantities
+  const char* verdict() const { return !supplied ? "NOT SUPPLIED" : (passed ? "PASS" : "FAIL"); }
 };
 
 struct Check {
   std::vector<VectorVerdict> verdicts;  // in the order of the vectors
-  std::size_t failed = 0;
+  std::size_t failed = 0, not_supplied = 0;
+  std::size_t judged() const { return verdicts.size() - not_supplied; }
   bool passed() const { return failed == 0; }
 };
+
+// The vectors to judge (`dspbr conformance check --groups/--components`): those in one of
+// `groups` (all when empty) whose material has one of `components` (all when empty). Throws
+// std::invalid_argument naming a group or component no vector has, with the known ones.
+struct Selection {
+  std::vector<std::string> groups, components;
+};
+void select_vectors(const Selection& s, std::vector<Vector>& vectors, std::vector<Result>& results);
 
 // `results` in the order of `vectors` (match_results).
 Check check_results(const std::vector<Vector>& vectors, const std::vector<Result>& results);

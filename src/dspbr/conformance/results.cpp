@@ -36,11 +36,13 @@ std::vector<Result> parse_json_results(std::string_view bytes, const std::string
         if (key != "id" && key != "f_cos" && key != "pdf" && key != "albedo" && key != "emission" && key != "delta")
           throw std::runtime_error(w + ": unknown member " + in_quotes(key) +
                                    " (known: id, f_cos, pdf, albedo, emission, delta)");
-      r.f_cos = read_rgb(arr[i], "f_cos", w);
-      if (arr[i].contains("pdf")) r.pdf = jf::number_member(arr[i], "pdf", w);
-      if (arr[i].contains("albedo")) r.albedo = read_rgb(arr[i], "albedo", w);
-      if (arr[i].contains("emission")) r.emission = read_rgb(arr[i], "emission", w);
-      if (arr[i].contains("delta")) {
+      // A member left out or null: not supplied (not judged).
+      const auto supplied = [&](const char* key) { return arr[i].contains(key) && !arr[i][key].is_null(); };
+      if (supplied("f_cos")) r.f_cos = read_rgb(arr[i], "f_cos", w);
+      if (supplied("pdf")) r.pdf = jf::number_member(arr[i], "pdf", w);
+      if (supplied("albedo")) r.albedo = read_rgb(arr[i], "albedo", w);
+      if (supplied("emission")) r.emission = read_rgb(arr[i], "emission", w);
+      if (supplied("delta")) {
         const Json& d = jf::array_member(arr[i], "delta", w);
         std::vector<DeltaExpectation> lobes;
         for (std::size_t k = 0; k < d.size(); ++k) {
@@ -95,6 +97,14 @@ double csv_number(const std::string& text, const std::string& column, const std:
   return x;
 }
 
+// Three fields NAME_r, NAME_g, NAME_b from f[c]: all empty is not supplied.
+std::optional<Rgb> csv_rgb(const std::vector<std::string>& f, std::size_t c, const std::string& name,
+                           const std::string& where) {
+  if (f[c].empty() && f[c + 1].empty() && f[c + 2].empty()) return std::nullopt;
+  return Rgb{csv_number(f[c], name + "_r", where), csv_number(f[c + 1], name + "_g", where),
+             csv_number(f[c + 2], name + "_b", where)};
+}
+
 std::vector<Result> parse_csv_results(std::string_view bytes, const std::string& path) {
   std::vector<std::string> lines;
   std::size_t start = 0;
@@ -135,13 +145,11 @@ std::vector<Result> parse_csv_results(std::string_view bytes, const std::string&
       Result r;
       r.id = f[0];
       std::size_t c = 1;
-      r.f_cos = {csv_number(f[c], "f_cos_r", where), csv_number(f[c + 1], "f_cos_g", where),
-                 csv_number(f[c + 2], "f_cos_b", where)};
+      r.f_cos = csv_rgb(f, c, "f_cos", where);
       c += 3;
-      if (has_pdf) r.pdf = csv_number(f[c++], "pdf", where);
-      if (has_albedo)
-        r.albedo = Rgb{csv_number(f[c], "albedo_r", where), csv_number(f[c + 1], "albedo_g", where),
-                       csv_number(f[c + 2], "albedo_b", where)};
+      if (has_pdf && !f[c].empty()) r.pdf = csv_number(f[c], "pdf", where);
+      c += has_pdf ? 1 : 0;
+      if (has_albedo) r.albedo = csv_rgb(f, c, "albedo", where);
       out.push_back(std::move(r));
     }
   } catch (const std::runtime_error& e) {
@@ -165,7 +173,7 @@ std::vector<Result> read_results(const std::string& path) {
 }
 
 std::vector<Result> match_results(const std::vector<Vector>& vectors, std::vector<Result> results,
-                                  const std::string& path, const std::string& vectors_path) {
+                                  const std::string& path, const std::string& vectors_path, bool require_all) {
   std::map<std::string, std::size_t> index;
   for (std::size_t i = 0; i < vectors.size(); ++i) index[vectors[i].id] = i;
   std::vector<std::optional<Result>> slot(vectors.size());
@@ -183,14 +191,14 @@ std::vector<Result> match_results(const std::vector<Vector>& vectors, std::vecto
   for (std::size_t i = 0; i < vectors.size(); ++i) {
     if (!slot[i]) {
       if (missing++ == 0) first_missing = vectors[i].id;
-      continue;
+      slot[i] = Result{vectors[i].id, std::nullopt, std::nullopt, std::nullopt, std::nullopt, std::nullopt};
     }
     out.push_back(std::move(*slot[i]));
   }
-  if (missing > 0)
+  if (missing > 0 && require_all)
     fail(path, "no result for vector " + in_quotes(first_missing) +
                    (missing > 1 ? " (and " + std::to_string(missing - 1) + " more)" : std::string()) +
-                   ": every vector of " + vectors_path + " needs a result");
+                   ": every vector of " + vectors_path + " needs a result (--require-all)");
   return out;
 }
 

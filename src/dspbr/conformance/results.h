@@ -1,9 +1,10 @@
 // An implementer's results for a conformance vector set (docs/conformance.md, "Results"):
-//   JSON {"results": [{"id": str, "f_cos": [r,g,b], "pdf": number (optional), "albedo": [r,g,b]
-//        (optional), "emission": [r,g,b] (optional), "delta": [{"l": [x,y,z], "value": [r,g,b]}]
-//        (optional)}]}
+//   JSON {"results": [{"id": str, "f_cos": [r,g,b], "pdf": number, "albedo": [r,g,b],
+//        "emission": [r,g,b], "delta": [{"l": [x,y,z], "value": [r,g,b]}]}]}
 //   or CSV with the header id,f_cos_r,f_cos_g,f_cos_b[,pdf][,albedo_r,albedo_g,albedo_b]
-// told apart by the first non-blank byte ('{' is JSON). Every problem is a std::runtime_error with
+// told apart by the first non-blank byte ('{' is JSON). Every quantity may be not supplied: a JSON
+// member left out or null, CSV fields left empty (all three of a colour); a vector may have no
+// result at all. What is not supplied is not judged (checker.h). Every problem is a std::runtime_error with
 // one line naming the file and the record: "<path>: results[3] (id 'x'): f_cos[1] must be a finite
 // number, got null", "<path>: line 7 (id 'x'): pdf is not a finite number: 'nan'", missing and
 // unknown ids, duplicates, wrong shapes.
@@ -19,7 +20,7 @@ namespace dspbr::conformance {
 
 struct Result {
   std::string id;
-  Rgb f_cos;
+  std::optional<Rgb> f_cos;
   std::optional<double> pdf;
   std::optional<Rgb> albedo;
   std::optional<Rgb> emission;
@@ -31,10 +32,11 @@ std::vector<Result> read_results(const std::string& path);
 // Same from the file's bytes; `path` names it in messages.
 std::vector<Result> parse_results(std::string_view bytes, const std::string& path);
 
-// The results in the order of `vectors`. Throws "<path>: no result for vector 'x' (and N more)"
-// when a vector has none and "<path>: <record>: id 'x' is not a vector of <vectors_path>" for a
-// result of no vector.
+// The results in the order of `vectors`; a vector without one gets a Result that supplies
+// nothing. Throws "<path>: <record>: id 'x' is not a vector of <vectors_path>" for a result of no
+// vector, and with `require_all` "<path>: no result for vector 'x' (and N more)" when a vector has
+// none.
 std::vector<Result> match_results(const std::vector<Vector>& vectors, std::vector<Result> results,
-                                  const std::string& path, const std::string& vectors_path);
+                                  const std::string& path, const std::string& vectors_path, bool require_all = false);
 
 }  // namespace dspbr::conformance
