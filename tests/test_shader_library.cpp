@@ -23,7 +23,7 @@
 #include "dspbr/validate/chi2.h"
 #include "dspbr/validate/reciprocity.h"
 #include "dspbr/validate/stability.h"
-#include "gltf_factors.h"
+#include "dspbr/shader/gltf_factors.h"
 #include "shader_material.h"
 
 using namespace dspbr;
@@ -200,7 +200,7 @@ TEST(ShaderLibrary, GltfMappingAsTheImporter) {
     const auto mapped = gltf::map_materials(gltf::read_gltf(f));
     for (std::size_t i = 0; i < mapped.size(); ++i) {
       SCOPED_TRACE(f + " material " + std::to_string(i));
-      const dspbr_shader::DspbrMaterial got = dspbr_shader::dspbr_material_from_gltf(sphere::gltf_factors(doc["materials"][i]));
+      const dspbr_shader::DspbrMaterial got = dspbr_shader::dspbr_material_from_gltf(dspbr::shader::gltf_factors(doc["materials"][i]));
       const dspbr_shader::DspbrMaterial want = shader_test::to_shader_material(mapped[i].material);
       const auto a = shader_test::material_fields(got), b = shader_test::material_fields(want);
       ASSERT_EQ(a.size(), b.size());

@@ -1,5 +1,5 @@
-# The Vulkan programs, on the Vulkan plumbing of examples/vulkan/vk_compute.h (one compute shader,
-# its buffers and the lookup tables as textures; library dspbr_vk_compute):
+# The Vulkan programs, on the Vulkan plumbing of src/dspbr/vulkan/vk_compute.h (one compute shader,
+# its buffers and the lookup tables as textures; library dspbr_vulkan):
 # 1. The generated GLSL lookups and fits on a real Vulkan driver (tests/vulkan/vulkan_lookup.cpp):
 # tests/shaders/vulkan_lookup.comp compiled to SPIR-V by glslangValidator in texture mode (the
 # tables uploaded from the committed luts/renderer/*.exr as R32F images, bound as the headers
@@ -23,14 +23,9 @@ find_program(DSPBR_GLSLANG_VK glslangValidator)
 set(_vk_tests vulkan_lookup_textures vulkan_lookup_arrays_1d vulkan_sphere_example)
 if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
   set(_vk_dir ${PROJECT_SOURCE_DIR}/examples/vulkan)
-  add_library(dspbr_vk_compute STATIC ${_vk_dir}/vk_compute.cpp ${_vk_dir}/lookup_textures.cpp)
-  target_include_directories(dspbr_vk_compute PUBLIC ${_vk_dir})
-  target_link_libraries(dspbr_vk_compute PUBLIC Vulkan::Vulkan PRIVATE PkgConfig::OIIO)
-  # `VkXxxInfo x{VK_STRUCTURE_TYPE_...}`: the other members zero, as Vulkan code writes it.
-  target_compile_options(dspbr_vk_compute PRIVATE -Wall -Wextra -Wno-missing-field-initializers)
   add_executable(vulkan_lookup ${CMAKE_CURRENT_LIST_DIR}/vulkan/vulkan_lookup.cpp)
   target_include_directories(vulkan_lookup PRIVATE ${PROJECT_SOURCE_DIR}/luts ${PROJECT_SOURCE_DIR}/fits)
-  target_link_libraries(vulkan_lookup PRIVATE dspbr_vk_compute)
+  target_link_libraries(vulkan_lookup PRIVATE dspbr_vulkan)
   target_compile_options(vulkan_lookup PRIVATE -Wall -Wextra)
   set(_spv_files "")
   foreach(mode textures arrays-1d)
@@ -62,9 +57,9 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
     DEPENDS ${_vk_dir}/sphere.comp ${_sphere_deps} ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl
     COMMENT "glslangValidator: sphere.comp" VERBATIM)
   add_custom_target(vulkan_sphere_shader ALL DEPENDS ${_spv})
-  add_executable(example_vulkan_sphere ${_vk_dir}/sphere.cpp ${_vk_dir}/sphere_scene.cpp ${_vk_dir}/gltf_factors.cpp)
+  add_executable(example_vulkan_sphere ${_vk_dir}/sphere.cpp ${_vk_dir}/sphere_scene.cpp)
   add_dependencies(example_vulkan_sphere vulkan_sphere_shader)
-  target_link_libraries(example_vulkan_sphere PRIVATE dspbr_vk_compute dspbr_formats dspbr_shaders PkgConfig::OIIO
+  target_link_libraries(example_vulkan_sphere PRIVATE dspbr_vulkan dspbr_shader_host dspbr_formats PkgConfig::OIIO
                                                       nlohmann_json::nlohmann_json)
   target_compile_options(example_vulkan_sphere PRIVATE -Wall -Wextra)
   add_test(NAME vulkan_sphere_example

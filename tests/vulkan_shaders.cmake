@@ -33,19 +33,20 @@ target_compile_options(shader_cpp_warnings PRIVATE -Wall -Wextra -Wpedantic -Wco
                        -Wfloat-conversion -Wsign-conversion -Werror)
 add_test(NAME shader_cpp_warnings COMMAND shader_cpp_warnings)
 
-# The helpers, and the example's glTF loader for the shader library (examples/vulkan/gltf_factors.h).
-add_library(dspbr_shader_test STATIC ${_sl}/shader_material.cpp ${PROJECT_SOURCE_DIR}/examples/vulkan/gltf_factors.cpp)
-target_include_directories(dspbr_shader_test PUBLIC ${_sl} ${PROJECT_SOURCE_DIR}/examples/vulkan)
-target_link_libraries(dspbr_shader_test PUBLIC dspbr_shaders dspbr_conformance nlohmann_json::nlohmann_json)
+# The helpers, over the shader library's host side (src/dspbr/shader/).
+add_library(dspbr_shader_test STATIC ${_sl}/shader_material.cpp)
+target_include_directories(dspbr_shader_test PUBLIC ${_sl})
+target_link_libraries(dspbr_shader_test PUBLIC dspbr_shader_host dspbr_conformance nlohmann_json::nlohmann_json)
 target_compile_options(dspbr_shader_test PRIVATE -Wall -Wextra)
 # The GoogleTest cases of tests/test_shader_library.cpp (chi-square, stability, reciprocity,
 # emission and delta lobes of the C++ compile) use the same helpers.
 target_link_libraries(dspbr_tests PRIVATE dspbr_shader_test)
 # The same helpers in the fits mode (DSPBR_USE_FITS: the LUT-free fits instead of the tables), for
 # shader_cpp_conformance_fits.
-add_library(dspbr_shader_test_fits STATIC ${_sl}/shader_material.cpp ${PROJECT_SOURCE_DIR}/examples/vulkan/gltf_factors.cpp)
-target_include_directories(dspbr_shader_test_fits PUBLIC ${_sl} ${PROJECT_SOURCE_DIR}/examples/vulkan)
-target_link_libraries(dspbr_shader_test_fits PUBLIC dspbr_shaders dspbr_conformance nlohmann_json::nlohmann_json)
+# (The host side maps materials alone: the same in both modes.)
+add_library(dspbr_shader_test_fits STATIC ${_sl}/shader_material.cpp)
+target_include_directories(dspbr_shader_test_fits PUBLIC ${_sl})
+target_link_libraries(dspbr_shader_test_fits PUBLIC dspbr_shader_host dspbr_conformance nlohmann_json::nlohmann_json)
 target_compile_definitions(dspbr_shader_test_fits PUBLIC DSPBR_USE_FITS)
 target_compile_options(dspbr_shader_test_fits PRIVATE -Wall -Wextra)
 add_executable(shader_cpp_conformance ${_sl}/shader_cpp_conformance.cpp)
@@ -91,7 +92,7 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
            COMMAND sh -c "out=$('${DSPBR_GLSLANG_VK}' ${_sl_hlsl_cmd} -o /dev/null '${_sl}/conformance.hlsl' 2>&1) && \
 ! printf '%s' \"$out\" | grep -E 'WARNING|ERROR'")
   add_executable(shader_vk_conformance ${_sl}/shader_vk_conformance.cpp)
-  target_link_libraries(shader_vk_conformance PRIVATE dspbr_shader_test dspbr_vk_compute)
+  target_link_libraries(shader_vk_conformance PRIVATE dspbr_shader_test dspbr_vulkan)
   target_compile_options(shader_vk_conformance PRIVATE -Wall -Wextra)
   add_dependencies(shader_vk_conformance shader_conformance_kernels)
   foreach(lang glsl hlsl)
@@ -106,7 +107,7 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
   endforeach()
   # Chi-square of sample against pdf with both computed on the device (the GLSL kernel).
   add_executable(shader_vk_chi2 ${_sl}/shader_vk_chi2.cpp)
-  target_link_libraries(shader_vk_chi2 PRIVATE dspbr_shader_test dspbr_vk_compute dspbr_validate)
+  target_link_libraries(shader_vk_chi2 PRIVATE dspbr_shader_test dspbr_vulkan dspbr_validate)
   target_compile_options(shader_vk_chi2 PRIVATE -Wall -Wextra)
   add_dependencies(shader_vk_chi2 shader_conformance_kernels)
   # Every case in GLSL; every third in HLSL (the same body through glslang's HLSL front end).

@@ -1,6 +1,6 @@
 // A renderer-side example of the shader library (CTest vulkan_sphere_example; docs/renderer.md,
 // "How it is checked"): every material of the validation scenes (data/dspbr/scenes/sphere, read
-// from glTF as a renderer would: gltf_factors.h, dspbr_material_from_gltf) on a sphere under a point
+// from glTF as a renderer would: dspbr/shader/gltf_factors.h, dspbr_material_from_gltf) on a sphere under a point
 // light, shaded on the GPU by sphere.comp with the whole BSDF of dspbr.glsl (the tables
 // luts/renderer/*.exr uploaded as textures), written to an EXR, and compared with the reference BSDF
 // (dspbr::MaterialBsdf of the project's glTF importer) evaluated on the CPU in double for the same
@@ -22,7 +22,7 @@
 #include "dspbr/frame.h"
 #include "dspbr/tables/lut_set.h"
 #include "sphere_scene.h"
-#include "vk_compute.h"
+#include "dspbr/vulkan/vk_compute.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 
 #include "dspbr/gltf/gltf_file.h"
 #include "dspbr/gltf/gltf_material.h"
-#include "gltf_factors.h"
+#include "dspbr/shader/gltf_factors.h"
 
 namespace sphere {
 
@@ -28,7 +28,7 @@ std::vector<SceneMaterial> materials(const std::string& folder) {
     for (std::size_t i = 0; i < mapped.size(); ++i) {
       SceneMaterial m;
       m.name = f.stem().string() + (mapped.size() > 1 ? "#" + std::to_string(i) : "");
-      m.shader = dspbr_shader::dspbr_material_from_gltf(gltf_factors(doc["materials"][i]));
+      m.shader = dspbr_shader::dspbr_material_from_gltf(dspbr::shader::gltf_factors(doc["materials"][i]));
       m.reference = mapped[i].material;
       out.push_back(m);
     }

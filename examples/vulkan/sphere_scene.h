@@ -13,7 +13,7 @@
 namespace sphere {
 
 // One material of the validation scenes, both ways: the shader library's, from the glTF factors
-// (gltf_factors.h, dspbr_material_from_gltf), and the reference's, from the project's glTF
+// (dspbr/shader/gltf_factors.h, dspbr_material_from_gltf), and the reference's, from the project's glTF
 // importer (src/dspbr/gltf).
 struct SceneMaterial {
   std::string name;  // file stem, and "#i" for the i-th material of a file with several

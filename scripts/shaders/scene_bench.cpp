@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "dspbr.h"
-#include "gltf_factors.h"
+#include "dspbr/shader/gltf_factors.h"
 
 namespace {
 
@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::ifstream in(argv[1]);
-  g_material = dspbr_material_from_gltf(sphere::gltf_factors(nlohmann::json::parse(in)["materials"][0]));
+  g_material = dspbr_material_from_gltf(dspbr::shader::gltf_factors(nlohmann::json::parse(in)["materials"][0]));
   directions();
   benchmark::RegisterBenchmark("bare_ggx", bare_ggx);
   benchmark::RegisterBenchmark("prepare_eval", prepare_eval);

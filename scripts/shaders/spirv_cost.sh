@@ -38,8 +38,8 @@ print("%.0f ns (%.1f\u00d7)" % (med["prepare_eval"], med["prepare_eval"] / med["
 }
 build_bench() {  # build_bench OUT [-include HEADER]
   local out=$1; shift
-  g++ -std=c++17 -O2 "$@" -I"$here/shaders" -I"$here/luts" -I"$here/examples/vulkan" -o "$out" \
-    "$here/scripts/shaders/scene_bench.cpp" "$here/examples/vulkan/gltf_factors.cpp" -lbenchmark -lpthread
+  g++ -std=c++17 -O2 "$@" -I"$here/shaders" -I"$here/luts" -I"$here/src" -o "$out" \
+    "$here/scripts/shaders/scene_bench.cpp" "$here/src/dspbr/shader/gltf_factors.cpp" -lbenchmark -lpthread
 }
 build_bench "$tmp/generic"
 echo

@@ -24,6 +24,10 @@ ALLOWED = {
     "validate": CORE + ["lutgen", "validate"],
     "fit": CORE + ["lutgen", "validate", "fit"],
     "conformance": CORE + ["params", "gltf", "scene", "conformance"],
+    # Not components (not installed): the shader library's host side and the Vulkan plumbing of
+    # `dspbr conformance run` and the shader tests.
+    "shader": CORE + ["shader"],
+    "vulkan": CORE + ["vulkan"],
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+"dspbr/(?:([a-z_]+)/)?[a-z_0-9]+\.h"', re.M)
 

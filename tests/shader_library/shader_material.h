@@ -1,5 +1,5 @@
 // Host-side helpers of the shader-library tests (tests/shader_library/): the reference material
-// (dspbr::Material) as the shader library's DspbrMaterial, field by field (the same names), its
+// as the shader library's DspbrMaterial (src/dspbr/shader/material_mapping.h), its
 // packing into the float records the device kernels read (kernel_common.glsl, in pack_record's
 // order), the verdict on a set of results, and the library behind the reference's Bsdf interface.
 #pragma once
@@ -13,12 +13,13 @@
 #include "dspbr/conformance/vector.h"
 #include "dspbr/conformance/vector_set.h"
 #include "dspbr/material.h"
+#include "dspbr/shader/material_mapping.h"
 #include "dspbr/validate/chi2.h"
 
 namespace shader_test {
 
-dspbr_shader::DspbrMaterial to_shader_material(const dspbr::Material& m);
-dspbr_shader::DspbrOptions to_shader_options(const dspbr::BsdfOptions& o);
+using dspbr::shader::to_shader_material;
+using dspbr::shader::to_shader_options;
 // Every field of a DspbrMaterial by name (vec3 fields as name.x, .y, .z), for comparisons.
 std::vector<std::pair<std::string, double>> material_fields(const dspbr_shader::DspbrMaterial& m);
 

@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "shader_material.h"
-#include "vk_compute.h"
+#include "dspbr/vulkan/vk_compute.h"
 
 namespace {
 

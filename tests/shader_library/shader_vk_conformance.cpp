@@ -16,7 +16,7 @@
 
 #include "dspbr/conformance/vector_file.h"
 #include "shader_material.h"
-#include "vk_compute.h"
+#include "dspbr/vulkan/vk_compute.h"
 
 int main(int argc, char** argv) {
   std::string results_path, ids;

@@ -24,7 +24,7 @@
 // The glass header uses the main one's helpers.
 #include "dspbr_lookup.h"
 #include "dspbr_glass_lookup.h"
-#include "vk_compute.h"
+#include "dspbr/vulkan/vk_compute.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "vk_compute.h"
+#include "dspbr/vulkan/vk_compute.h"
 
 #include <cstring>
 #include <fstream>

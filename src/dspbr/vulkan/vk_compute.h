@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "lookup_textures.h"
+#include "dspbr/vulkan/lookup_textures.h"
 
 namespace vk_compute {
 

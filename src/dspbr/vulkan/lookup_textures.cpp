@@ -1,4 +1,4 @@
-#include "lookup_textures.h"
+#include "dspbr/vulkan/lookup_textures.h"
 
 #include <OpenImageIO/imageio.h>
 

@@ -1,8 +1,8 @@
-#include "gltf_factors.h"
+#include "dspbr/shader/gltf_factors.h"
 
 #include <string>
 
-namespace sphere {
+namespace dspbr::shader {
 
 dspbr_shader::DspbrGltf gltf_factors(const nlohmann::json& mat) {
   using dspbr_shader::vec3;
@@ -92,4 +92,4 @@ dspbr_shader::DspbrGltf gltf_factors(const nlohmann::json& mat) {
   return g;
 }
 
-}  // namespace sphere
+}  // namespace dspbr::shader

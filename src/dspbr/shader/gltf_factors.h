@@ -7,8 +7,8 @@
 
 #include "dspbr.h"
 
-namespace sphere {
+namespace dspbr::shader {
 
 dspbr_shader::DspbrGltf gltf_factors(const nlohmann::json& material);
 
-}  // namespace sphere
+}  // namespace dspbr::shader
