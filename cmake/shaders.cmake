@@ -23,5 +23,6 @@ if(DSPBR_INSTALL)
                 ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.hlsl ${PROJECT_SOURCE_DIR}/fits/dspbr_fits.hpp
                 ${PROJECT_SOURCE_DIR}/fits/dspbr_fits.glsl ${PROJECT_SOURCE_DIR}/fits/dspbr_fits.hlsl
           DESTINATION ${_dspbr_shader_dir})
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/shaders/dspbr DESTINATION ${_dspbr_shader_dir})
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/shaders/dspbr ${PROJECT_SOURCE_DIR}/shaders/conformance
+          DESTINATION ${_dspbr_shader_dir})
 endif()

@@ -139,3 +139,15 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
   set_tests_properties(shader_scene_specializations PROPERTIES FIXTURES_REQUIRED shader_vectors SKIP_RETURN_CODE 77
                        TIMEOUT 900)
 endif()
+
+# `dspbr conformance run --glsl/--hlsl` (tests/conformance_run_test.sh): the kit's reference shader
+# passes, a broken one fails as planted, a compile error exits 2.
+if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
+  foreach(lang glsl hlsl)
+    add_test(NAME conformance_run_${lang}
+             COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/conformance_run_test.sh $<TARGET_FILE:dspbr> ${_sl_vectors}
+                     ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/conformance-run-${lang} ${lang})
+    set_tests_properties(conformance_run_${lang} PROPERTIES FIXTURES_REQUIRED shader_vectors SKIP_RETURN_CODE 77
+                         TIMEOUT 300 ENVIRONMENT "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}")
+  endforeach()
+endif()

@@ -13,6 +13,7 @@
 #include <tbb/global_control.h>
 
 #include "commands.h"
+#include "conformance_judge.h"
 #include "interrupt_cleanup.h"
 #include "provenance.h"
 #include "report_script.h"
@@ -46,17 +47,10 @@ struct ReferenceArgs {
 
 struct CheckArgs {
   std::string vectors, results, out;
-  std::string python = "/usr/bin/python3";
+  std::string python = kDefaultPython;
   bool html = true, require_all = false;
   conformance::Selection selection;
 };
-
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary);
-  f << text;
-  f.close();
-  if (!f) throw std::runtime_error("cannot write " + path);
-}
 
 // vectors.json with one vector per line (diff-friendly, still strict JSON).
 std::string vectors_text(const OJson& doc) {
@@ -125,39 +119,12 @@ void run_check(const CheckArgs& a) {
   } catch (const std::exception& e) {
     throw UsageError(e.what());
   }
-  const conformance::Check check = conformance::check_results(vectors, results);
-  // A check that judged nothing could not have failed: bad input, not a PASS.
-  if (check.judged() == 0)
-    throw UsageError(a.results + ": no result for any of the " + std::to_string(vectors.size()) +
-                     (a.selection.groups.empty() && a.selection.components.empty() ? "" : " selected") + " vectors of " +
-                     a.vectors);
-  InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
-  OutputFolder& out = cleanup.out();
   OJson provenance = output_provenance();
   provenance["vectors"] = a.vectors;
   provenance["results"] = a.results;
-  const OJson report = conformance::check_report(vectors, results, check, provenance);
-  write_text(out.staging() + "/report.json", json_text(report, 1, "report.json"));
-  if (a.html) run_report_script(a.python, script, out.staging(), a.out);
-  out.commit();
-
-  std::printf("conformance: %s, %zu of %zu judged vectors pass", check.passed() ? "PASS" : "FAIL",
-              check.judged() - check.failed, check.judged());
-  if (check.not_supplied > 0) std::printf(" (%zu of %zu NOT SUPPLIED)", check.not_supplied, vectors.size());
-  std::printf("; report in %s/%s\n", a.out.c_str(), a.html ? "index.html" : "report.json");
-  std::printf("  %-28s %12s %6s %6s %6s %12s  %s\n", "group", "verdict", "PASS", "FAIL", "N/S", "worst ratio",
-              "worst vector");
-  for (const auto& g : report["groups"])
-    std::printf("  %-28s %12s %6d %6d %6d %12.3g  %s\n", g["name"].get<std::string>().c_str(),
-                g["verdict"].get<std::string>().c_str(), g["passed"].get<int>(), g["failed"].get<int>(),
-                g["not_supplied"].get<int>(), g["worst_ratio"].get<double>(), g["worst_id"].get<std::string>().c_str());
-  for (const auto& [name, q] : report["quantities"].items())
-    if (q["not_judged"].get<int>() > 0)
-      std::printf("  NOT JUDGED: %s of %d vectors (not in %s)\n", name.c_str(), q["not_judged"].get<int>(),
-                  a.results.c_str());
-  if (!check.passed())
-    throw std::runtime_error(std::to_string(check.failed) + " of " + std::to_string(check.judged()) +
-                             " judged conformance vectors fail (details in " + a.out + ")");
+  Judgement j{a.vectors, a.results, a.out, a.python, script, a.selection};
+  InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
+  judge_results(j, cleanup.out(), vectors, results, provenance);
 }
 
 // The results of the reference BSDF reading another table set (f cos and pdf; the quantities that
@@ -251,6 +218,8 @@ void add_conformance_command(CLI::App& app) {
       ->capture_default_str();
   ref->add_option("--out", r->out, "Results file (JSON)")->required();
   ref->callback([r] { run_reference(*r); });
+
+  add_conformance_run_command(*cmd);
 }
 
 }  // namespace dspbr::cli

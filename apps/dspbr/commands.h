@@ -18,6 +18,10 @@ namespace dspbr::cli {
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// What the command needs is not on this machine (no Vulkan device): exit 77, "skipped".
+struct Unavailable : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // Checks of integer options, shared by the subcommands (CLI11 validators: a failed check is the
 // usage error "--seed: ...", exit status 2).

@@ -5,8 +5,10 @@
 #include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <mutex>
@@ -21,6 +23,7 @@ namespace {
 // The handler only writes the signal number into a pipe (async-signal-safe); a watcher thread
 // reads it and does the cleanup in ordinary code.
 int g_pipe_write = -1;
+std::atomic<pid_t> g_child{0};  // watch_child
 
 extern "C" void on_signal(int sig) {
   const unsigned char byte = static_cast<unsigned char>(sig);
@@ -46,6 +49,10 @@ struct InterruptCleanup::State {
     while ((n = ::read(pipe_read, &sig, 1)) < 0 && errno == EINTR) {
     }
     if (n != 1 || sig == 0) return;  // closed or told to stop
+    if (const pid_t child = g_child.load(); child > 0) {  // stop the child first: it may write into the staging folder
+      ::kill(child, sig);
+      ::waitpid(child, nullptr, 0);
+    }
     const std::lock_guard<std::mutex> lock(opening);  // wait for a folder being created
     const std::string what = out ? out->discard() : "nothing was written";
     std::fprintf(stderr, "dspbr: interrupted (%s): %s\n", sig == SIGINT ? "SIGINT" : "SIGTERM", what.c_str());
@@ -89,6 +96,8 @@ InterruptCleanup::InterruptCleanup(const std::string& dir, const std::string& op
     throw;
   }
 }
+
+void watch_child(pid_t pid) { g_child.store(pid); }
 
 OutputFolder& InterruptCleanup::out() { return *state_->out; }
 

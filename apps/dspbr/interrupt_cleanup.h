@@ -4,6 +4,8 @@
 // on stderr and exit with status 128 + the signal number (130 for SIGINT, 143 for SIGTERM). An
 // interrupt while the outputs are being moved into place waits until they all are.
 #pragma once
+#include <sys/types.h>
+
 #include <memory>
 #include <string>
 
@@ -28,5 +30,9 @@ class InterruptCleanup {
   struct State;
   std::unique_ptr<State> state_;
 };
+
+// The child process a command is waiting for (child_process.h), 0 for none: an interrupt sends it
+// the same signal and waits for it before the cleanup.
+void watch_child(pid_t pid);
 
 }  // namespace dspbr::cli

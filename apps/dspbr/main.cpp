@@ -151,6 +151,9 @@ int main(int argc, char** argv) {
   } catch (const dspbr::cli::UsageError& e) {
     std::fprintf(stderr, "dspbr: error: %s\n", dspbr::one_line(e.what()).c_str());
     return 2;
+  } catch (const dspbr::cli::Unavailable& e) {
+    std::fprintf(stderr, "dspbr: %s\n", dspbr::one_line(e.what()).c_str());
+    return 77;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "dspbr: error: out of memory\n");
     return 1;

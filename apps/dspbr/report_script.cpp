@@ -1,8 +1,9 @@
 #include "report_script.h"
 
-#include <sys/wait.h>
+#include "child_process.h"
+#include "commands.h"
 
-#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -41,10 +42,12 @@ std::string report_script(const std::string& name) {
 void run_report_script(const std::string& python, const std::string& script, const std::string& folder,
                        const std::string& out) {
   const std::string cmd = shell_quote(python) + " " + shell_quote(script) + " " + shell_quote(folder);
-  const int st = std::system(cmd.c_str());
-  const int rc = (st != -1 && WIFEXITED(st)) ? WEXITSTATUS(st) : -1;
-  if (rc != 0)
-    throw std::runtime_error("the report script failed (exit status " + std::to_string(rc) + "): " + cmd +
+  const ChildExit r = run_child({python, script, folder});
+  if (!r.started)
+    throw UsageError("--python: cannot run " + shell_quote(python) + ": " + std::strerror(r.error) +
+                     " (nothing was written to " + out + ")");
+  if (r.status != 0)
+    throw std::runtime_error("the report script failed (exit status " + std::to_string(r.status) + "): " + cmd +
                              " (nothing was written to " + out + ")");
 }
 

@@ -1,0 +1,22 @@
+// Running another program from a command (the report scripts, glslangValidator): posix_spawnp
+// with the arguments as given (no shell), the output to the terminal or a file, and the child
+// registered with the interrupt handling (interrupt_cleanup.h): SIGINT or SIGTERM to dspbr stops
+// the child with the same signal before the run's folder is discarded, so that no child outlives
+// an interrupted run (std::system ignored SIGINT in the caller while the child ran).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace dspbr::cli {
+
+struct ChildExit {
+  bool started = false;  // false: argv[0] could not be run (error holds errno: ENOENT when not found)
+  int error = 0;
+  int status = -1;       // its exit status, or 128 + the signal that ended it
+};
+
+// Runs argv (argv[0] searched on PATH); `log` "": output to the terminal, else stdout and stderr
+// into the file `log` (created or truncated).
+ChildExit run_child(const std::vector<std::string>& argv, const std::string& log = "");
+
+}  // namespace dspbr::cli

@@ -1,0 +1,51 @@
+#include "conformance_judge.h"
+
+#include <cstdio>
+#include <fstream>
+
+#include "commands.h"
+#include "report_script.h"
+#include "dspbr/io/json_write.h"
+
+namespace dspbr::cli {
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream f(path, std::ios::binary);
+  f << text;
+  f.close();
+  if (!f) throw std::runtime_error("cannot write " + path);
+}
+
+void judge_results(const Judgement& j, OutputFolder& out, const std::vector<conformance::Vector>& vectors,
+                   const std::vector<conformance::Result>& results, const nlohmann::ordered_json& provenance) {
+  const conformance::Check check = conformance::check_results(vectors, results);
+  // A check that judged nothing could not have failed: bad input, not a PASS.
+  if (check.judged() == 0)
+    throw UsageError(j.results + ": no result for any of the " + std::to_string(vectors.size()) +
+                     (j.selection.groups.empty() && j.selection.components.empty() ? "" : " selected") + " vectors of " +
+                     j.vectors);
+  const nlohmann::ordered_json report = conformance::check_report(vectors, results, check, provenance);
+  write_text(out.staging() + "/report.json", json_text(report, 1, "report.json"));
+  if (!j.script.empty()) run_report_script(j.python, j.script, out.staging(), j.out);
+  out.commit();
+
+  std::printf("conformance: %s, %zu of %zu judged vectors pass", check.passed() ? "PASS" : "FAIL",
+              check.judged() - check.failed, check.judged());
+  if (check.not_supplied > 0) std::printf(" (%zu of %zu NOT SUPPLIED)", check.not_supplied, vectors.size());
+  std::printf("; report in %s/%s\n", j.out.c_str(), j.script.empty() ? "report.json" : "index.html");
+  std::printf("  %-28s %12s %6s %6s %6s %12s  %s\n", "group", "verdict", "PASS", "FAIL", "N/S", "worst ratio",
+              "worst vector");
+  for (const auto& g : report["groups"])
+    std::printf("  %-28s %12s %6d %6d %6d %12.3g  %s\n", g["name"].get<std::string>().c_str(),
+                g["verdict"].get<std::string>().c_str(), g["passed"].get<int>(), g["failed"].get<int>(),
+                g["not_supplied"].get<int>(), g["worst_ratio"].get<double>(), g["worst_id"].get<std::string>().c_str());
+  for (const auto& [name, q] : report["quantities"].items())
+    if (q["not_judged"].get<int>() > 0)
+      std::printf("  NOT JUDGED: %s of %d vectors (not in %s)\n", name.c_str(), q["not_judged"].get<int>(),
+                  j.results.c_str());
+  if (!check.passed())
+    throw std::runtime_error(std::to_string(check.failed) + " of " + std::to_string(check.judged()) +
+                             " judged conformance vectors fail (details in " + j.out + ")");
+}
+
+}  // namespace dspbr::cli

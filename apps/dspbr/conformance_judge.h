@@ -1,0 +1,40 @@
+// The verdict and report shared by `dspbr conformance check` (results from a file) and
+// `dspbr conformance run` (results from a shader on a Vulkan device): judges the results
+// (dspbr/conformance/checker.h), writes REPORT/report.json and, with a script, index.html and
+// plots/, prints the summary per group, and throws when a vector fails (exit 1) or when nothing
+// could be judged (UsageError, exit 2: a check that could not have failed is not a PASS).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "dspbr/conformance/checker.h"
+#include "dspbr/conformance/results.h"
+#include "dspbr/conformance/vector.h"
+#include "dspbr/io/output_folder.h"
+
+namespace dspbr::cli {
+
+// Writes `text` to `path` (a file of the run's staging folder); std::runtime_error when it cannot.
+void write_text(const std::string& path, const std::string& text);
+
+inline constexpr const char* kDefaultPython = "/usr/bin/python3";
+
+struct Judgement {
+  std::string vectors, results;  // as named in messages and the report
+  std::string out;               // the report folder
+  std::string python, script;    // script "": report.json alone (--no-html)
+  conformance::Selection selection;
+};
+
+// Writes the report into `out` (the run's folder, interrupt_cleanup.h; the caller may have written
+// other files into its staging folder) and commits it.
+void judge_results(const Judgement& j, OutputFolder& out, const std::vector<conformance::Vector>& vectors,
+                   const std::vector<conformance::Result>& results, const nlohmann::ordered_json& provenance);
+
+// `dspbr conformance run` (cmd_conformance_run.cpp), registered on `dspbr conformance`.
+void add_conformance_run_command(CLI::App& conformance);
+
+}  // namespace dspbr::cli

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# `dspbr conformance run --glsl/--hlsl` on the Vulkan device (CTest conformance_run_glsl,
+# conformance_run_hlsl): the kit's reference shader (examples/conformance/shader_reference.glsl)
+# passes every vector; a broken one (tests/data/conformance/shader_broken.glsl: clearcoat 5 % too
+# bright, sheen not supported, no pdf) exits 1 with clearcoat FAIL, sheen NOT SUPPLIED, the other
+# components PASS and the pdf not judged; a shader that does not compile exits 2 naming its file and
+# line and leaves nothing. Exit 77 (skipped) without a Vulkan device.
+#   conformance_run_test.sh DSPBR VECTORS SOURCE_DIR WORK_DIR glsl|hlsl
+set -uo pipefail
+dspbr=$1 vectors=$2 src=$3 work=$4 lang=$5
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+
+"$dspbr" conformance run "$vectors" --"$lang" "$src/examples/conformance/shader_reference.glsl" \
+  --no-html --out "$work/reference" > "$work/reference.log" 2>&1
+rc=$?
+cat "$work/reference.log"
+[ $rc -eq 77 ] && exit 77
+[ $rc -eq 0 ] || fail "the reference shader: exit $rc"
+grep -q "on .*: [0-9]* vectors" "$work/reference.log" || fail "the device is not named"
+[ -f "$work/reference/results.json" ] || fail "no results.json"
+
+"$dspbr" conformance run "$vectors" --"$lang" "$src/tests/data/conformance/shader_broken.glsl" \
+  --no-html --out "$work/broken" > "$work/broken.log" 2>&1
+rc=$?
+cat "$work/broken.log"
+[ $rc -eq 1 ] || fail "the broken shader: exit $rc, expected 1"
+/usr/bin/python3 - "$work/broken/report.json" <<'PY' || fail "the broken shader's report"
+import json, sys
+r = json.load(open(sys.argv[1]))
+groups = {g["name"]: g for g in r["groups"]}
+assert groups["clearcoat"]["verdict"] == "FAIL", groups["clearcoat"]
+assert groups["sheen"]["verdict"] == "NOT SUPPLIED" and groups["sheen"]["not_supplied"] == groups["sheen"]["vectors"]
+for name in ("plain_metal", "plain_plastic", "metallic", "opaque_dielectric", "flakes", "translucency"):
+    assert groups[name]["verdict"] == "PASS", groups[name]
+assert r["quantities"]["pdf"]["judged"] == 0 and r["quantities"]["pdf"]["not_judged"] > 0, r["quantities"]["pdf"]
+assert r["summary"]["not_supplied"] > 0
+PY
+
+printf 'void conformance_eval(DspbrConformanceInput x, inout DspbrConformanceResult y) {\n  y.f_cos = x.v +;\n}\n' \
+  > "$work/typo.glsl"
+"$dspbr" conformance run "$vectors" --"$lang" "$work/typo.glsl" --no-html --out "$work/never" > "$work/typo.log" 2>&1
+rc=$?
+cat "$work/typo.log"
+[ $rc -eq 2 ] || fail "a shader that does not compile: exit $rc, expected 2"
+[ "$(wc -l < "$work/typo.log")" -eq 1 ] || fail "not one line"
+grep -q "typo.glsl: does not compile .*typo.glsl:2" "$work/typo.log" || fail "the message names no file and line"
+[ ! -e "$work/never" ] || fail "a folder was left"
+echo "conformance run --$lang: reference PASS, broken FAIL as planted, compile error exit 2"
