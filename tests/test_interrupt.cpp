@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -32,11 +33,18 @@ struct LutRun {
 
 // `pending`: a signal raised in the child while blocked, so that it is pending from the first
 // instruction of the tool on (the earliest possible interrupt).
+LutRun start_args(std::vector<std::string> args, const std::string& log, int pending = 0);
+
 LutRun start(const std::string& out, const std::string& log, int pending = 0) {
   std::vector<std::string> args = {DSPBR_EXE};
   args.insert(args.end(), kLongRun.begin(), kLongRun.end());
   args.push_back("--out");
   args.push_back(out);
+  return start_args(args, log, pending);
+}
+
+// Runs `args` (args[0] the program) with stderr into `log`.
+LutRun start_args(std::vector<std::string> args, const std::string& log, int pending) {
   LutRun r;
   r.log = log;
   r.pid = fork();
@@ -164,5 +172,37 @@ TEST(Interrupt, AnInterruptAtTheStartLeavesNothing) {
     EXPECT_EQ(std::count(log.begin(), log.end(), '\n'), 1) << log;
     EXPECT_EQ(log.find(".dspbr-staging"), std::string::npos) << log;
     EXPECT_TRUE(fs::is_empty(dir)) << "left behind in " << dir;
+  }
+}
+
+// A child process (here the report script, a stand-in that sleeps) is stopped with the run: the
+// run exits 128 + signal at once, leaves no folder, and the child is gone (std::system ignored
+// SIGINT in dspbr while the script ran: the run went on, committed and exited 0).
+TEST(Interrupt, TheReportScriptIsStoppedWithTheRun) {
+  for (int sig : {SIGINT, SIGTERM}) {
+    const fs::path dir = fs::path(::testing::TempDir()) / ("interrupt_script_" + std::to_string(sig));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string vectors = std::string(DSPBR_SOURCE_DIR) + "/tests/data/conformance/vectors-small.json";
+    const std::string results = (dir / "r.json").string();
+    ASSERT_EQ(std::system(("'" + std::string(DSPBR_EXE) + "' conformance reference '" + vectors + "' --out '" + results +
+                           "' > /dev/null").c_str()),
+              0);
+    const fs::path fake = dir / "python", pid_file = dir / "script.pid";
+    std::ofstream(fake) << "#!/bin/sh\necho $$ > '" << pid_file.string() << "'\nexec sleep 30\n";
+    fs::permissions(fake, fs::perms::owner_all);
+    const fs::path out = dir / "report";
+    const LutRun r = start_args({DSPBR_EXE, "conformance", "check", vectors, results, "--python", fake.string(), "--out",
+                                 out.string()},
+                                (dir / "log").string());
+    ASSERT_TRUE(wait_for([&] { return fs::exists(pid_file) && fs::file_size(pid_file) > 0; }));
+    const pid_t script = std::stoi(read_all(pid_file));
+    kill(r.pid, sig);
+    int status = 0;
+    waitpid(r.pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << status;
+    EXPECT_EQ(WEXITSTATUS(status), 128 + sig) << read_all(r.log);
+    EXPECT_FALSE(fs::exists(out)) << read_all(r.log);
+    EXPECT_TRUE(wait_for([&] { return ::kill(script, 0) != 0; })) << "the report script outlived the run";
   }
 }
