@@ -625,13 +625,16 @@ py::dict lut_load(const py::object& path_obj) {
 
 // ---- dspbr.scene -----------------------------------------------------------------------------
 
-py::object scene_analyze(const py::object& path_obj, bool parameters) {
+py::object scene_analyze(const py::object& path_obj, bool parameters, const std::string& layout) {
   if (!is_path(path_obj)) fail("path expects a file path, got " + py::repr(path_obj).cast<std::string>());
+  if (layout != "renderer" && layout != "published")
+    fail("layout expects 'renderer' or 'published', got " + py::repr(py::str(layout)).cast<std::string>());
   const std::string path = path_string(path_obj);
   nlohmann::ordered_json j;
   try {
     py::gil_scoped_release release;
-    j = scene_analysis_json(analyze_scene(path), parameters);
+    j = scene_analysis_json(analyze_scene(path), parameters,
+                            layout == "published" ? LutLayout::Published : LutLayout::Renderer);
   } catch (const std::bad_alloc&) {
     throw;  // MemoryError
   } catch (const std::exception& e) {
@@ -794,7 +797,10 @@ its glass tables when tables holds Glass_E): {name: stored values}, each lut.loa
 
   auto scene = m.def_submodule("scene", "glTF scenes and material instances (docs/gltf_mapping.md)");
   scene.def("analyze", &scene_analyze, py::arg("path"), py::kw_only(), py::arg("parameters") = false,
-            "analyze(path: typing.Union[str, os.PathLike[str]], parameters: bool = False) -> dict[str, typing.Any]\n\n"
-            "Per material the active components and the tables needed: the dict `dspbr scene analyze --json` prints "
-            "(with parameters=True also each material's DSPBR parameters).");
+            py::arg("layout") = "renderer",
+            "analyze(path: typing.Union[str, os.PathLike[str]], parameters: bool = False, layout: str = 'renderer') -> "
+            "dict[str, typing.Any]\n\n"
+            "Per material the active components and the tables needed (named in the layout: 'renderer' or "
+            "'published'): the dict `dspbr scene analyze --json` prints for one scene (with parameters=True also each "
+            "material's DSPBR parameters).");
 }

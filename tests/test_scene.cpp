@@ -190,3 +190,49 @@ TEST(SceneCli, AnalyzeJsonAndBadInputs) {
     EXPECT_EQ(count_lines_with(b.output, "dspbr: error: " + f), 1) << b.output;
   }
 }
+
+// `scene analyze` over many scenes in one call (issue 47): a folder expands to its scenes, the
+// summary is the union of what they need, the tables are named in the chosen layout, and --strict
+// exits 1 when a material has a note (an unmapped extension, an approximate mapping) and 0 when
+// none has.
+TEST(SceneCli, AnalyzeManyScenesStrictAndLayout) {
+  const auto all = run_dspbr("scene analyze " + kScenes + " --strict --json");
+  ASSERT_EQ(all.status, 0) << all.output.substr(0, 2000);
+  const Json j = Json::parse(all.output);
+  std::size_t files = 0;
+  uint32_t components = 0;
+  for (const auto& e : std::filesystem::directory_iterator(kScenes))
+    if (e.path().extension() == ".gltf") {
+      ++files;
+      components |= analyze_scene(e.path().string()).components;
+    }
+  ASSERT_EQ(j["scenes"].size(), files);
+  EXPECT_EQ(j["summary"]["scenes"], files);
+  EXPECT_EQ(j["summary"]["components"], Json(component_names(components)));
+  EXPECT_EQ(j["summary"]["findings"], 0);
+  // The renderer layout by default: the opaque dielectric's base reads GGX_beta, not Base_E.
+  const auto tables = j["summary"]["tables"].get<std::vector<std::string>>();
+  EXPECT_NE(std::find(tables.begin(), tables.end(), "GGX_beta"), tables.end());
+  EXPECT_EQ(std::find(tables.begin(), tables.end(), "Base_E"), tables.end());
+  const Json pub = Json::parse(run_dspbr("scene analyze " + kScenes + "13-clearcoat-0.3.gltf --layout published --json").output);
+  EXPECT_EQ(pub["tables"], Json(tables_for_scene(kScenes + "13-clearcoat-0.3.gltf")));
+
+  // An unmapped extension and KHR anisotropy (approximate): notes, and --strict fails on them.
+  const std::string dir = testing::TempDir() + "dspbr_strict/";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "odd.gltf") << R"({"asset":{"version":"2.0"},"materials":[{"name":"a",
+      "extensions":{"KHR_materials_unknown_thing":{}}},{"name":"b",
+      "extensions":{"KHR_materials_anisotropy":{"anisotropyStrength":0.5}}}]})";
+  const auto loose = run_dspbr("scene analyze " + dir + "odd.gltf");
+  EXPECT_EQ(loose.status, 0) << loose.output;
+  EXPECT_NE(loose.output.find("KHR_materials_unknown_thing is not mapped"), std::string::npos) << loose.output;
+  EXPECT_NE(loose.output.find("approximate mapping: KHR_materials_anisotropy"), std::string::npos) << loose.output;
+  const auto strict = run_dspbr("scene analyze " + dir + " " + kScenes + "13-clearcoat-0.3.gltf --strict");
+  EXPECT_EQ(strict.status, 1) << strict.output;
+  EXPECT_NE(strict.output.find("--strict: 2 finding(s)"), std::string::npos) << strict.output;
+  EXPECT_NE(strict.output.find("summary: 2 scene(s), 3 material(s)"), std::string::npos) << strict.output;
+  // A folder without scenes is bad input.
+  std::filesystem::create_directories(dir + "empty");
+  EXPECT_EQ(run_dspbr("scene analyze " + dir + "empty").status, 2);
+  std::filesystem::remove_all(dir);
+}

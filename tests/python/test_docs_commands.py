@@ -105,7 +105,7 @@ def test_every_docs_command_runs(doc, command, run, tmp_path):
     args = shlex.split(run) + shlex.split(small or "")  # the documented options always run
     args = [str(tmp_path / "out") if a in ("DIR", "luts", "report") else a for a in args]
     args = [str(tmp_path / a) if a.endswith(".csv") else a for a in args]
-    args = [os.path.join(SOURCE_DIR, a) if a.startswith("examples/") else a for a in args]
+    args = [os.path.join(SOURCE_DIR, a) if a.startswith(("examples/", "data/")) else a for a in args]
     for before in BEFORE.get(command, []):
         subprocess.run(before, cwd=tmp_path, check=True, capture_output=True, timeout=600)
     p = subprocess.run([dspbr_exe(), *args[1:]], cwd=tmp_path, capture_output=True, text=True, timeout=600)

@@ -224,6 +224,9 @@ class Mapper {
     if (khr_aniso && !ds_aniso) {
       const std::string p = "KHR_materials_anisotropy.";
       m.anisotropy = number(*khr_aniso, "anisotropyStrength", 0.0, p);
+      if (m.anisotropy > 0)
+        out_.notes.push_back("approximate mapping: KHR_materials_anisotropy's strength is copied to DSPBR's anisotropy "
+                             "(the highlight's shape differs, docs/gltf_mapping.md)");
       // Radians, counter-clockwise from the tangent (towards the bitangent); DSPBR turns the tangent
       // clockwise (t' cos b - (n x t') sin b, spec "Tangent Space"): -theta / 2 pi, in [0, 1).
       const double turns = -number(*khr_aniso, "anisotropyRotation", 0.0, p) / (2 * kPi);

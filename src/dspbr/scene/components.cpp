@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dspbr/scene/shader_specialization.h"
 #include "dspbr/tables/table_registry.h"
 #include "dspbr/params/material_params.h"
 
@@ -53,6 +54,16 @@ std::vector<std::string> tables_for_components(uint32_t mask, bool transmission_
   if (transmission_compensation && (mask & kVolumetricTransparent))
     for (const LutInfo& t : lut_registry())
       if (t.glass && (t.layouts & kPublishedLayout)) tables.push_back(t.name);
+  return tables;
+}
+
+std::vector<std::string> tables_for_components(uint32_t mask, bool transmission_compensation, LutLayout layout) {
+  if (layout == LutLayout::Published) return tables_for_components(mask, transmission_compensation);
+  std::vector<std::string> tables;
+  for (const ShaderTexture& t : shader_textures(mask)) tables.push_back(t.table);
+  if (transmission_compensation && (mask & kVolumetricTransparent))
+    for (const LutInfo& t : lut_registry())
+      if (t.glass && (t.layouts & kRendererLayout)) tables.push_back(t.name);
   return tables;
 }
 

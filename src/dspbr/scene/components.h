@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dspbr/component.h"
+#include "dspbr/tables/lut_set.h"
 
 namespace dspbr {
 
@@ -20,5 +21,9 @@ uint32_t active_components(const Material& m, const std::vector<std::string>& sc
 // transmission_compensation (beyond DSPBR 2025x, docs/bsdf.md) a volumetric transparent
 // component also needs the four Glass tables (thin-walled glass needs only GGX_E / GGX_E_avg).
 std::vector<std::string> tables_for_components(uint32_t mask, bool transmission_compensation = false);
+// The same in a layout's names: the published layout as above; the renderer layout as the shader
+// library binds them (shader_specialization.h's shader_textures: GGX_beta and GGX_B_avg for the
+// opaque dielectric's base, both sheen tables), then the Glass tables with the compensation.
+std::vector<std::string> tables_for_components(uint32_t mask, bool transmission_compensation, LutLayout layout);
 
 }  // namespace dspbr

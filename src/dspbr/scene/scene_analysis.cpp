@@ -41,6 +41,7 @@ SceneAnalysis analyze_scene(const std::string& path, bool transmission_compensat
   const std::string bytes = read_file(path, limits::kGltfBytes);
   SceneAnalysis s;
   s.path = path;
+  s.transmission_compensation = transmission_compensation;
   const bool glb = bytes.rfind("glTF", 0) == 0;
   const bool json_name = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
   Json doc;
@@ -94,14 +95,21 @@ std::vector<std::string> tables_for_scene(const std::string& path, bool transmis
   return analyze_scene(path, transmission_compensation).tables;
 }
 
-nlohmann::ordered_json scene_analysis_json(const SceneAnalysis& s, bool parameters) {
+std::size_t SceneAnalysis::findings() const {
+  std::size_t n = 0;
+  for (const MaterialAnalysis& m : materials) n += m.notes.size();
+  return n;
+}
+
+nlohmann::ordered_json scene_analysis_json(const SceneAnalysis& s, bool parameters, LutLayout layout) {
   nlohmann::ordered_json out;
+  out["path"] = s.path;
   out["materials"] = nlohmann::ordered_json::array();
   for (const auto& m : s.materials) {
     nlohmann::ordered_json j;
     j["name"] = m.name;
     j["components"] = component_names(m.components);
-    j["tables"] = m.tables;
+    j["tables"] = tables_for_components(m.components, s.transmission_compensation, layout);
     j["textured"] = m.textured;
     j["notes"] = m.notes;
     if (parameters) {
@@ -111,8 +119,9 @@ nlohmann::ordered_json scene_analysis_json(const SceneAnalysis& s, bool paramete
     }
     out["materials"].push_back(j);
   }
-  out["tables"] = s.tables;
+  out["tables"] = tables_for_components(s.components, s.transmission_compensation, layout);
   out["warnings"] = s.warnings;
+  out["findings"] = s.findings();
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dspbr/material.h"
+#include "dspbr/tables/lut_set.h"
 
 namespace dspbr {
 
@@ -27,6 +28,11 @@ struct SceneAnalysis {
   uint32_t components = 0;           // union over the materials
   std::vector<std::string> tables;   // union, canonical table order
   std::vector<std::string> warnings; // file-level findings (e.g. buffers not fetched)
+  bool transmission_compensation = false;  // as analysed (the tables above include the Glass ones)
+  // Findings about the materials a pipeline should act on (`scene analyze --strict`): every
+  // material's notes (unmapped extensions, values outside DSPBR's ranges, approximate mappings).
+  // The file's warnings (e.g. geometry not fetched) do not change a material and are not counted.
+  std::size_t findings() const;
 };
 
 // Analyses the scene at `path`. A glTF mesh primitive without a material adds glTF's default
@@ -37,9 +43,11 @@ struct SceneAnalysis {
 // (tables_for_components).
 SceneAnalysis analyze_scene(const std::string& path, bool transmission_compensation = false);
 
-// The analysis as JSON, as `dspbr scene analyze --json` prints it: {"materials": [{"name",
-// "components", "tables", "textured", "notes"[, "parameters": {id: value}]}], "tables", "warnings"}.
-nlohmann::ordered_json scene_analysis_json(const SceneAnalysis& s, bool parameters = false);
+// The analysis as JSON, as `dspbr scene analyze --json` prints it: {"path", "materials": [{"name",
+// "components", "tables", "textured", "notes"[, "parameters": {id: value}]}], "tables", "warnings",
+// "findings"}, the tables named in `layout`.
+nlohmann::ordered_json scene_analysis_json(const SceneAnalysis& s, bool parameters = false,
+                                           LutLayout layout = LutLayout::Published);
 
 // Names of the LUT tables (GGX_E, GGX_E_avg, Base_E, Base_E_avg, Sheen_E, Sheen_ash_E, Glass_*) that the
 // materials of the scene at `path` (.gltf/.glb or a material instance .json) need, in the
