@@ -99,6 +99,37 @@ TEST(Conformance, CoversEveryComponentAndTheExtremes) {
   EXPECT_TRUE(grazing && inside && delta && emission && ash);
 }
 
+// The default set (the validation scenes included) has at least 200 vectors with a non-zero
+// transmitted value (l on the other side of the surface, the reference's f cos not 0), among them
+// views from inside a volume, near total internal reflection, translucency and thin walls; each is
+// checked against the reference re-evaluated from its instance (the other side's value is not
+// restated: the vector's own material is read back).
+TEST(Conformance, CoversTransmissionFromBothSides) {
+  GenerateSettings s;
+  s.albedo = false;
+  s.scenes_dir = DSPBR_REFERENCE_DIR "/scenes/sphere";
+  const std::vector<Vector> vs = generate_vectors(s);
+  std::size_t transmitted = 0, inside = 0, near_tir = 0;
+  std::set<std::string> groups;
+  for (const Vector& v : vs) {
+    if (v.v.z * v.l.z >= 0 || v.f_cos.max_component() <= 0) continue;
+    ++transmitted;
+    groups.insert(v.group);
+    const Evaluation e = evaluate(v, LutSet::builtin());
+    EXPECT_GT(e.f_cos.max_component(), 0) << v.id;
+    if (v.v.z < 0) {
+      ++inside;
+      const Material m = vector_material(v);
+      near_tir += -v.v.z < std::sqrt(1 - 1 / (m.ior * m.ior)) ? 1 : 0;
+    }
+  }
+  EXPECT_GE(transmitted, 200u);
+  EXPECT_GE(inside, 10u);
+  EXPECT_GE(near_tir, 1u);
+  for (const char* g : {"translucency", "thin_transparent", "volumetric_transparent", "combined", "scenes"})
+    EXPECT_TRUE(groups.count(g)) << g;
+}
+
 TEST(Conformance, DocumentRoundTrips) {
   const auto& vs = small_set();
   const nlohmann::ordered_json doc = vectors_document(vs, {{"x", 1}});

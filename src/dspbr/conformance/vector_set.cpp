@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -88,6 +89,40 @@ std::vector<std::pair<Vec3, Vec3>> usual_pairs(const Case& c, const BsdfOptions&
       l.z *= other_side ? -side : side;
     }
     out.emplace_back(v, l);
+  }
+  return out;
+}
+
+// Transmission seen from both sides: kTransmittedPairs more pairs for a material with
+// transparency or translucency, l on the other side of the surface drawn from the reference's own
+// sampler (a rough transmission lobe is narrow: uniform directions mostly miss it and expect 0),
+// kept when its non-delta value is not 0 (else, after 64 draws, a uniform direction there); a
+// volumetric material is seen from inside in every other pair: inside the escape cone (cos theta
+// from the critical angle's, sqrt(1 - 1 / ior^2), to 1) or, every third of them, just beyond it
+// (0.97 of its cosine: near total internal reflection, where only the rough lobe's tail gets out).
+constexpr int kTransmittedPairs = 12;
+std::vector<std::pair<Vec3, Vec3>> transmitted_pairs(const Case& c, const Bsdf& ref, Pcg32& rng) {
+  if (!(c.m.transparency > 0 || c.m.translucency > 0)) return {};
+  const bool volumetric = !c.m.thinWalled && c.m.transparency > 0;
+  std::vector<std::pair<Vec3, Vec3>> out;
+  for (int k = 0; k < kTransmittedPairs; ++k) {
+    Vec3 v = direction(0.02 + 0.98 * rng.next_double(), 2 * kPi * rng.next_double());
+    if (volumetric && k % 2 == 1) {
+      const double critical = std::sqrt(std::max(0.0, 1 - 1 / (c.m.ior * c.m.ior)));
+      const double cv = k % 6 == 5 ? 0.97 * critical : critical + (1 - critical) * rng.next_double();
+      v = direction(cv, 2 * kPi * rng.next_double());
+      v.z = -v.z;
+    }
+    std::optional<Vec3> l;
+    for (int t = 0; t < 64 && !l; ++t) {
+      const BsdfSample s = ref.sample(v, {rng.next_double(), rng.next_double(), rng.next_double()});
+      if (s.valid && !(s.flags & kLobeDelta) && s.l.z * v.z < 0 && ref.eval(v, s.l).max_component() > 0) l = s.l;
+    }
+    if (!l) {
+      l = direction(0.01 + 0.99 * rng.next_double(), 2 * kPi * rng.next_double());
+      l->z = v.z < 0 ? l->z : -l->z;
+    }
+    out.emplace_back(v, *l);
   }
   return out;
 }
@@ -232,10 +267,12 @@ std::vector<Vector> case_vectors(const Case& c, std::size_t index, const Generat
   // The expected values come from the instance as an implementer reads it.
   const Material m = vector_material(proto);
   const BsdfOptions opt = vector_options(proto);
-  const auto pairs = c.extreme ? extreme_pairs(c) : usual_pairs(c, opt, s.directions, rng);
   const uint32_t mask = active_components(m);
   proto.components = component_names(mask);
   const MaterialBsdf ref(m, LutSet::builtin(), opt, mask);
+  auto pairs = c.extreme ? extreme_pairs(c) : usual_pairs(c, opt, s.directions, rng);
+  if (!c.extreme)
+    for (const auto& p : transmitted_pairs(c, ref, rng)) pairs.push_back(p);
   std::vector<MaterialBsdf> perturbed;
   for (const LutSet& t : perturbed_tables()) perturbed.emplace_back(m, t, opt, mask);
   const MaterialBsdf ref_float(float_rounded(m), LutSet::builtin(), opt, mask);
