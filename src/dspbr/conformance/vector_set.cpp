@@ -16,6 +16,7 @@
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/component.h"
 #include "dspbr/constants.h"
+#include "dspbr/gltf/gltf_export.h"
 #include "dspbr/gltf/gltf_file.h"
 #include "dspbr/gltf/gltf_material.h"
 #include "dspbr/io/json_values.h"
@@ -266,6 +267,10 @@ std::vector<Vector> case_vectors(const Case& c, std::size_t index, const Generat
   proto.options = c.options;
   // The expected values come from the instance as an implementer reads it.
   const Material m = vector_material(proto);
+  // A built-in material as glTF too, when glTF can express it (gltf_export.h: mapped back exactly).
+  if (proto.gltf_material.is_null())
+    if (const nlohmann::json g = gltf::gltf_material_for(m, c.group + "/" + c.name); !g.is_null())
+      proto.gltf_material = OJson::parse(g.dump());
   const BsdfOptions opt = vector_options(proto);
   const uint32_t mask = active_components(m);
   proto.components = component_names(mask);
