@@ -55,7 +55,8 @@ TEST(Cli, DirectoryGivenAsAFileIsNamed) {
   const std::string dir = temp_path("folder.gltf");
   std::filesystem::create_directories(dir);
   const std::string message = dir + " is a directory";
-  expect_usage_error("scene analyze " + dir, message);
+  // (scene analyze takes folders: this one holds no scene.)
+  expect_usage_error("scene analyze " + dir, dir + ": a folder without .gltf or .glb files");
   expect_usage_error("lut --scene " + dir + " --out " + temp_path("lut_out"), message);
   expect_usage_error("eval --material " + dir + " --view 0,0,1 --light 0,0,1", message);
   expect_usage_error("params list " + dir, message);

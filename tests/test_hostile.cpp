@@ -233,3 +233,46 @@ TEST(Hostile, TableAxisWithAnEmptyRangeIsRefused) {
     EXPECT_EQ(std::string(e.what()), "'range.json': tables.GGX_E_avg.axes[0]: lo must be below hi");
   }
 }
+
+// Issue 45 (#1): the JSON readers build the document with nlohmann's plain SAX parser (linear in
+// the input) instead of the callback parser, which scanned an object's or array's earlier siblings
+// whenever one closed (200,000 empty nodes of a 600 kB glTF: 17.6 s in `scene analyze`; a million:
+// minutes). 400,000 sibling objects (about a minute before) are read, with the reader's checks
+// still on the way (a duplicate key after them is named by its path).
+TEST(Hostile, ManySiblingObjectsAreReadWithTheChecks) {
+  std::string nodes = R"({"asset": {"version": "2.0"}, "nodes": [)";
+  for (int i = 0; i < 400000; ++i) nodes += i ? ",{}" : "{}";
+  const nlohmann::json doc = dspbr::parse_json(nodes + "]}", "nodes.gltf", "glTF file");
+  EXPECT_EQ(doc["nodes"].size(), 400000u);
+  std::string dup = nodes + R"(,{"a": 1, "a": 2}]})";
+  try {
+    dspbr::parse_json(dup, "dup.gltf", "glTF file");
+    ADD_FAILURE() << "a duplicate key was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "dup.gltf: duplicate key \"a\" in nodes[400000]");
+  }
+}
+
+// Issue 45 (#2): the memory of a parsed document is charged while it is read (limits.h:
+// json_memory_budget, 10 x its size + 64 MiB; per value costs measured in docs/limits.md). Empty
+// objects cost ~100 bytes each for 3 bytes of text: 5 million of them (15 MB, under the 16 MB
+// results limit) are refused naming the file; 300,000 (0.9 MB) and a million numbers are read.
+TEST(Hostile, JsonBeyondTheMemoryBoundIsRefused) {
+  const auto list = [](std::size_t n, const char* item) {
+    std::string s = R"({"results": [)";
+    for (std::size_t i = 0; i < n; ++i) (s += i ? "," : "") += item;
+    return s + "]}";
+  };
+  const std::string big = list(5000000, "{}");
+  ASSERT_LT(big.size(), dspbr::limits::kDocumentBytes);
+  try {
+    dspbr::parse_json(big, "r.json", "results file");
+    ADD_FAILURE() << "5 million objects were read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "r.json: its JSON values would take more than " +
+                                         std::to_string(dspbr::limits::json_memory_budget(big.size()) >> 20) +
+                                         " MiB in memory, 10 x the file's size + 64 MiB (the readers' bound, docs/limits.md)");
+  }
+  EXPECT_EQ(dspbr::parse_json(list(300000, "{}"), "r.json", "results file")["results"].size(), 300000u);
+  EXPECT_EQ(dspbr::parse_json(list(1000000, "0"), "r.json", "results file")["results"].size(), 1000000u);
+}

@@ -25,6 +25,16 @@ inline constexpr int kRefDepth = 32;
 // of files whose references or bases double at each step. params-2025x.json resolves to ~3800.
 inline constexpr std::size_t kResolvedJsonValues = std::size_t(1) << 20;
 
+// The memory a parsed JSON document may take, by the file's size: 10 x bytes + 64 MiB, so that the
+// process (dspbr-full starts at about 136 MB) stays within 10 x the file's size + 200 MB. The
+// readers count it while reading, each value at a cost that bounds nlohmann::json's (Linux x86-64,
+// glibc; maximum RSS over arrays of 2 to 4 million values): an object or array 160 bytes
+// (measured: {} 81 to 98, [] 50 to 66), a member's key 96 (a member {"k": 0} 111 per value, 222 with
+// its number), a string 96 plus its length ("" 62 to 79), any other value 48 (0 16 to 31).
+inline constexpr std::size_t kJsonContainerBytes = 160, kJsonKeyBytes = 96, kJsonStringBytes = 96,
+                             kJsonScalarBytes = 48;
+inline constexpr std::size_t json_memory_budget(std::size_t bytes) { return 10 * bytes + (std::size_t(64) << 20); }
+
 // Samples along one axis of a table, generated (--size) or read (table files of either layout).
 inline constexpr int kTableAxisSize = 4096;
 // Cells of one table (the product of its axis sizes), generated or read.

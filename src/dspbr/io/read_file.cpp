@@ -170,6 +170,74 @@ struct JsonCursor {
 
 }  // namespace
 
+// The DOM builder of nlohmann's plain (linear) SAX parser with the reader's checks on the way: the
+// cursor (the JSON path in messages), I-JSON's unique member names (RFC 7493, 2.3) and the value
+// budget. (The callback parser, used before, scanned an object's or array's earlier siblings each
+// time one closed: quadratic in the members of one object or array.) The base's methods are not
+// virtual: sax_parse calls these, which hide them.
+template <class Json>
+class JsonReader : public nlohmann::detail::json_sax_dom_parser<Json> {
+  using Base = nlohmann::detail::json_sax_dom_parser<Json>;
+
+ public:
+  using string_t = typename Json::string_t;
+  JsonReader(Json& doc, JsonCursor& cursor, const std::string& path, std::size_t budget_bytes)
+      : Base(doc, true), cursor_(cursor), path_(path), budget_(budget_bytes) {}
+
+  bool null() { return scalar(limits::kJsonScalarBytes), Base::null(); }
+  bool boolean(bool x) { return scalar(limits::kJsonScalarBytes), Base::boolean(x); }
+  bool number_integer(typename Json::number_integer_t x) {
+    return scalar(limits::kJsonScalarBytes), Base::number_integer(x);
+  }
+  bool number_unsigned(typename Json::number_unsigned_t x) {
+    return scalar(limits::kJsonScalarBytes), Base::number_unsigned(x);
+  }
+  bool number_float(typename Json::number_float_t x, const string_t& s) {
+    return scalar(limits::kJsonScalarBytes), Base::number_float(x, s);
+  }
+  bool string(string_t& x) { return scalar(limits::kJsonStringBytes + x.size()), Base::string(x); }
+  bool start_object(std::size_t n) {
+    count(limits::kJsonContainerBytes);
+    cursor_.frames.push_back({});
+    return Base::start_object(n);
+  }
+  bool start_array(std::size_t n) {
+    count(limits::kJsonContainerBytes);
+    cursor_.frames.push_back(JsonCursor::Frame{true, 0, {}, {}});
+    return Base::start_array(n);
+  }
+  bool key(string_t& k) {
+    count(limits::kJsonKeyBytes + k.size());
+    auto& f = cursor_.frames.back();
+    f.key = k;
+    if (!f.keys.insert(f.key).second)
+      throw std::runtime_error(path_ + ": duplicate key \"" + quote_input(f.key) + "\" in " +
+                               (cursor_.frames.size() > 1 ? cursor_.path(cursor_.frames.size() - 1) : "the top-level object"));
+    return Base::key(k);
+  }
+  bool end_object() { return close(), Base::end_object(); }
+  bool end_array() { return close(), Base::end_array(); }
+
+ private:
+  // Charges a value's memory; over the budget: refused while reading.
+  void count(std::size_t bytes) {
+    if ((used_ += bytes) > budget_)
+      throw std::runtime_error(path_ + ": its JSON values would take more than " + std::to_string(budget_ >> 20) +
+                               " MiB in memory, 10 x the file's size + 64 MiB (the readers' bound, docs/limits.md)");
+  }
+  void scalar(std::size_t bytes) {
+    count(bytes);
+    cursor_.element_done();
+  }
+  void close() {
+    cursor_.frames.pop_back();
+    cursor_.element_done();
+  }
+  JsonCursor& cursor_;
+  const std::string& path_;
+  std::size_t budget_, used_ = 0;
+};
+
 template <class Json>
 Json parse_json(std::string_view text, const std::string& path, const std::string& what) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) throw std::runtime_error(path + " is empty");
@@ -181,31 +249,11 @@ Json parse_json(std::string_view text, const std::string& path, const std::strin
     throw std::runtime_error(path + ": a NUL byte at offset " + std::to_string(nul) + " (not JSON text)");
   check_nesting(text, path);
   JsonCursor cursor;
-  using Event = nlohmann::json::parse_event_t;
-  const auto callback = [&](int, Event event, Json& parsed) {
-    switch (event) {
-      case Event::object_start: cursor.frames.push_back({}); break;
-      case Event::array_start: cursor.frames.push_back(JsonCursor::Frame{true, 0, {}, {}}); break;
-      case Event::key: {
-        auto& f = cursor.frames.back();
-        f.key = parsed.template get<std::string>();
-        // I-JSON (RFC 7493, 2.3): member names are unique.
-        if (!f.keys.insert(f.key).second)
-          throw std::runtime_error(path + ": duplicate key \"" + quote_input(f.key) + "\" in " +
-                                   (cursor.frames.size() > 1 ? cursor.path(cursor.frames.size() - 1) : "the top-level object"));
-        break;
-      }
-      case Event::object_end:
-      case Event::array_end:
-        cursor.frames.pop_back();
-        cursor.element_done();
-        break;
-      case Event::value: cursor.element_done(); break;
-    }
-    return true;
-  };
+  Json doc;
+  JsonReader<Json> reader(doc, cursor, path, limits::json_memory_budget(text.size()));
   try {
-    return Json::parse(text.begin(), text.end(), callback);
+    Json::sax_parse(text.begin(), text.end(), &reader);
+    return doc;
   } catch (const nlohmann::json::out_of_range&) {
     // The parser's only out_of_range while parsing: a number beyond double's range (1e999).
     throw std::runtime_error(path + ": the number at " + cursor.here() + " overflows a double");

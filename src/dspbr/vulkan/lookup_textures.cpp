@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "dspbr/tables/renderer_luts.h"
+
 namespace vk_compute {
 
 TableImage read_table_exr(const std::string& path) {
@@ -18,13 +20,13 @@ TableImage read_table_exr(const std::string& path) {
 }
 
 std::vector<TableImage> read_lookup_textures(const std::string& lut_dir, bool glass) {
-  // The binding order of the generated headers (their texture-mode comment blocks).
-  static const char* const kMain[] = {"GGX_E", "GGX_beta", "GGX_E_avg", "GGX_B_avg", "Sheen_E", "Sheen_ash_E"};
-  static const char* const kGlass[] = {"Glass_E", "Glass_inv_E", "Glass_E_avg", "Glass_inv_E_avg"};
+  // The binding order of the generated headers (their texture-mode comment blocks): the renderer
+  // layout's canonical order.
   std::vector<TableImage> tables;
-  for (const char* name : kMain) tables.push_back(read_table_exr(lut_dir + "/renderer/" + name + ".exr"));
+  for (const char* name : dspbr::RendererLuts::names()) tables.push_back(read_table_exr(lut_dir + "/renderer/" + name + ".exr"));
   if (glass)
-    for (const char* name : kGlass) tables.push_back(read_table_exr(lut_dir + "/renderer/" + name + ".exr"));
+    for (const char* name : dspbr::RendererLuts::glass_names())
+      tables.push_back(read_table_exr(lut_dir + "/renderer/" + name + ".exr"));
   return tables;
 }
 
