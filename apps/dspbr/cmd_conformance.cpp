@@ -143,7 +143,7 @@ void run_reference(const ReferenceArgs& a) {
     throw UsageError(e.what());
   }
   const LutSet& luts = conformance::demo_table_set(tables);
-  OJson results = OJson::array();
+  std::vector<conformance::Result> results;
   for (const conformance::Vector& v : vectors) {
     conformance::Evaluation e;
     try {
@@ -151,9 +151,9 @@ void run_reference(const ReferenceArgs& a) {
     } catch (const std::exception& ex) {  // an invalid instance or options
       throw UsageError(a.vectors + ": vector '" + v.id + "': " + ex.what());
     }
-    results.push_back(OJson{{"id", v.id}, {"f_cos", {e.f_cos.r, e.f_cos.g, e.f_cos.b}}, {"pdf", e.pdf}});
+    results.push_back({v.id, e.f_cos, e.pdf, std::nullopt, std::nullopt, std::nullopt});
   }
-  write_text_atomically(a.out, json_text(OJson{{"results", results}}, -1, a.out) + "\n");
+  write_text_atomically(a.out, json_text(conformance::results_document(results), -1, a.out) + "\n");
   std::printf("%zu results of the reference with the %s tables -> %s\n", vectors.size(), a.tables.c_str(), a.out.c_str());
 }
 

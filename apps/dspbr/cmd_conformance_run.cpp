@@ -25,6 +25,7 @@
 #include "interrupt_cleanup.h"
 #include "provenance.h"
 #include "report_script.h"
+#include "dspbr/conformance/results.h"
 #include "dspbr/conformance/vector_file.h"
 #include "dspbr/conformance/vector_set.h"
 #include "dspbr/io/json_write.h"
@@ -155,19 +156,6 @@ std::optional<conformance::Result> result_of(const std::string& id, const float*
   return out;
 }
 
-OJson results_json(const std::vector<conformance::Result>& results) {
-  OJson list = OJson::array();
-  const auto rgb = [](const Rgb& c) { return OJson::array({c.r, c.g, c.b}); };
-  for (const conformance::Result& r : results) {
-    if (!r.f_cos) continue;  // not supplied
-    OJson j{{"id", r.id}, {"f_cos", rgb(*r.f_cos)}};
-    if (r.pdf) j["pdf"] = *r.pdf;
-    if (r.albedo) j["albedo"] = rgb(*r.albedo);
-    if (r.emission) j["emission"] = rgb(*r.emission);
-    list.push_back(j);
-  }
-  return OJson{{"results", list}};
-}
 #endif
 
 void run_shader(const RunArgs& a) {
@@ -232,7 +220,7 @@ void run_shader(const RunArgs& a) {
   provenance["shader"] = {{"file", user}, {"language", a.glsl.empty() ? "HLSL" : "GLSL"},
                           {"device", device.device_name()}};
   Judgement j{a.vectors, user, a.out, a.python, script, a.selection};
-  write_text(out.staging() + "/results.json", json_text(results_json(results), -1, "results.json") + "\n");
+  write_text(out.staging() + "/results.json", json_text(conformance::results_document(results), -1, "results.json") + "\n");
   judge_results(j, out, vectors, results, provenance);
 #endif
 }

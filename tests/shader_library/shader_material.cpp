@@ -6,6 +6,7 @@
 #include <set>
 #include <nlohmann/json.hpp>
 
+#include "dspbr/conformance/results.h"
 #include "dspbr/io/atomic_file.h"
 
 namespace dspbr_shader {
@@ -196,22 +197,16 @@ Outcome outcome_from_device(const dspbr::conformance::Vector& x, const float* f,
 
 void write_results(const std::string& path, const std::vector<dspbr::conformance::Vector>& vectors,
                    const std::vector<Outcome>& results) {
-  using J = nlohmann::ordered_json;
-  auto rgb = [](vec3 c) { return J::array({double(c.x), double(c.y), double(c.z)}); };
-  J list = J::array();
+  const auto rgb = [](vec3 c) { return dspbr::Rgb(double(c.x), double(c.y), double(c.z)); };
+  std::vector<dspbr::conformance::Result> list;
   for (std::size_t k = 0; k < vectors.size(); ++k) {
     const Outcome& o = results[k];
-    J r{{"id", vectors[k].id}, {"f_cos", rgb(o.f_cos)}, {"pdf", double(o.pdf)}};
-    if (o.albedo) r["albedo"] = rgb(*o.albedo);
-    if (o.emission) r["emission"] = rgb(*o.emission);
-    if (o.delta) {
-      r["delta"] = J::array();
-      for (const auto& d : *o.delta)
-        r["delta"].push_back({{"l", {d.l.x, d.l.y, d.l.z}}, {"value", {d.value.r, d.value.g, d.value.b}}});
-    }
+    dspbr::conformance::Result r{vectors[k].id, rgb(o.f_cos), double(o.pdf), std::nullopt, std::nullopt, o.delta};
+    if (o.albedo) r.albedo = rgb(*o.albedo);
+    if (o.emission) r.emission = rgb(*o.emission);
     list.push_back(std::move(r));
   }
-  dspbr::write_text_atomically(path, J{{"results", list}}.dump() + "\n");
+  dspbr::write_text_atomically(path, dspbr::conformance::results_document(list).dump() + "\n");
 }
 
 int judge(const std::vector<dspbr::conformance::Vector>& vectors, const std::vector<Outcome>& results,

@@ -168,6 +168,27 @@ std::vector<Result> parse_results(std::string_view bytes, const std::string& pat
   return out;
 }
 
+nlohmann::ordered_json results_document(const std::vector<Result>& results) {
+  using OJson = nlohmann::ordered_json;
+  const auto rgb = [](const Rgb& c) { return OJson::array({c.r, c.g, c.b}); };
+  OJson list = OJson::array();
+  for (const Result& r : results) {
+    if (!r.f_cos && !r.pdf && !r.albedo && !r.emission && !r.delta) continue;  // not supplied
+    OJson j{{"id", r.id}};
+    if (r.f_cos) j["f_cos"] = rgb(*r.f_cos);
+    if (r.pdf) j["pdf"] = *r.pdf;
+    if (r.albedo) j["albedo"] = rgb(*r.albedo);
+    if (r.emission) j["emission"] = rgb(*r.emission);
+    if (r.delta) {
+      j["delta"] = OJson::array();
+      for (const DeltaExpectation& d : *r.delta)
+        j["delta"].push_back(OJson{{"l", {d.l.x, d.l.y, d.l.z}}, {"value", rgb(d.value)}});
+    }
+    list.push_back(std::move(j));
+  }
+  return OJson{{"results", list}};
+}
+
 std::vector<Result> read_results(const std::string& path) {
   return parse_results(read_file(path, limits::kDocumentBytes), path);
 }

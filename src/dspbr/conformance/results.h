@@ -27,6 +27,11 @@ struct Result {
   std::optional<std::vector<DeltaExpectation>> delta;
 };
 
+// The results document ({"results": [...]}, the JSON form above) of `results`: each quantity
+// supplied, in the order id, f_cos, pdf, albedo, emission, delta; a result with nothing supplied
+// is left out.
+nlohmann::ordered_json results_document(const std::vector<Result>& results);
+
 // Reads and parses a results file (size limit limits::kDocumentBytes).
 std::vector<Result> read_results(const std::string& path);
 // Same from the file's bytes; `path` names it in messages.
