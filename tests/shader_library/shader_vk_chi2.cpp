@@ -8,9 +8,10 @@
 // pdf and weight from the device are also checked against them, within 1e-3 (the C++ test's 1e-4
 // is one compile against itself; the driver's exp, pow and sqrt may be a few ulp off, and the
 // device's weights were measured up to 5.8e-4 from the C++ compile's f |cos| / pdf at cos 0.2).
-//   shader_vk_chi2 KERNEL.spv LUT_DIR LABEL [EVERY]
-// (EVERY: run every EVERY-th case only, 1 by default; CTest shader_hlsl_chi2 runs every third: the
-// HLSL entry is the same body as the GLSL one, which runs them all, through another front end.)
+//   shader_vk_chi2 KERNEL.spv LUT_DIR LABEL [K/N]
+// (K/N: run only the cases whose index is K modulo N; all by default. CTest runs each case once on
+// the device: shader_hlsl_chi2 0/3, shader_glsl_chi2_1 1/3 and shader_glsl_chi2_2 2/3, the HLSL
+// entry being the same body as the GLSL one through another front end.)
 // The test draws its own random numbers: a first round records them (the C++ compile standing in),
 // the device samples them all in one dispatch, and the second round is the verdict.
 // Exit 0: every case passes; 1: a failure; 2: bad arguments or a Vulkan error; 77: no Vulkan device.
@@ -79,9 +80,11 @@ class DeviceBsdf : public dspbr::Bsdf {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int every = argc == 5 ? std::atoi(argv[4]) : 1;
-  if ((argc != 4 && argc != 5) || every < 1) {
-    std::fprintf(stderr, "usage: shader_vk_chi2 KERNEL.spv LUT_DIR LABEL [EVERY]\n");
+  unsigned part = 0, parts = 1;
+  char end = 0;
+  if ((argc != 4 && argc != 5) ||
+      (argc == 5 && (std::sscanf(argv[4], "%u/%u%c", &part, &parts, &end) != 2 || parts < 1 || part >= parts))) {
+    std::fprintf(stderr, "usage: shader_vk_chi2 KERNEL.spv LUT_DIR LABEL [K/N] (K < N: the cases K modulo N)\n");
     return 2;
   }
   try {
@@ -115,7 +118,7 @@ int main(int argc, char** argv) {
     };
     std::vector<shader_test::Chi2Case> cases;
     const std::vector<shader_test::Chi2Case> all = shader_test::chi2_cases();
-    for (std::size_t k = 0; k < all.size(); k += std::size_t(every)) cases.push_back(all[k]);
+    for (std::size_t k = part; k < all.size(); k += parts) cases.push_back(all[k]);
     int failed = 0;
     std::size_t queries = 0;
     for (const shader_test::Chi2Case& c : cases) {
