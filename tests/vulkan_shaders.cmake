@@ -81,7 +81,16 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
     DEPENDS ${_sl}/conformance.comp ${_sl}/conformance.hlsl ${_sl}/kernel_common.glsl ${_sl}/albedo.glsl ${_sl_deps}
             ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.hlsl
     COMMENT "glslangValidator: the shader library's conformance kernels (GLSL, HLSL)" VERBATIM)
-  add_custom_target(shader_conformance_kernels ALL DEPENDS ${_sl_glsl} ${_sl_hlsl})
+  # The chi-square test's kernels: mode 3 alone (kernel_common.glsl, DSPBR_TEST_SAMPLES_ONLY).
+  set(_sl_chi2_glsl ${PROJECT_BINARY_DIR}/shader_chi2_glsl.spv)
+  set(_sl_chi2_hlsl ${PROJECT_BINARY_DIR}/shader_chi2_hlsl.spv)
+  add_custom_command(OUTPUT ${_sl_chi2_glsl} ${_sl_chi2_hlsl}
+    COMMAND ${DSPBR_GLSLANG_VK} -V -DDSPBR_TEST_SAMPLES_ONLY ${_sl_inc} -o ${_sl_chi2_glsl} ${_sl}/conformance.comp
+    COMMAND ${DSPBR_GLSLANG_VK} ${_sl_hlsl_args} -DDSPBR_TEST_SAMPLES_ONLY -o ${_sl_chi2_hlsl} ${_sl}/conformance.hlsl
+    DEPENDS ${_sl}/conformance.comp ${_sl}/conformance.hlsl ${_sl}/kernel_common.glsl ${_sl}/albedo.glsl ${_sl_deps}
+            ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.hlsl
+    COMMENT "glslangValidator: the shader library's chi-square kernels (GLSL, HLSL)" VERBATIM)
+  add_custom_target(shader_conformance_kernels ALL DEPENDS ${_sl_glsl} ${_sl_hlsl} ${_sl_chi2_glsl} ${_sl_chi2_hlsl})
   # No warning from either front end (glslang prints "WARNING:" lines and still succeeds).
   string(REPLACE ";" " " _sl_inc_cmd "${_sl_inc}")
   add_test(NAME shader_glsl_compile
@@ -118,7 +127,7 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
     list(GET part 1 k)
     string(REGEX REPLACE "_.*" "" lang ${name})
     add_test(NAME shader_${name}
-             COMMAND shader_vk_chi2 ${PROJECT_BINARY_DIR}/shader_conformance_${lang}.spv ${PROJECT_SOURCE_DIR}/luts ${lang}
+             COMMAND shader_vk_chi2 ${PROJECT_BINARY_DIR}/shader_chi2_${lang}.spv ${PROJECT_SOURCE_DIR}/luts ${lang}
                      ${k}/3)
     set_tests_properties(shader_${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900
                          ENVIRONMENT "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}")

@@ -32,7 +32,10 @@ DSPBR_FN void dspbr_test_run(uint id, uint mode) {
   vec3 v = dspbr_test_vec3(k + 8u);
   vec3 l = dspbr_test_vec3(k + 11u);
   DspbrBsdf b = dspbr_prepare(m, dspbr_identity_frame(), o);
-#ifndef DSPBR_TEST_NO_ALBEDO  // (specializations.sh: mode 0 alone, a smaller kernel)
+// DSPBR_TEST_NO_ALBEDO: mode 0 alone (specializations.sh); DSPBR_TEST_SAMPLES_ONLY: mode 3 alone
+// (shader_vk_chi2's kernels: lavapipe builds its pipeline in 11 s instead of 27 s, as it inlines
+// every call site).
+#if !defined(DSPBR_TEST_NO_ALBEDO) && !defined(DSPBR_TEST_SAMPLES_ONLY)
   if (mode == 1u) {
     vec3 a = dspbr_test_albedo_node(b, v, int(id % uint(DSPBR_TEST_ALBEDO_NODES)));
     res[3u * id] = a.x;
@@ -53,6 +56,8 @@ DSPBR_FN void dspbr_test_run(uint id, uint mode) {
     res[7u * id + 6u] = value.z;
     return;
   }
+#endif
+#ifndef DSPBR_TEST_NO_ALBEDO
   // Mode 3: the chi-square test's samples (shader_vk_chi2), vector 0's material and v; the id-th u
   // follows the record.
   if (mode == 3u) {  // valid, l, weight, pdf, flags (9 floats)
@@ -69,6 +74,7 @@ DSPBR_FN void dspbr_test_run(uint id, uint mode) {
     return;
   }
 #endif
+#ifndef DSPBR_TEST_SAMPLES_ONLY
   uint r = 10u * i;
   vec3 f = dspbr_eval(b, v, l) * abs(l.z);
   vec3 e = dspbr_emission(b, v);
@@ -79,4 +85,5 @@ DSPBR_FN void dspbr_test_run(uint id, uint mode) {
   res[r + 7u] = e.x;
   res[r + 8u] = e.y;
   res[r + 9u] = e.z;
+#endif
 }

@@ -2,8 +2,9 @@
 // the shader library on a Vulkan device (Mesa's lavapipe without a GPU): the cases of
 // shader_test::chi2_cases(), the same as the C++ compile's GoogleTest
 // ShaderLibrary.SamplingMatchesPdfByChiSquare, every sample (direction, weight, pdf, flags)
-// computed by the kernel (conformance.comp, mode 3). The density the test integrates for the
-// expected counts, and the pdf and f of its per-sample consistency checks, are the C++ compile's
+// computed by the kernel (conformance.comp, mode 3 compiled alone: shader_chi2_glsl.spv, _hlsl.spv).
+// The density the test integrates for the expected counts, and the pdf and f of its per-sample
+// consistency checks, are the C++ compile's
 // (the conformance runs show it equal to the device's within the kit's tolerance), so each sample's
 // pdf and weight from the device are also checked against them, within 1e-3 (the C++ test's 1e-4
 // is one compile against itself; the driver's exp, pow and sqrt may be a few ulp off, and the
