@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -148,6 +149,36 @@ TEST(Hostile, DoublingReferencesAreRefused) {
   for (int i = 1; i <= dspbr::limits::kRefDepth + 1; ++i) chain["r" + std::to_string(i)] = {{"$ref", "#/materials/c/r" + std::to_string(i - 1)}};
   const std::string chain_path = temp_file("ref_chain.json", Json{{"materials", {{"c", chain}}}}.dump());
   expect_usage_error("params list " + chain_path, "too deep \"$ref\" chain");
+}
+
+TEST(Hostile, ResolvedValuesAreCountedWhileMerging) {
+  // Issue 45, finding 3: 40,000 materials inheriting one base of ~1000 values (2.6 MB like the
+  // tester's file, 40 million values merged) were all built before the count refused them (4.8 GB,
+  // 30 s). The count is taken as each material is merged: b holds 1006 values (the document, its
+  // "parameters", "p", "type", "enum" and its 1000 strings, "default"), each m_k 1007 (b's and its
+  // "inherits"), so the limit is crossed at the first k with 1006 + 1007 (k + 1) > limit.
+  Json names = Json::array();
+  for (int i = 0; i < 1000; ++i) names.push_back("a" + std::to_string(i));
+  Json materials = {{"b", {{"parameters", {{"p", {{"type", "enum"}, {"enum", names}, {"default", "a0"}}}}}}}};
+  for (int k = 0; k < 40000; ++k) {
+    char id[16];
+    std::snprintf(id, sizeof id, "m%05d", k);
+    materials[id] = {{"inherits", "b"}};
+  }
+  const std::size_t limit = dspbr::limits::kResolvedJsonValues;
+  const std::size_t k = (limit - 1006) / 1007;  // 1006 + 1007 (k + 1) > limit, k the smallest
+  ASSERT_GT(1006 + 1007 * (k + 1), limit);
+  ASSERT_LE(1006 + 1007 * k, limit);
+  char crossing[16];
+  std::snprintf(crossing, sizeof crossing, "m%05zu", k);
+  try {
+    dspbr::ParamDefs::from_json(Json{{"materials", materials}}, "many.json");
+    ADD_FAILURE() << "40,000 merged materials were accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "many.json: more than " + std::to_string(limit) +
+                                         " JSON values once inheritance is merged, at material '" + crossing +
+                                         "' (bases copied into many materials)");
+  }
 }
 
 TEST(Hostile, UiOrderOutsideIntIsRefused) {

@@ -99,11 +99,22 @@ struct RefResolver {
   }
 };
 
+// The JSON values of a document: itself and every value inside it, at any depth.
+std::size_t json_value_count(const Json& j) {
+  std::size_t n = 1;
+  if (j.is_structured())
+    for (const auto& child : j) n += json_value_count(child);
+  return n;
+}
+
 struct Resolver {
   const Json& materials;
   const std::string& source;
   std::map<std::string, Json> done;
   std::map<std::string, std::vector<std::string>> chains;
+  std::size_t values = 0;  // of the materials merged so far: limits::kResolvedJsonValues, counted
+                           // as each is merged (a base copied into 40,000 materials is refused
+                           // at the material that crosses the limit, not after all are built)
 
   const Json& resolve(const std::string& id, std::vector<std::string>& stack) {
     if (auto it = done.find(id); it != done.end()) return it->second;
@@ -137,6 +148,11 @@ struct Resolver {
       too_long(chain.size());  // bases resolved earlier are not on the stack
     }
     merge_into(merged, own);
+    values += json_value_count(merged);
+    if (values > limits::kResolvedJsonValues)
+      fail(source, "more than " + std::to_string(limits::kResolvedJsonValues) +
+                       " JSON values once inheritance is merged, at material '" + id +
+                       "' (bases copied into many materials)");
     chains[id] = chain;
     return done[id] = std::move(merged);
   }
@@ -322,7 +338,7 @@ ParamDefs ParamDefs::from_json(const nlohmann::ordered_json& ordered, const std:
   const Json& materials = doc["materials"];
   ParamDefs defs;
   defs.source_ = source;
-  Resolver resolver{materials, source, {}, {}};
+  Resolver resolver{materials, source, {}, {}, 0};
   Json resolved_doc = {{"materials", Json::object()}};
   for (const auto& [id, _] : materials.items()) {
     std::vector<std::string> stack;
