@@ -2,11 +2,15 @@
 // set into it: links planted at the target names are replaced, not written through; a failed or
 // abandoned run leaves the folder as it found it and removes only what it created.
 #include <gtest/gtest.h>
+#include <dlfcn.h>
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -186,4 +190,111 @@ TEST(OutputFolder, WorksInAWorkingDirectoryDeeperThanPathMax) {
   // remove the deep tree from the inside out (remove_all would need the long path)
   std::error_code ec;
   fs::remove_all(base, ec);
+}
+
+// Issue 45 (#7): a commit is all or nothing when a rename fails part-way (another filesystem, a
+// read-only sub-folder, a full disk). The failures are injected: this executable's rename and
+// linkat stand in for libc's (the library is linked into it statically), failing the calls armed
+// by number and passing every other call through.
+namespace faults {
+std::map<int, int> rename_fail, linkat_fail;  // call number from arming -> errno
+int rename_calls = 0, linkat_calls = 0;
+void arm(std::map<int, int> renames, std::map<int, int> links = {}) {
+  rename_fail = std::move(renames), linkat_fail = std::move(links);
+  rename_calls = linkat_calls = 0;
+}
+bool fails(std::map<int, int>& table, int& calls) {
+  const auto it = table.find(calls++);
+  if (it == table.end()) return false;
+  errno = it->second;
+  return true;
+}
+}  // namespace faults
+
+extern "C" int rename(const char* from, const char* to) noexcept {
+  using Fn = int (*)(const char*, const char*);
+  static const Fn real = reinterpret_cast<Fn>(::dlsym(RTLD_NEXT, "rename"));
+  return faults::fails(faults::rename_fail, faults::rename_calls) ? -1 : real(from, to);
+}
+
+extern "C" int linkat(int olddirfd, const char* from, int newdirfd, const char* to, int flags) noexcept {
+  using Fn = int (*)(int, const char*, int, const char*, int);
+  static const Fn real = reinterpret_cast<Fn>(::dlsym(RTLD_NEXT, "linkat"));
+  return faults::fails(faults::linkat_fail, faults::linkat_calls) ? -1 : real(olddirfd, from, newdirfd, to, flags);
+}
+
+namespace {
+
+// a.json and c.json in place, the set a, b, c (moved in that order, sorted).
+fs::path commit_failing(const std::string& name, std::map<int, int> renames, std::map<int, int> links,
+                        std::string& message) {
+  const fs::path dir = fresh(name);
+  write(dir / "a.json", "old a");
+  write(dir / "c.json", "old c");
+  OutputFolder out(dir.string(), "--out");
+  for (const char* f : {"a.json", "b.json", "c.json"}) write(fs::path(out.staging()) / f, std::string("new ") + f[0]);
+  faults::arm(std::move(renames), std::move(links));
+  try {
+    out.commit();
+    ADD_FAILURE() << "the commit succeeded";
+  } catch (const std::runtime_error& e) {
+    message = e.what();
+  }
+  faults::arm({});
+  return dir;
+}
+
+}  // namespace
+
+TEST(OutputFolder, AFailingRenamePutsBackWhatMovedBefore) {
+  for (const int err : {EXDEV, EACCES, ENOSPC}) {
+    std::string message;
+    const fs::path dir = commit_failing("rollback", {{2, err}}, {}, message);  // c.json's rename
+    EXPECT_EQ(message, "cannot move 'c.json' into '" + dir.string() + "': " + std::strerror(err) +
+                           ": nothing written (the files moved before were put back)");
+    EXPECT_EQ(listing(dir), (std::set<std::string>{"a.json", "c.json"}));  // b.json removed, no staging
+    EXPECT_EQ(read_all(dir / "a.json"), "old a");
+    EXPECT_EQ(read_all(dir / "c.json"), "old c");
+  }
+  // The first rename failing moves nothing; the last one failing puts two back.
+  std::string message;
+  fs::path dir = commit_failing("rollback_first", {{0, EACCES}}, {}, message);
+  EXPECT_EQ(listing(dir), (std::set<std::string>{"a.json", "c.json"}));
+  EXPECT_EQ(read_all(dir / "a.json"), "old a");
+  // Without a failure the same set commits (the fault table is what failed it).
+  dir = fresh("rollback_none");
+  write(dir / "a.json", "old a");
+  {
+    OutputFolder out(dir.string(), "--out");
+    write(fs::path(out.staging()) / "a.json", "new a");
+    EXPECT_EQ(out.commit(), (std::vector<std::string>{"a.json"}));
+  }
+  EXPECT_EQ(listing(dir), (std::set<std::string>{"a.json"}));
+  EXPECT_EQ(read_all(dir / "a.json"), "new a");
+}
+
+TEST(OutputFolder, AFileThatCannotBeKeptStopsTheCommitBeforeAnyMove) {
+  // c.json on another filesystem: its link for the rollback fails (EXDEV) before any rename.
+  std::string message;
+  const fs::path dir = commit_failing("unkept", {}, {{1, EXDEV}}, message);
+  EXPECT_EQ(message, "cannot replace '" + (dir / "c.json").string() + "': " + std::strerror(EXDEV) + ": nothing written");
+  EXPECT_EQ(listing(dir), (std::set<std::string>{"a.json", "c.json"}));
+  EXPECT_EQ(read_all(dir / "a.json"), "old a");
+  EXPECT_EQ(read_all(dir / "c.json"), "old c");
+}
+
+TEST(OutputFolder, WhatCannotBePutBackIsNamedAndKept) {
+  // c.json's rename fails, then putting a.json back fails too (rename 3): the message names the
+  // folder that keeps the old a.json, and nothing of it is lost.
+  std::string message;
+  const fs::path dir = commit_failing("lost", {{2, ENOSPC}, {3, EACCES}}, {}, message);
+  const std::string head = "cannot move 'c.json' into '" + dir.string() + "': " + std::strerror(ENOSPC) +
+                           "; could not put back a.json: the replaced files are in '";
+  ASSERT_EQ(message.substr(0, head.size()), head);
+  const fs::path kept = message.substr(head.size(), message.size() - head.size() - 1);
+  EXPECT_EQ(kept.parent_path(), dir);
+  EXPECT_EQ(read_all(kept / "a.json"), "old a");
+  EXPECT_EQ(read_all(dir / "a.json"), "new a");
+  EXPECT_EQ(read_all(dir / "c.json"), "old c");
+  EXPECT_FALSE(fs::exists(dir / "b.json"));
 }

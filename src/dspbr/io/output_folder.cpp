@@ -1,5 +1,6 @@
 #include "dspbr/io/output_folder.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -16,6 +17,7 @@ namespace fs = std::filesystem;
 
 struct OutputFolder::State {
   std::string dir, staging;
+  std::string kept;  // commit's folder of links to the files the set replaces (rollback)
   std::vector<fs::path> created;  // folders this object made, outermost first
   std::mutex mutex;
   bool done = false;  // committed or discarded
@@ -25,6 +27,7 @@ struct OutputFolder::State {
   std::string remove_own() {
     std::error_code ec;
     const std::uintmax_t n = staging.empty() ? 0 : fs::remove_all(staging, ec);
+    if (!kept.empty()) fs::remove_all(kept, ec);  // links only: the files they name are in place
     std::size_t parents = 0;
     for (auto it = created.rbegin(); it != created.rend(); ++it)
       if (::rmdir(it->c_str()) == 0) ++parents;
@@ -125,13 +128,57 @@ std::vector<std::string> OutputFolder::commit() {
       throw std::runtime_error("'" + (fs::path(s.dir) / rel).string() + "' is a folder: nothing written");
     }
   }
-  for (const std::string& rel : files) {
-    if (::rename((fs::path(s.staging) / rel).c_str(), (fs::path(s.dir) / rel).c_str()) != 0) {
+  // All or nothing: every file in place that the set replaces is first hard-linked into a folder
+  // of this run's (linkat without AT_SYMLINK_FOLLOW: a symbolic link is kept as the link); a file
+  // that cannot be linked (another filesystem, where the rename would fail too) stops the commit
+  // before anything moved. When a rename then fails (EACCES, EXDEV, ENOSPC, ...), the files moved
+  // so far are put back: each replaced one renamed back from its link, each new one removed.
+  std::vector<bool> replaces(files.size(), false);
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    const fs::path target = fs::path(s.dir) / files[k];
+    struct stat st {};
+    if (::lstat(target.c_str(), &st) != 0) continue;  // a new file
+    if (s.kept.empty()) {
+      std::string templ = (fs::path(s.dir) / ".dspbr-kept-XXXXXX").string();
+      if (::mkdtemp(templ.data()) == nullptr) {
+        const int err = errno;
+        s.remove_own();
+        throw std::runtime_error("cannot write into folder '" + s.dir + "': " + std::strerror(err) + ": nothing written");
+      }
+      s.kept = templ;
+    }
+    const fs::path link = fs::path(s.kept) / files[k];
+    fs::create_directories(link.parent_path(), ec);  // inside the run's own folder
+    if (::linkat(AT_FDCWD, target.c_str(), AT_FDCWD, link.c_str(), 0) != 0) {
       const int err = errno;
       s.remove_own();
-      throw std::runtime_error("cannot move '" + rel + "' into '" + s.dir + "': " + std::strerror(err));
+      throw std::runtime_error("cannot replace '" + target.string() + "': " + std::strerror(err) + ": nothing written");
     }
+    replaces[k] = true;
   }
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    const fs::path target = fs::path(s.dir) / files[k];
+    if (::rename((fs::path(s.staging) / files[k]).c_str(), target.c_str()) == 0) continue;
+    const int err = errno;
+    std::string lost;  // files that could not be put back
+    for (std::size_t j = k; j-- > 0;) {
+      const fs::path moved = fs::path(s.dir) / files[j];
+      const bool back = replaces[j] ? ::rename((fs::path(s.kept) / files[j]).c_str(), moved.c_str()) == 0
+                                    : ::unlink(moved.c_str()) == 0;
+      if (!back) lost += (lost.empty() ? "" : ", ") + files[j];
+    }
+    std::string what = "cannot move '" + files[k] + "' into '" + s.dir + "': " + std::strerror(err);
+    if (lost.empty()) {
+      s.remove_own();
+      throw std::runtime_error(what + ": nothing written (the files moved before were put back)");
+    }
+    // Keep the links to what could not be restored, and say where they are.
+    const std::string kept = s.kept;
+    s.kept.clear();
+    s.remove_own();
+    throw std::runtime_error(what + "; could not put back " + lost + ": the replaced files are in '" + kept + "'");
+  }
+  if (!s.kept.empty()) fs::remove_all(s.kept, ec), s.kept.clear();  // links to the replaced files
   fs::remove_all(s.staging, ec);  // the emptied staging folders
   s.done = true;
   return files;

@@ -28,8 +28,9 @@ class OutputFolder {
   const std::string& staging() const;  // where the run writes its files
 
   // Moves every file of the staging folder to the same relative path in dir() (creating
-  // sub-folders), removes the staging folder; returns the relative paths moved, sorted. Throws
-  // std::runtime_error naming the file when one cannot be moved (the rest is discarded).
+  // sub-folders), removes the staging folder; returns the relative paths moved, sorted. All or
+  // nothing: throws std::runtime_error naming the file when one cannot be moved, after putting
+  // back the files moved before it (docs/limits.md, "Output folders"); the rest is discarded.
   std::vector<std::string> commit();
 
   // Removes the staging folder and the folders the constructor created (when empty); says what
