@@ -127,17 +127,7 @@ std::vector<uint32_t> compile_kernel(const RunArgs& a, const std::string& work) 
 
 // Vector x as the driver reads it (kit_driver.glsl): the material, the options, v and l.
 void pack(const conformance::Vector& x, float* out) {
-  const dspbr_shader::DspbrMaterial m = shader::to_shader_material(conformance::vector_material(x));
-  const dspbr_shader::DspbrOptions o = shader::to_shader_options(conformance::vector_options(x));
-  DSPBR_MATERIAL_PACK(m, out, 0u);
-  std::size_t i = dspbr_shader::DSPBR_MATERIAL_FLOATS;
-  const auto put3 = [&](float a, float b, float c) { out[i] = a, out[i + 1] = b, out[i + 2] = c, i += 3; };
-  out[i++] = float(o.sheen_model);
-  out[i++] = o.object_area_m2;
-  put3(o.position.x, o.position.y, o.position.z);
-  put3(o.object_normal.x, o.object_normal.y, o.object_normal.z);
-  put3(float(x.v.x), float(x.v.y), float(x.v.z));
-  put3(float(x.l.x), float(x.l.y), float(x.l.z));
+  shader::pack_shader_inputs(conformance::vector_material(x), conformance::vector_options(x), x.v, x.l, out);
 }
 
 // A value the shader wrote: as it is when finite, else 1e300 (fails wherever it is judged; a
@@ -189,7 +179,8 @@ void run_shader(const RunArgs& a) {
   const std::vector<vk_compute::TableImage> textures =
       vk_compute::read_lookup_textures(shared_path("luts", "; the tables are installed with dspbr"), false);
 
-  const std::size_t rec = dspbr_shader::DSPBR_MATERIAL_FLOATS + 14, res = 14;  // kit.glsl's record and result
+  // kit.glsl's DSPBR_CONFORMANCE_RECORD_FLOATS and DSPBR_CONFORMANCE_RESULT_FLOATS
+  const std::size_t rec = shader::kShaderInputFloats, res = 14;
   std::vector<conformance::Result> results(vectors.size());
   for (std::size_t first = 0; first < vectors.size(); first += kBatch) {
     const std::size_t n = std::min(kBatch, vectors.size() - first);

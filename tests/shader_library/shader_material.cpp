@@ -1,5 +1,6 @@
 #include "shader_material.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -70,16 +71,11 @@ std::vector<std::pair<std::string, double>> material_fields(const dspbr_shader::
 }
 
 void pack_record(const dspbr::conformance::Vector& x, float* out) {
-  const dspbr_shader::DspbrMaterial m = to_shader_material(dspbr::conformance::vector_material(x));
-  const dspbr_shader::DspbrOptions o = to_shader_options(dspbr::conformance::vector_options(x));
-  // The order of kernel_common.glsl's dspbr_test_run: the material, the options, v, l.
-  DSPBR_MATERIAL_PACK(m, out, 0u);
-  int i = int(dspbr_shader::DSPBR_MATERIAL_FLOATS);
-  auto put = [&](float f) { out[i++] = f; };
-  auto put3 = [&](vec3 c) { put(c.x), put(c.y), put(c.z); };
-  put(float(o.sheen_model)), put(o.object_area_m2), put3(o.position), put3(o.object_normal);
-  put3(vec3(float(x.v.x), float(x.v.y), float(x.v.z))), put3(vec3(float(x.l.x), float(x.l.y), float(x.l.z)));
-  while (i < kRecordFloats) put(0.0f);
+  // The order of kernel_common.glsl's dspbr_test_run: the material, the options, v, l; then zeros.
+  static_assert(dspbr::shader::kShaderInputFloats <= std::size_t(kRecordFloats), "the record holds the inputs");
+  dspbr::shader::pack_shader_inputs(dspbr::conformance::vector_material(x), dspbr::conformance::vector_options(x), x.v,
+                                    x.l, out);
+  std::fill(out + dspbr::shader::kShaderInputFloats, out + kRecordFloats, 0.0f);
 }
 
 const std::vector<dspbr::conformance::Vector>& builtin_materials() {

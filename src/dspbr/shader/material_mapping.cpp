@@ -65,4 +65,15 @@ dspbr_shader::DspbrOptions to_shader_options(const BsdfOptions& o) {
   return s;
 }
 
+void pack_shader_inputs(const Material& m, const BsdfOptions& o, const Vec3& v, const Vec3& l, float* out) {
+  const dspbr_shader::DspbrMaterial sm = to_shader_material(m);
+  const dspbr_shader::DspbrOptions so = to_shader_options(o);
+  DSPBR_MATERIAL_PACK(sm, out, 0u);
+  std::size_t i = dspbr_shader::DSPBR_MATERIAL_FLOATS;
+  const auto put3 = [&](vec3 c) { out[i] = c.x, out[i + 1] = c.y, out[i + 2] = c.z, i += 3; };
+  out[i++] = float(so.sheen_model);
+  out[i++] = so.object_area_m2;
+  put3(so.position), put3(so.object_normal), put3(v3(v)), put3(v3(l));
+}
+
 }  // namespace dspbr::shader
