@@ -399,11 +399,11 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
     std::string text, needle, flags;
   };
   const std::vector<Case> cases = {
-      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,nan,0\n", "line 2 (id '" + first + "'): f_cos_g is not a finite number"},
+      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,nan,0\n", "line 2 (id '" + first + "'): f_cos_g is not a finite decimal number"},
       {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,0\n", "line 2 (id '" + first + "'): 3 fields"},
       {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,0,0\n", "no result for vector '" + second + "'", "--require-all"},
       {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",,,\n", "no result for any of the " + std::to_string(vs.size()) + " vectors"},
-      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,,0\n", "line 2 (id '" + first + "'): f_cos_g is not a finite number"},
+      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,,0\n", "line 2 (id '" + first + "'): f_cos_g is not a finite decimal number"},
       {"{\"results\": [{\"id\": \"" + first + "\", \"f_cos\": [1, 2]}]}", "results[0] (id '" + first + "')"},
       {"{\"results\": [{\"id\": \"nope\", \"f_cos\": [1, 2, 3]}]}", "id 'nope' is not a vector of"},
       {"{\"results\": [{\"id\": \"" + first + "\", \"f_cos\": [1, 2, 3]}, ", "malformed JSON"},

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -14,7 +15,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "dspbr/conformance/results.h"
 #include "dspbr/gltf/gltf_file.h"
+#include "dspbr/io/decimal.h"
 #include "dspbr/gltf/gltf_uri.h"
 #include "test_params_run.h"
 #include "test_files.h"
@@ -227,6 +230,68 @@ TEST(Untrusted, CommandLineNumbersAreDecimal) {
   EXPECT_EQ(tiny.status, 0) << tiny.output;
   expect_usage_error("eval --set roughness=1e999 --view 0,0,1 --light 0,0,1", "parameter 'roughness': '1e999' is beyond the range of a double");
   expect_usage_error("eval --set roughness=0x1p-2 --view 0,0,1 --light 0,0,1", "parameter 'roughness': '0x1p-2' is not a number");
+  // Issue 45 (poor list): one number grammar for every real-valued option; an empty value or a
+  // non-finite one is an error naming the option, never the default.
+  expect_usage_error("eval --view 0x1p0,0,1 --light 0,0,1", "--view expects 3 comma-separated decimal numbers, got '0x1p0,0,1'");
+  expect_usage_error("sample --view 0,0,1 --u 0.5,nan,0.5", "--u expects 3 comma-separated decimal numbers, got '0.5,nan,0.5'");
+  const std::string grammar = ": must be a decimal number (as JSON writes numbers: 0.5, -2, 1e-7), got '";
+  expect_usage_error("eval --view 0,0,1 --light 0,0,1 --wavelength 0x10", "--wavelength" + grammar + "0x10'");
+  expect_usage_error("eval --view 0,0,1 --light 0,0,1 --wavelength ''", "--wavelength" + grammar + "'");
+  expect_usage_error("eval --view 0,0,1 --light 0,0,1 --area inf", "--area" + grammar + "inf'");
+  expect_usage_error(base + " --target-error nan", "--target-error" + grammar + "nan'");
+  EXPECT_FALSE(fs::exists(dir / "refused"));
+  // The results reader: a CSV number is decimal too.
+  try {
+    dspbr::conformance::parse_results("id,f_cos_r,f_cos_g,f_cos_b\na,0x10,0,0\n", "r.csv");
+    ADD_FAILURE() << "0x10 read as a number";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("f_cos_r is not a finite decimal number: '0x10'"), std::string::npos) << e.what();
+  }
+}
+
+// Issue 45 (poor list): a results file that starts with a UTF-8 byte-order mark is read as what
+// follows it, JSON or CSV (a spreadsheet's export).
+TEST(Untrusted, AByteOrderMarkIsSkipped) {
+  const std::string bom = "\xEF\xBB\xBF";
+  for (const std::string text : {bom + R"({"results": [{"id": "a", "f_cos": [1, 2, 3]}]})", bom + "id,f_cos_r,f_cos_g,f_cos_b\na,1,2,3\n"}) {
+    const auto rs = dspbr::conformance::parse_results(text, "r");
+    ASSERT_EQ(rs.size(), 1u) << text;
+    EXPECT_EQ(rs[0].id, "a");
+    EXPECT_EQ(rs[0].f_cos->b, 3.0);
+  }
+}
+
+// The number grammar is JSON's: parse_decimal accepts exactly the texts nlohmann's JSON parser
+// reads as one number, with the same value, and calls out of range what it calls an overflow;
+// only the whitespace a JSON document may have around its value is not part of a number.
+TEST(Untrusted, DecimalGrammarIsJsonNumbers) {
+  const char* texts[] = {"0", "-0", "1", "-1", "10", "0.5", "-0.25", "1e-7", "1E+3", "2.5e-3", "123456789012345678901234567890",
+                         "1e-320", "4.9e-324", "1e-400", "1.7976931348623157e308", "1e999", "-1e999", "", "-", "+1", ".5",
+                         "5.", "01", "00", "-01", "1e", "1e+", "0x10", "0x1p0", "nan", "NaN", "inf", "-inf", "Infinity",
+                         " 1", "1 ", "1,5", "1.5.5", "--1", "1e5e5", "\t1", "1_000", "١"};
+  for (const char* t : texts) {
+    const dspbr::Decimal d = dspbr::parse_decimal(t);
+    bool number = false, overflow = false;
+    double value = 0;
+    const std::string text(t);
+    const bool spaced = !text.empty() && (std::isspace((unsigned char)text.front()) || std::isspace((unsigned char)text.back()));
+    try {
+      const Json j = Json::parse(spaced ? "\"\"" : text);
+      number = j.is_number();
+      if (number) value = j.get<double>();
+    } catch (const Json::out_of_range&) {
+      overflow = true;  // nlohmann: "number overflow parsing"
+    } catch (const Json::exception&) {
+    }
+    if (overflow) {
+      EXPECT_EQ(d.status, dspbr::Decimal::OutOfRange) << t;
+    } else if (number) {
+      EXPECT_EQ(d.status, dspbr::Decimal::Ok) << t;
+      EXPECT_EQ(d.value, value) << t;
+    } else {
+      EXPECT_EQ(d.status, dspbr::Decimal::NotANumber) << t;
+    }
+  }
 }
 
 // A refused validate (its table file malformed) leaves no output folder behind.

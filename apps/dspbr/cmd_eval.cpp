@@ -59,12 +59,12 @@ std::vector<double> parse_numbers(const std::string& option, const std::string& 
   std::stringstream ss(text);
   std::string item;
   while (std::getline(ss, item, ',')) {
-    // std::strtod, not std::stod: a subnormal such as 1e-320 is a number (stod throws on its ERANGE).
-    char* end = nullptr;
-    const double x = item.empty() ? 0 : std::strtod(item.c_str(), &end);
-    if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(x))
-      throw UsageError(option + " expects " + std::to_string(count) + " comma-separated finite numbers, got '" + text + "'");
-    out.push_back(x);
+    // The one number grammar (decimal.h); a subnormal such as 1e-320 is a number.
+    const Decimal x = parse_decimal(item);
+    if (x.status != Decimal::Ok)
+      throw UsageError(option + " expects " + std::to_string(count) + " comma-separated decimal numbers, got '" +
+                       quote_input(text) + "'");
+    out.push_back(x.value);
   }
   if (out.size() != count)
     throw UsageError(option + " expects " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
@@ -173,8 +173,9 @@ void add_common_options(CLI::App* cmd, EvalArgs& a) {
   cmd->add_option("--object-normal", a.object_normal, "Object-space normal x,y,z (flakes' triplanar mapping)")
       ->capture_default_str();
   cmd->add_option("--wavelength", a.wavelength, "Wavelength in nm for dispersion (0: plain ior)")
-      ->capture_default_str();
-  cmd->add_option("--area", a.area, "Object area in m^2 (emission in lm)")->capture_default_str();
+      ->capture_default_str()
+      ->check(decimal_number());
+  cmd->add_option("--area", a.area, "Object area in m^2 (emission in lm)")->capture_default_str()->check(decimal_number());
   cmd->add_option("--tables", a.tables,
                   "Energy tables the BSDF reads: renderer (default; warped layout, accurate over the whole domain) "
                   "or published (the published grids, as a renderer using them gets)")

@@ -283,7 +283,8 @@ void add_lut_command(CLI::App& app) {
       ->transform(decimal_integer(1, INT_MAX, "a sample count"));
   cmd->add_option("--target-error", args->target_error,
                   "Error target per cell: quad's error estimate (default 1e-7), qmc/mc's standard error "
-                  "(default 1e-5; 0: the fixed budget of --samples)");
+                  "(default 1e-5; 0: the fixed budget of --samples)")
+      ->check(decimal_number());
   cmd->add_option("--randomizations", args->randomizations,
                   "Independent randomizations per cell for the error estimate (default: 8)")
       ->transform(decimal_integer(2, 1024, "a randomization count"));

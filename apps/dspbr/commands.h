@@ -11,6 +11,7 @@
 #include <string>
 
 #include "dspbr/limits.h"
+#include "dspbr/io/decimal.h"
 #include "dspbr/io/message.h"
 
 namespace dspbr::cli {
@@ -42,6 +43,19 @@ inline CLI::Validator decimal_integer(unsigned long long lo, unsigned long long 
         return "";
       },
       std::to_string(lo) + " to " + std::to_string(hi));
+}
+
+// A real-valued option in the one number grammar (src/dspbr/io/decimal.h: decimal as JSON spells
+// it): CLI11 alone would take "0x10", "nan" and "inf", and an empty value as the default.
+inline CLI::Validator decimal_number() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        const Decimal d = parse_decimal(s);
+        if (d.status == Decimal::Ok) return "";
+        return "must be a decimal number (as JSON writes numbers: 0.5, -2, 1e-7), got '" + quote_input(s) + "'" +
+               (d.status == Decimal::OutOfRange ? " (beyond the range of a double)" : "");
+      },
+      "NUMBER");
 }
 
 // Seeds: any 64-bit unsigned integer.

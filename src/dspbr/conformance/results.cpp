@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "dspbr/conformance/vector_file.h"
+#include "dspbr/io/decimal.h"
 #include "dspbr/io/json_fields.h"
 #include "dspbr/io/message.h"
 #include "dspbr/io/read_file.h"
@@ -90,11 +91,10 @@ std::vector<std::string> csv_fields(const std::string& line, const std::string& 
 }
 
 double csv_number(const std::string& text, const std::string& column, const std::string& where) {
-  char* end = nullptr;
-  const double x = text.empty() ? 0 : std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(x))
-    throw std::runtime_error(where + ": " + column + " is not a finite number: " + in_quotes(text));
-  return x;
+  const Decimal x = parse_decimal(text);  // the one number grammar (decimal.h)
+  if (x.status != Decimal::Ok)
+    throw std::runtime_error(where + ": " + column + " is not a finite decimal number: " + in_quotes(text));
+  return x.value;
 }
 
 // Three fields NAME_r, NAME_g, NAME_b from f[c]: all empty is not supplied.
@@ -161,6 +161,8 @@ std::vector<Result> parse_csv_results(std::string_view bytes, const std::string&
 }  // namespace
 
 std::vector<Result> parse_results(std::string_view bytes, const std::string& path) {
+  // A UTF-8 byte-order mark (a spreadsheet's CSV export, some editors' JSON) is not content.
+  if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
   const std::size_t first = bytes.find_first_not_of(" \t\r\n");
   if (first == std::string_view::npos) fail(path, "the results file is empty");
   std::vector<Result> out = bytes[first] == '{' ? parse_json_results(bytes, path) : parse_csv_results(bytes, path);

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dspbr/io/decimal.h"
 #include "dspbr/io/message.h"
 #include "dspbr/nearest_name.h"
 #include "dspbr/io/json_fields.h"
@@ -167,17 +168,13 @@ Json get_material_parameter(const Material& m, const std::string& id) { return f
 Json parse_parameter_text(const std::string& id, const std::string& text) {
   auto number = [&](const std::string& s) -> Json {
     if (s == "inf" || s == "+inf" || s == "infinity") return Json{{"infinity", true}};
-    // Decimal notation only (strtod would also take hexadecimal floats and "nan"); a value too
-    // small for a normal double is kept (subnormal or 0), one beyond its range refused.
+    // The one number grammar (decimal.h); a value too small for a normal double is kept
+    // (subnormal or 0), one beyond its range refused.
     const std::string q = "parameter '" + id + "': '" + quote_input(s) + "' ";
-    if (s.empty() || s.find_first_not_of("0123456789+-.eE") != std::string::npos)
-      throw std::invalid_argument(q + "is not a number");
-    char* end = nullptr;
-    errno = 0;
-    const double x = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size()) throw std::invalid_argument(q + "is not a number");
-    if (errno == ERANGE && std::isinf(x)) throw std::invalid_argument(q + "is beyond the range of a double");
-    return x;
+    const Decimal x = parse_decimal(s);
+    if (x.status == Decimal::NotANumber) throw std::invalid_argument(q + "is not a number");
+    if (x.status == Decimal::OutOfRange) throw std::invalid_argument(q + "is beyond the range of a double");
+    return x.value;
   };
   switch (material_parameter_kind(id)) {
     case ParamKind::Float: return number(text);
