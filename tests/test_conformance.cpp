@@ -324,6 +324,33 @@ TEST(Conformance, ResultsCsvWithPdfAndAlbedo) {
   EXPECT_THROW(parse_results("id,f_cos_r,f_cos_g\na,1,2\n", "r.csv"), std::runtime_error);
 }
 
+// Issue 45 (poor list): --python is checked before any work (a Python that cannot import the
+// report's modules is a usage error, exit 2), and a report script that exits 0 without writing
+// index.html fails the run (exit 1) instead of succeeding; neither leaves the report folder.
+TEST(Conformance, TheReportPythonIsCheckedBeforeTheWorkAndItsPageAfter) {
+  const fs::path dir = scratch("python");
+  write(dir / "v.json",
+        R"({"format": "dspbr-conformance", "version": 1, "provenance": {}, "vectors": [{"id": "a", "group": "g",
+        "components": [], "material": {"material": "generic", "values": {}}, "v": [0, 0, 1], "l": [0, 0, 1],
+        "f_cos": [0, 0, 0], "tolerance": {"abs": 1, "rel": 0}, "pdf": 0, "pdf_tolerance": {"abs": 1, "rel": 0}}]})");
+  write(dir / "r.json", R"({"results": [{"id": "a", "f_cos": [0, 0, 0]}]})");
+  const std::string check = "conformance check '" + (dir / "v.json").string() + "' '" + (dir / "r.json").string() +
+                            "' --out '" + (dir / "report").string() + "' --python ";
+  const ToolRun no_modules = run_dspbr(check + "/bin/false");
+  EXPECT_EQ(no_modules.status, 2) << no_modules.output;
+  EXPECT_EQ(no_modules.output, "dspbr: error: --python: '/bin/false' cannot import numpy, matplotlib and jinja2 (exit "
+                               "status 1): give a Python that can (Debian: python3-numpy python3-matplotlib "
+                               "python3-jinja2), or --no-html\n");
+  const ToolRun no_page = run_dspbr(check + "/bin/true");
+  EXPECT_EQ(no_page.status, 1) << no_page.output;
+  EXPECT_NE(no_page.output.find("the report script exited 0 without writing index.html: '/bin/true' '"),
+            std::string::npos)
+      << no_page.output;
+  EXPECT_EQ(no_page.output.find(".dspbr-staging"), std::string::npos) << no_page.output;
+  EXPECT_FALSE(fs::exists(dir / "report"));
+  fs::remove_all(dir);
+}
+
 TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
   const fs::path dir = scratch("cli");
   const ToolRun gen = run_dspbr("conformance generate --directions 2 --no-albedo --out '" + (dir / "v").string() + "'");

@@ -189,7 +189,8 @@ TEST(Interrupt, TheReportScriptIsStoppedWithTheRun) {
                            "' > /dev/null").c_str()),
               0);
     const fs::path fake = dir / "python", pid_file = dir / "script.pid";
-    std::ofstream(fake) << "#!/bin/sh\necho $$ > '" << pid_file.string() << "'\nexec sleep 30\n";
+    // `python -c "import ..."` (the check before the work) succeeds; the script itself sleeps.
+    std::ofstream(fake) << "#!/bin/sh\n[ \"$1\" = -c ] && exit 0\necho $$ > '" << pid_file.string() << "'\nexec sleep 30\n";
     fs::permissions(fake, fs::perms::owner_all);
     const fs::path out = dir / "report";
     const LutRun r = start_args({DSPBR_EXE, "conformance", "check", vectors, results, "--python", fake.string(), "--out",

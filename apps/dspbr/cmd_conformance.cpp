@@ -108,7 +108,7 @@ void run_generate(const GenerateArgs& a) {
 }
 
 void run_check(const CheckArgs& a) {
-  const std::string script = a.html ? report_script("conformance_report.py") : std::string();
+  const std::string script = a.html ? report_script("conformance_report.py", a.python) : std::string();
   std::vector<conformance::Vector> vectors;
   std::vector<conformance::Result> results;
   try {

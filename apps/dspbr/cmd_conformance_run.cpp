@@ -153,7 +153,7 @@ void run_shader(const RunArgs& a) {
 #ifndef DSPBR_HAVE_VULKAN
   throw UsageError("this dspbr was built without Vulkan (libvulkan-dev): `conformance run` cannot run shaders");
 #else
-  const std::string script = a.html ? report_script("conformance_report.py") : std::string();
+  const std::string script = a.html ? report_script("conformance_report.py", a.python) : std::string();
   std::vector<conformance::Vector> vectors;
   try {
     vectors = conformance::read_vectors(a.vectors);

@@ -41,7 +41,7 @@ struct ValidateArgs {
 };
 
 void run_validate(const ValidateArgs& a) {
-  const std::string script = a.html ? report_script("make_report.py") : std::string();
+  const std::string script = a.html ? report_script("make_report.py", a.python) : std::string();
   std::unique_ptr<tbb::global_control> threads;
   if (a.threads > 0)
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(a.threads));

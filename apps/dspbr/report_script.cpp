@@ -35,13 +35,16 @@ std::string shared_path(const std::string& relative, const std::string& hint) {
   throw std::runtime_error(relative + " not found (looked for " + tried + ")" + hint);
 }
 
-std::string report_script(const std::string& name) {
-  return shared_path("report/" + name, "; --no-html writes only the data");
+std::string report_script(const std::string& name, const std::string& python) {
+  std::string script = shared_path("report/" + name, "; --no-html writes only the data");
+  check_report_python(python);
+  return script;
 }
 
 void run_report_script(const std::string& python, const std::string& script, const std::string& folder,
                        const std::string& out) {
-  const std::string cmd = shell_quote(python) + " " + shell_quote(script) + " " + shell_quote(folder);
+  // Messages name the command without the staging folder it was given (a temporary path).
+  const std::string cmd = shell_quote(python) + " " + shell_quote(script);
   const ChildExit r = run_child({python, script, folder});
   if (!r.started)
     throw UsageError("--python: cannot run " + shell_quote(python) + ": " + std::strerror(r.error) +
@@ -49,6 +52,19 @@ void run_report_script(const std::string& python, const std::string& script, con
   if (r.status != 0)
     throw std::runtime_error("the report script failed (exit status " + std::to_string(r.status) + "): " + cmd +
                              " (nothing was written to " + out + ")");
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(std::filesystem::path(folder) / "index.html", ec))
+    throw std::runtime_error("the report script exited 0 without writing index.html: " + cmd +
+                             " (nothing was written to " + out + ")");
+}
+
+void check_report_python(const std::string& python) {
+  const ChildExit r = run_child({python, "-c", "import numpy, matplotlib, jinja2"}, "/dev/null");
+  if (!r.started) throw UsageError("--python: cannot run " + shell_quote(python) + ": " + std::strerror(r.error));
+  if (r.status != 0)
+    throw UsageError("--python: " + shell_quote(python) + " cannot import numpy, matplotlib and jinja2 (exit status " +
+                     std::to_string(r.status) +
+                     "): give a Python that can (Debian: python3-numpy python3-matplotlib python3-jinja2), or --no-html");
 }
 
 }  // namespace dspbr::cli
