@@ -256,6 +256,13 @@ TEST(MaterialInstance, LoadFromFileNamesTheFile) {
   }
   unsetenv("DSPBR_PARAMS");
   EXPECT_NE(message.find("unknown parameter 'roughness'"), std::string::npos) << message;
+  // A bad file named by the variable is said to come from it (issue 45, poor list).
+  setenv("DSPBR_PARAMS", (kData + "malformed_instance.json").c_str(), 1);
+  const auto listed = run_dspbr("params list");
+  unsetenv("DSPBR_PARAMS");
+  EXPECT_EQ(listed.status, 2) << listed.output;
+  EXPECT_EQ(listed.output.rfind("dspbr: error: $DSPBR_PARAMS: " + kData + "malformed_instance.json: ", 0), 0u)
+      << listed.output;
 }
 
 TEST(ParamsCli, ListShowCheck) {

@@ -113,7 +113,13 @@ void check_value(const ParamDef& d, const Json& v, std::vector<std::string>& pro
 }  // namespace
 
 ParamDefs default_param_defs() {
-  if (const char* env = std::getenv("DSPBR_PARAMS"); env && *env) return ParamDefs::load(env);
+  if (const char* env = std::getenv("DSPBR_PARAMS"); env && *env) {
+    try {
+      return ParamDefs::load(env);
+    } catch (const std::runtime_error& e) {  // the file's problem, said to come from the variable
+      throw std::runtime_error(std::string("$DSPBR_PARAMS: ") + e.what());
+    }
+  }
   return ParamDefs::builtin();
 }
 

@@ -13,7 +13,7 @@ namespace dspbr {
 class ParamDefs;
 
 // The definitions used when no file is given: the file $DSPBR_PARAMS names if set (read at each
-// call; errors as ParamDefs::load), else ParamDefs::builtin().
+// call; errors as ParamDefs::load, after "$DSPBR_PARAMS: "), else ParamDefs::builtin().
 ParamDefs default_param_defs();
 
 // Every problem of an instance document against the definitions, one clear message each
