@@ -31,45 +31,71 @@ def load(path):
     return doc["vectors"]
 
 
+def _number(x, what, vid):
+    """x as a float when it is a real number (int, float or a numpy scalar of those kinds; not a
+    bool, not a string); ValueError naming the vector otherwise."""
+    import numbers
+    if isinstance(x, bool) or not isinstance(x, numbers.Real) or isinstance(x, (str, bytes)):
+        raise ValueError(f"vector {vid!r}: {what} must be a number, got {x!r}")
+    value = float(x)
+    if not math.isfinite(value):
+        raise ValueError(f"vector {vid!r}: {what} must be a finite number, got {x!r}")
+    return value
+
+
 def _rgb(x, what, vid):
-    try:
-        vals = [float(c) for c in x]
-    except (TypeError, ValueError):
-        vals = None
-    if vals is None or len(vals) != 3 or not all(math.isfinite(c) for c in vals):
+    """3 finite numbers from a list, tuple or array of 3 (not a string)."""
+    if isinstance(x, (str, bytes, dict)) or not hasattr(x, "__len__") or len(x) != 3:
         raise ValueError(f"vector {vid!r}: {what} must be 3 finite numbers, got {x!r}")
-    return vals
+    return [_number(c, f"{what}[{k}]", vid) for k, c in enumerate(x)]
+
+
+_KEYS = ("f_cos",) + _OPTIONAL
 
 
 def run(vectors, my_eval):
     """{"results": [...]} for `vectors` (a path, a loaded document or a list of vectors), one result
-    per vector from my_eval(vector). Raises ValueError naming the vector when a value is not 3
-    finite numbers (or, for pdf, one finite number)."""
+    per vector from my_eval(vector). Raises ValueError naming the vector when what my_eval returns
+    is not 3 finite numbers (or, for pdf, one finite number; booleans and strings are not numbers),
+    or a dict with a key other than f_cos, pdf, albedo, emission and delta (a misspelt "pfd" would
+    otherwise go unjudged)."""
+    import difflib
     if isinstance(vectors, str):
         vectors = load(vectors)
     elif isinstance(vectors, dict):
         vectors = vectors["vectors"]
     results = []
     for v in vectors:
+        vid = v["id"]
         out = my_eval(v)
-        r = {"id": v["id"]}
+        r = {"id": vid}
         if isinstance(out, dict):
-            r["f_cos"] = _rgb(out.get("f_cos"), "f_cos", v["id"])
+            for key in out:
+                if key not in _KEYS:
+                    near = difflib.get_close_matches(str(key), _KEYS, n=1)
+                    hint = f" (did you mean {near[0]!r}?)" if near else ""
+                    raise ValueError(f"vector {vid!r}: unknown key {key!r}{hint}; the keys are {', '.join(_KEYS)}")
+            r["f_cos"] = _rgb(out.get("f_cos"), "f_cos", vid)
             for key in _OPTIONAL:
                 if key not in out or out[key] is None:
                     continue
                 if key == "pdf":
-                    p = float(out["pdf"])
-                    if not math.isfinite(p):
-                        raise ValueError(f"vector {v['id']!r}: pdf must be a finite number, got {out['pdf']!r}")
-                    r["pdf"] = p
+                    r["pdf"] = _number(out["pdf"], "pdf", vid)
                 elif key == "delta":
-                    r["delta"] = [{"l": _rgb(d["l"], "delta l", v["id"]), "value": _rgb(d["value"], "delta value", v["id"])}
-                                  for d in out["delta"]]
+                    if isinstance(out["delta"], (str, bytes, dict)) or not hasattr(out["delta"], "__iter__"):
+                        raise ValueError(f"vector {vid!r}: delta must be a list of {{'l': ..., 'value': ...}}, "
+                                         f"got {out['delta']!r}")
+                    r["delta"] = []
+                    for k, d in enumerate(out["delta"]):
+                        if not isinstance(d, dict) or set(d) != {"l", "value"}:
+                            raise ValueError(f"vector {vid!r}: delta[{k}] must be {{'l': [x, y, z], 'value': [r, g, b]}}, "
+                                             f"got {d!r}")
+                        r["delta"].append({"l": _rgb(d["l"], f"delta[{k}].l", vid),
+                                           "value": _rgb(d["value"], f"delta[{k}].value", vid)})
                 else:
-                    r[key] = _rgb(out[key], key, v["id"])
+                    r[key] = _rgb(out[key], key, vid)
         else:
-            r["f_cos"] = _rgb(out, "f_cos", v["id"])
+            r["f_cos"] = _rgb(out, "f_cos", vid)
         results.append(r)
     return {"results": results}
 

@@ -47,7 +47,7 @@ def test_published_tables_fail_where_tables_are_read(vectors, tmp_path):
 
 
 def test_bad_values_name_the_vector(vectors):
-    with pytest.raises(ValueError, match=r"vector 'plain_metal/gold-r10/00': f_cos must be 3 finite numbers"):
+    with pytest.raises(ValueError, match=r"vector 'plain_metal/gold-r10/00': f_cos\[1\] must be a finite number, got nan"):
         dc.run(vectors, lambda v: [0.0, float("nan"), 0.0])
     with pytest.raises(ValueError, match="f_cos must be 3 finite numbers"):
         dc.run(vectors, lambda v: [1, 2])

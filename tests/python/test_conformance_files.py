@@ -71,3 +71,32 @@ def test_write_results_is_atomic(tmp_path):
     dc.write_results({"results": [{"id": "b/00", "f_cos": [1, 2, 3]}]}, p)
     assert json.loads(p.read_text())["results"][0]["id"] == "b/00"
     assert sorted(os.listdir(tmp_path)) == ["results.json"]
+
+
+# dspbr.conformance.run checks what the user's function returns (issue 45, poor list): a string,
+# a boolean, a numeric string or an unknown key is a ValueError naming the vector (before: '123'
+# became [1, 2, 3], True 1, '1e3' 1000, and a misspelt "pfd" was dropped unjudged).
+@pytest.mark.parametrize("out, message", [
+    ("123", "vector 'a': f_cos must be 3 finite numbers, got '123'"),
+    ([True, 0, 0], "vector 'a': f_cos[0] must be a number, got True"),
+    (["1e3", 0, 0], "vector 'a': f_cos[0] must be a number, got '1e3'"),
+    ([float("nan"), 0, 0], "vector 'a': f_cos[0] must be a finite number, got nan"),
+    ({"f_cos": [0, 0, 0], "pfd": 1}, "vector 'a': unknown key 'pfd' (did you mean 'pdf'?)"),
+    ({"f_cos": [0, 0, 0], "pdf": "1"}, "vector 'a': pdf must be a number, got '1'"),
+    ({"f_cos": [0, 0, 0], "delta": [{"l": [0, 0, 1]}]}, "vector 'a': delta[0] must be"),
+])
+def test_run_refuses_what_is_not_a_result(out, message):
+    with pytest.raises(ValueError) as e:
+        dc.run([{"id": "a"}], lambda v: out)
+    assert str(e.value).startswith(message), str(e.value)
+
+
+def test_run_takes_numbers_of_any_real_kind():
+    np = pytest.importorskip("numpy")
+    outs = [np.array([0.1, 0.2, 0.3]), (np.float32(1), 2, 3),
+            {"f_cos": [0, 0, 0], "pdf": np.float64(2), "delta": [{"l": [0, 0, 1], "value": (1, 1, 1)}]}]
+    results = [dc.run([{"id": "a"}], lambda v, o=o: o)["results"][0] for o in outs]
+    assert results[0]["f_cos"] == [0.1, 0.2, 0.3]
+    assert results[1]["f_cos"] == [1.0, 2.0, 3.0]
+    assert results[2] == {"id": "a", "f_cos": [0.0, 0.0, 0.0], "pdf": 2.0,
+                          "delta": [{"l": [0.0, 0.0, 1.0], "value": [1.0, 1.0, 1.0]}]}
