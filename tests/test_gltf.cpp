@@ -258,6 +258,13 @@ TEST(Gltf, BadInputsGiveClearErrors) {
     EXPECT_NE(e.find(message), std::string::npos) << file << ": " << e;
     EXPECT_NE(e.find(file), std::string::npos) << e;
   }
+  // A texture index is named as written (issue 45, poor list: 2^64 - 1 was "texture -1").
+  for (const std::string index : {"18446744073709551615", "9223372036854775808", "-1", "1"}) {
+    const std::string text = R"({"asset": {"version": "2.0"}, "textures": [{}], "materials": [{"name": "m",
+        "pbrMetallicRoughness": {"baseColorTexture": {"index": )" + index + "}}}]}";
+    const std::string e = error_of([&] { map_materials(parse_gltf(std::vector<std::uint8_t>(text.begin(), text.end()), "t.gltf")); });
+    EXPECT_NE(e.find("baseColorTexture refers to texture " + index + ", which does not exist"), std::string::npos) << e;
+  }
   // Broken GLB containers.
   const auto good = materials_glb();
   auto truncated = good;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -83,9 +84,12 @@ class Mapper {
     const Json& t = obj[key];
     if (!t.is_object() || !t.contains("index") || !t["index"].is_number_integer())
       fail(prefix + key + " must be a textureInfo object with an integer \"index\"");
-    const long long index = t["index"].get<long long>();
-    if (index < 0 || static_cast<std::size_t>(index) >= n_textures_)
-      fail(prefix + key + " refers to texture " + std::to_string(index) + ", which does not exist");
+    // The index as written (nlohmann keeps 2^63 and above unsigned: get<long long> would wrap it).
+    const Json& i = t["index"];
+    const bool in_range = i.is_number_unsigned() ? i.get<std::uint64_t>() < n_textures_
+                                                 : i.get<long long>() >= 0 && std::uint64_t(i.get<long long>()) < n_textures_;
+    if (!in_range) fail(prefix + key + " refers to texture " + i.dump() + ", which does not exist");
+    const long long index = i.get<long long>();
     for (const char* p : params) out_.textures.push_back({p, prefix + key, static_cast<int>(index), multiplies});
   }
 
