@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "dspbr/conformance/checker.h"
@@ -407,6 +409,26 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
                                "' --no-html --out '" + (dir / "never").string() + "'");
   EXPECT_EQ(v7.status, 2) << v7.output;
   EXPECT_NE(v7.output.find("v7.json: version 7 is not supported"), std::string::npos) << v7.output;
+  // A vector with a zero object normal, an unknown member or an unknown component: exit 2 naming
+  // the vector and the problem (issue 45, poor list: each was accepted).
+  using OJson = nlohmann::ordered_json;
+  const std::pair<std::function<void(OJson&)>, std::string> bad_vectors[] = {
+      {[](OJson& v) { v["options"] = {{"object_normal", {0, 0, 0}}}; },
+       "options.object_normal must be a non-zero finite vector"},
+      {[](OJson& v) { v["albdo"] = {1, 1, 1}; }, "unknown member 'albdo'; did you mean 'albedo'?"},
+      {[](OJson& v) { v["components"] = {"metalic"}; }, ".components: unknown component 'metalic'"},
+  };
+  for (const auto& [spoil, needle] : bad_vectors) {
+    OJson doc = OJson::parse(read_all(vectors));
+    spoil(doc["vectors"][0]);
+    const std::string text = doc.dump();
+    write(dir / "badvec.json", text);
+    const ToolRun r = run_dspbr("conformance check '" + (dir / "badvec.json").string() + "' '" + (dir / "ok.csv").string() +
+                                "' --no-html --out '" + (dir / "never").string() + "'");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("badvec.json: vectors[0] (id '" + vs[0].id + "')"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(needle), std::string::npos) << r.output;
+  }
 
   // `reference` with a vector whose material is out of range: exit 2 naming the file and the vector.
   write(dir / "badv.json",

@@ -1,15 +1,20 @@
 #include "dspbr/conformance/vector_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
 #include <stdexcept>
+#include <vector>
 
+#include "dspbr/component.h"
+#include "dspbr/conformance/vector_set.h"
 #include "dspbr/io/json_fields.h"
 #include "dspbr/io/json_values.h"
 #include "dspbr/io/message.h"
 #include "dspbr/io/read_file.h"
 #include "dspbr/limits.h"
+#include "dspbr/nearest_name.h"
 
 namespace dspbr::conformance {
 
@@ -53,11 +58,21 @@ Vec3 read_direction(const Json& obj, const std::string& key, const std::string& 
   return d;
 }
 
+// The members a vector may have (vector.h); any other is refused, as a misspelt optional member
+// ("albdo") would otherwise go unjudged.
+const std::vector<std::string> kVectorMembers = {"id", "group", "components", "material", "gltf_material", "options",
+                                                 "v", "l", "f_cos", "tolerance", "pdf", "pdf_tolerance", "albedo",
+                                                 "albedo_tolerance", "emission", "emission_tolerance", "delta",
+                                                 "delta_tolerance"};
+
 Vector read_vector(const Json& j, const std::string& where) {
   Vector v;
   v.id = jf::string_member(j, "id", where);
   if (v.id.empty()) throw std::runtime_error(jf::member_path(where, "id") + " must not be empty");
   const std::string w = where + " (id " + in_quotes(v.id) + ")";
+  for (const auto& [key, _] : j.items())
+    if (std::find(kVectorMembers.begin(), kVectorMembers.end(), key) == kVectorMembers.end())
+      throw std::runtime_error(w + ": unknown member " + in_quotes(key) + did_you_mean(key, kVectorMembers));
   v.group = jf::string_member(j, "group", w);
   const Json& comps = jf::array_member(j, "components", w);
   for (std::size_t i = 0; i < comps.size(); ++i) {
@@ -65,9 +80,21 @@ Vector read_vector(const Json& j, const std::string& where) {
       throw std::runtime_error(jf::index_path(jf::member_path(w, "components"), i) + " must be a string");
     v.components.push_back(comps[i].get<std::string>());
   }
+  try {
+    parse_component_names(v.components);  // each a component of the model
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(jf::member_path(w, "components") + ": " + e.what());
+  }
   v.material = OJson(jf::object_member(j, "material", w));
   if (j.contains("gltf_material")) v.gltf_material = OJson(jf::object_member(j, "gltf_material", w));
-  if (j.contains("options")) v.options = OJson(jf::object_member(j, "options", w));
+  if (j.contains("options")) {
+    v.options = OJson(jf::object_member(j, "options", w));
+    try {
+      vector_options(v);  // known options with valid values
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(w + ": " + e.what());
+    }
+  }
   v.v = read_direction(j, "v", w);
   v.l = read_direction(j, "l", w);
   v.f_cos = read_rgb(j, "f_cos", w);

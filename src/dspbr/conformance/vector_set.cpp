@@ -517,7 +517,10 @@ BsdfOptions vector_options(const Vector& v) {
     } else if (key == "position") {
       o.position = vec();
     } else if (key == "object_normal") {
-      o.object_normal = normalize(vec());
+      const Vec3 n = vec();
+      if (!(length(n) > 0) || !std::isfinite(length(n)))
+        throw std::runtime_error("options.object_normal must be a non-zero finite vector");
+      o.object_normal = normalize(n);
     } else {
       throw std::runtime_error("unknown option \"" + key + "\" (known: sheen, position, object_normal)");
     }
