@@ -4,10 +4,14 @@
 // results exit 2 with one line naming the file and the record.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
+#include <sys/mount.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -441,6 +445,32 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
   EXPECT_EQ(bad_ref.status, 2) << bad_ref.output;
   EXPECT_NE(bad_ref.output.find("badv.json: vector 'a': parameter 'roughness'"), std::string::npos) << bad_ref.output;
   EXPECT_FALSE(fs::exists(dir / "never.json"));
+  // `reference --out` is checked before the work (issue 45, poor list: a missing folder was created
+  // after the work): a folder that does not exist is a usage error, and nothing is created.
+  const ToolRun no_folder = run_dspbr("conformance reference '" + vectors + "' --out '" +
+                                      (dir / "absent" / "r.json").string() + "'");
+  EXPECT_EQ(no_folder.status, 2) << no_folder.output;
+  EXPECT_EQ(no_folder.output, "dspbr: error: --out: the folder '" + (dir / "absent").string() +
+                                  "' does not exist (create it first)\n");
+  EXPECT_FALSE(fs::exists(dir / "absent"));
+  // A full disk (a 4 kB tmpfs, where the machine lets the test mount one): the message names the
+  // file and the system's reason, not a temporary path, and leaves nothing on the disk.
+  const fs::path small = dir / "small";
+  fs::create_directories(small);
+  if (::mount("tmpfs", small.c_str(), "tmpfs", 0, "size=4k") == 0) {
+    const ToolRun full = run_dspbr("conformance reference '" + vectors + "' --out '" + (small / "r.json").string() + "'");
+    const std::vector<std::string> left = [&] {
+      std::vector<std::string> names;
+      for (const auto& e : fs::directory_iterator(small)) names.push_back(e.path().filename().string());
+      return names;
+    }();
+    ::umount(small.c_str());
+    EXPECT_EQ(full.status, 1) << full.output;
+    EXPECT_EQ(full.output, "dspbr: error: cannot write '" + (small / "r.json").string() + "': No space left on device\n");
+    EXPECT_TRUE(left.empty()) << left.size() << " entries left, the first " << left[0];
+  } else {
+    std::printf("no tmpfs mount on this machine (%s): the full-disk case is not run\n", std::strerror(errno));
+  }
 
   // Malformed: exit 2, one line naming the file and the record; no report folder.
   const std::string first = vs[0].id, second = vs[1].id;

@@ -130,6 +130,7 @@ void run_check(const CheckArgs& a) {
 // The results of the reference BSDF reading another table set (f cos and pdf; the quantities that
 // do not depend on the tables are left out): the demonstrations' implementations.
 void run_reference(const ReferenceArgs& a) {
+  check_output_file(a.out, "--out");
   conformance::DemoTables tables;
   try {
     tables = conformance::parse_demo_tables(a.tables);

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -56,6 +57,19 @@ inline CLI::Validator decimal_number() {
                (d.status == Decimal::OutOfRange ? " (beyond the range of a double)" : "");
       },
       "NUMBER");
+}
+
+// An output file option (--out FILE), checked before the work: its folder exists (a command that
+// writes one file does not create folders) and the file is not a folder itself.
+inline void check_output_file(const std::string& path, const std::string& option) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path p(path);
+  const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  if (path.empty() || !p.has_filename()) throw UsageError(option + ": give a file name, got '" + quote_input(path) + "'");
+  if (!fs::is_directory(folder, ec))
+    throw UsageError(option + ": the folder '" + quote_input(folder.string()) + "' does not exist (create it first)");
+  if (fs::is_directory(p, ec)) throw UsageError(option + ": '" + quote_input(path) + "' is a folder");
 }
 
 // Seeds: any 64-bit unsigned integer.
