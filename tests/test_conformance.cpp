@@ -525,4 +525,14 @@ TEST(Conformance, SceneNamesThatCollideAreRefused) {
   std::set<std::string> ids;
   for (const Vector& v : read_vectors((dir / "o" / "vectors.json").string()))
     EXPECT_TRUE(ids.insert(v.id).second) << "duplicate id " << v.id;
+  // A factor outside the model's range names the file and the material, exit 2 (issue 45, poor
+  // list: no file or material was named, exit 1).
+  std::ofstream(dir / "s" / "z.gltf")
+      << R"({"asset":{"version":"2.0"},"materials":[{"name":"red","pbrMetallicRoughness":{"roughnessFactor":7}}]})";
+  const ToolRun range = run_dspbr("conformance generate --scenes '" + (dir / "s").string() +
+                                  "' --no-albedo --directions 1 --out '" + (dir / "o2").string() + "'");
+  EXPECT_EQ(range.status, 2) << range.output;
+  EXPECT_EQ(range.output, "dspbr: error: --scenes: " + (dir / "s" / "z.gltf").string() +
+                              ": materials[0] 'red': parameter 'roughness' = 7 is outside [0, 1]\n");
+  EXPECT_FALSE(fs::exists(dir / "o2"));
 }

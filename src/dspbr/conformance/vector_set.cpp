@@ -1,4 +1,5 @@
 #include "dspbr/conformance/vector_set.h"
+#include "dspbr/io/message.h"
 
 #include <tbb/parallel_for.h>
 
@@ -484,7 +485,14 @@ std::vector<Case> scene_cases(const std::string& dir) {
       if (!fresh)
         throw std::runtime_error(it->second + " and " + source + " both give the vector ids scenes/" + c.name +
                                  "/NN: rename one of the files");
-      validate_material(c.m);
+      try {
+        validate_material(c.m);
+      } catch (const std::exception& e) {  // a factor outside the model's range: the file and material
+        const OJson name = c.gltf.is_object() && c.gltf.contains("name") ? c.gltf["name"] : OJson();
+        throw std::runtime_error(f.string() + ": materials[" + std::to_string(gm.index) + "]" +
+                                 (name.is_string() ? " '" + quote_input(name.get<std::string>()) + "'" : std::string()) + ": " +
+                                 e.what());
+      }
       out.push_back(std::move(c));
     }
   }
