@@ -6,6 +6,11 @@ jinja2). Plots: per group, the distribution of the error of f cos over its toler
 
 usage: conformance_report.py DIR
 """
+import signal
+
+# SIGINT ends the script at once and without a traceback (SIGTERM does by default): dspbr,
+# interrupted with it, says so in one line and discards the report folder (docs/limits.md).
+signal.signal(signal.SIGINT, signal.SIG_DFL)
 import json
 import math
 import os

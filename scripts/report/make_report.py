@@ -6,6 +6,11 @@ the full one) together with a CSV of the numbers it shows.
 
 usage: make_report.py DIR
 """
+import signal
+
+# SIGINT ends the script at once and without a traceback (SIGTERM does by default): dspbr,
+# interrupted with it, says so in one line and discards the report folder (docs/limits.md).
+signal.signal(signal.SIGINT, signal.SIG_DFL)
 import csv
 import json
 import math
