@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Log-log plot of the table integrators' trade (docs/luts.md, "Speed"): max error against the
+"""Log-log plot of the table integrators' trade (docs/design/luts.md, "Speed"): max error against the
 reference, against the time per cell, one line per integrator and table.
 
 Runs `dspbr lut --bench-integrators --bench-csv` (or reads a CSV it wrote, e.g. the committed

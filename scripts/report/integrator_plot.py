@@ -1,4 +1,4 @@
-"""The log-log plot of the table integrators' trade (docs/luts.md, "Speed"), shared by
+"""The log-log plot of the table integrators' trade (docs/design/luts.md, "Speed"), shared by
 scripts/plot_integrator_study.py (docs/img/integrator_study.png) and the validation report."""
 import csv
 import io

@@ -10,7 +10,7 @@
 // gives this level only its own share. The directional glass quadrature keeps the steering: its
 // extra bisections where the polar integrals state large errors keep a grazing, low-roughness
 // cell within 1e-6 (without it, ior 1.68, r 0.067, mu 2.6e-4 was 1.3e-6 off at 14x its stated
-// error; measured 2026-12-04 against a 1e-10 run of the same quadrature, docs/luts.md "Speed").
+// error; measured 2026-12-04 against a 1e-10 run of the same quadrature, docs/design/luts.md "Speed").
 // Deterministic: the same panels in the same order for the same integrand.
 #pragma once
 #include <algorithm>

@@ -1,4 +1,4 @@
-# The commands docs/*.md show run (documentation that runs): every `dspbr ...` line of their
+# The commands docs/**/*.md show run (documentation that runs): every `dspbr ...` line of their
 # indented code blocks is run and must exit 0, with every option the line shows (a renamed or
 # removed option fails). Where a line shows the full settings (minutes), its run adds small ones,
 # named in SMALL with the reason (None: not run, with the reason). Placeholders
@@ -14,7 +14,7 @@ import pytest
 
 from conftest import SOURCE_DIR, dspbr_exe
 
-DOCS = sorted(glob.glob(os.path.join(SOURCE_DIR, "docs", "*.md")))
+DOCS = sorted(glob.glob(os.path.join(SOURCE_DIR, "docs", "**", "*.md"), recursive=True))  # design notes too
 LINE = re.compile(r"^    (?:build/)?(dspbr [^#\n]*?)\s*(?:#.*)?$", re.M)
 
 

@@ -406,7 +406,7 @@ Estimate glass_E(double mu, double r, double ior, bool inside, const IntegratorS
     // there, at grazing cells, the embedded estimate at the tolerance itself missed the error by
     // up to 14x (true 1.1e-6 at 1e-7, e.g. ior 1.92, r 0.067, mu 3e-4). Swept against 1e-10 runs
     // (the renderer grid: 6144 cells at r 1/15..3/15 and 5632 over the whole domain; measured
-    // 2026-12-04, docs/luts.md "Speed", test GlassAlbedo.GrazingLowRoughnessCellsWithinTheTrueErrorBound):
+    // 2026-12-04, docs/design/luts.md "Speed", test GlassAlbedo.GrazingLowRoughnessCellsWithinTheTrueErrorBound):
     // worst true error 3.2e-7 with this rule, three cells beyond their stated error (r 1/15,
     // 0.6 and 0.73). The factor costs 1.7x the evaluations; above r = 1/4 it bought no cell
     // within 1e-6 that was not. Not below a target of 1e-9: there the panel cap, not the

@@ -19,7 +19,7 @@
 namespace dspbr {
 
 // The integrator a table uses unless one is chosen (LutOptions::integrator): Quad for every
-// table (measured: docs/luts.md, "Speed").
+// table (measured: docs/design/luts.md, "Speed").
 Integrator lut_default_integrator(const std::string& table);
 
 // Default maximum samples per cell (all replicates); the averages integrate over one more

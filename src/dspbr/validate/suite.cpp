@@ -829,7 +829,7 @@ SuiteResult run_suite(const Catalog& cat, const LutSet* luts, const SuiteSetting
   if (!luts) report["skipped"].push_back("tables: no LUT file (luts/dspbr_luts.json) could be loaded");
   timed("furnace_images", [&] { return run_images(cat, s, dir); });
   timed("convergence", [&] { return run_convergence(cat, s); });
-  // The table integrators' trade (docs/luts.md, "Speed"): the committed study, plotted by the report.
+  // The table integrators' trade (docs/design/luts.md, "Speed"): the committed study, plotted by the report.
   report["integrator_study"] = {{"source", "luts/integrator_study.csv (dspbr lut --bench-integrators)"},
                                 {"csv", std::string(committed_integrator_study_csv())}};
   json summary = json::array();
