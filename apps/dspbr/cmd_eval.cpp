@@ -61,6 +61,9 @@ std::vector<double> parse_numbers(const std::string& option, const std::string& 
   while (std::getline(ss, item, ',')) {
     // The one number grammar (decimal.h); a subnormal such as 1e-320 is a number.
     const Decimal x = parse_decimal(item);
+    if (x.status == Decimal::OutOfRange)
+      throw UsageError(option + " expects " + std::to_string(count) + " comma-separated finite numbers, got '" +
+                       quote_input(text) + "': '" + quote_input(item) + "' is beyond the range of a double");
     if (x.status != Decimal::Ok)
       throw UsageError(option + " expects " + std::to_string(count) + " comma-separated decimal numbers, got '" +
                        quote_input(text) + "'");
