@@ -9,8 +9,11 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <functional>
+#include <future>
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -540,6 +543,29 @@ py::dict renderer_arrays(const RendererLuts& luts) {
   return d;
 }
 
+// Runs generate(opt) on a worker thread while this thread checks Python's signals every 100 ms:
+// Ctrl-C sets the options' cancel flag, waits for the cells in flight (parallel_cells.h) and
+// raises KeyboardInterrupt within a second (a generation of minutes used to answer it only when it
+// returned). The generator's own exceptions come out of future.get() as before.
+template <class Generate>
+auto interruptible(LutOptions& opt, Generate generate) {
+  std::atomic<bool> cancel{false};
+  opt.cancel = &cancel;
+  auto future = std::async(std::launch::async, [&] { return generate(opt); });
+  {
+    py::gil_scoped_release release;
+    while (future.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready) {
+      py::gil_scoped_acquire acquire;
+      if (PyErr_CheckSignals() != 0) {
+        cancel = true;
+        future.wait();
+        throw py::error_already_set();
+      }
+    }
+  }
+  return future.get();
+}
+
 py::dict lut_generate(const py::object& tables, const py::object& size, const std::string& integrator,
                       const py::object& samples, double target_error, const py::object& randomizations,
                       const py::object& seed, const py::object& threads,
@@ -554,22 +580,11 @@ py::dict lut_generate(const py::object& tables, const py::object& size, const st
     // The renderer layout's grids are fixed (docs/luts.md): sizes, grid and errors do not apply.
     if (!size.is_none()) fail("size: the renderer layout's grids are fixed (docs/luts.md, \"Renderer layout\")");
     if (errors) fail("errors: the renderer layout returns its stored values only");
-    const LutOptions opt =
-        lut_options(tables, size, integrator, samples, target_error, randomizations, seed, threads, "cell");
-    RendererLuts luts;
-    {
-      py::gil_scoped_release release;
-      luts = generate_renderer_luts(opt);
-    }
-    return renderer_arrays(luts);
+    LutOptions opt = lut_options(tables, size, integrator, samples, target_error, randomizations, seed, threads, "cell");
+    return renderer_arrays(interruptible(opt, [](const LutOptions& o) { return generate_renderer_luts(o); }));
   }
-  const LutOptions opt =
-      lut_options(tables, size, integrator, samples, target_error, randomizations, seed, threads, grid);
-  std::vector<Table> out;
-  {
-    py::gil_scoped_release release;
-    out = generate_luts(opt);
-  }
+  LutOptions opt = lut_options(tables, size, integrator, samples, target_error, randomizations, seed, threads, grid);
+  const std::vector<Table> out = interruptible(opt, [](const LutOptions& o) { return generate_luts(o); });
   py::dict d;
   for (const Table& t : out) {
     if (errors) {
@@ -744,6 +759,7 @@ cores); grid "cell" | "endpoint". Returns {name: array of the table's shape}, or
 layout="renderer" (the default, as in Bsdf and the CLI): the renderer layout as `dspbr lut --layout renderer` makes it (fixed warped grids;
 its glass tables when tables holds Glass_E): {name: stored values}, each lut.load(file)[name].stored
 (encodings and warps: docs/luts.md, "Renderer layout"); size, grid and errors do not apply.
+Ctrl-C raises KeyboardInterrupt within about a second (the cells in flight finish first).
 )doc");
   lut.def("axes", &lut_axes_of, py::arg("name"), py::arg("size") = py::none(), py::arg("grid") = "cell",
           "axes(name: str, size: typing.Any = None, grid: str = 'cell') -> list[tuple[str, numpy.typing.NDArray[numpy.float64]]]\n\n"

@@ -138,14 +138,14 @@ std::vector<Table> generate_luts(const LutOptions& opt) {
     const Lut id = info.id;
     if (id == Lut::GgxE) {
       const auto r = coords(t.axes[0]), mu = coords(t.axes[1]);
-      parallel_cells(arena, n, label, opt.progress, [&](size_t i) {
+      parallel_cells(arena, n, label, opt.progress, opt.cancel, [&](size_t i) {
         const Estimate e = ggx_E(mu[i % mu.size()], r[i / mu.size()], s, stream_of(info.stream, i));
         t.values[i] = e.value;
         t.errors[i] = e.error;
       });
     } else if (id == Lut::GgxEAvg) {
       const auto r = coords(t.axes[0]);
-      parallel_cells(arena, n, label, opt.progress, [&](size_t i) {
+      parallel_cells(arena, n, label, opt.progress, opt.cancel, [&](size_t i) {
         const Estimate e = ggx_E_avg(r[i], s, stream_of(info.stream, i));
         t.values[i] = e.value;
         t.errors[i] = e.error;
@@ -157,12 +157,12 @@ std::vector<Table> generate_luts(const LutOptions& opt) {
       IntegratorSettings s_avg = s;
       s_avg.samples = opt.samples > 0 ? opt.samples : lut_default_samples(lut_name(Lut::BaseEAvg));
       std::vector<Estimate> e_m_avg(r.size());
-      parallel_cells(arena, r.size(), label + " (E_m,avg)", opt.progress, [&](size_t i) {
+      parallel_cells(arena, r.size(), label + " (E_m,avg)", opt.progress, opt.cancel, [&](size_t i) {
         e_m_avg[i] = ggx_E_avg(r[i], s_avg, stream_of(kBaseEMAvgStream, i));
       });
       // One integration per (roughness, cos) serves every f0.
       const size_t nrm = r.size() * mu.size();
-      parallel_cells(arena, nrm, label, opt.progress, [&](size_t i) {
+      parallel_cells(arena, nrm, label, opt.progress, opt.cancel, [&](size_t i) {
         const size_t ir = i / mu.size(), im = i % mu.size();
         const std::vector<Estimate> e = base_E_f0s(mu[im], r[ir], f0, e_m_avg[ir], s, stream_of(info.stream, i));
         for (size_t k = 0; k < f0.size(); ++k) {
@@ -172,7 +172,7 @@ std::vector<Table> generate_luts(const LutOptions& opt) {
       });
     } else if (id == Lut::BaseEAvg) {
       const auto f0 = coords(t.axes[0]), r = coords(t.axes[1]);
-      parallel_cells(arena, r.size(), label, opt.progress, [&](size_t i) {
+      parallel_cells(arena, r.size(), label, opt.progress, opt.cancel, [&](size_t i) {
         const std::vector<Estimate> e = base_E_avg_f0s(r[i], f0, s, stream_of(info.stream, i));
         for (size_t k = 0; k < f0.size(); ++k) {
           t.values[k * r.size() + i] = e[k].value;
@@ -182,7 +182,7 @@ std::vector<Table> generate_luts(const LutOptions& opt) {
     } else if (info.glass && !info.average) {
       const bool inside = info.inside;
       const auto x = coords(t.axes[0]), r = coords(t.axes[1]), mu = coords(t.axes[2]);
-      parallel_cells(arena, n, label, opt.progress, [&](size_t i) {
+      parallel_cells(arena, n, label, opt.progress, opt.cancel, [&](size_t i) {
         const size_t ix = i / (r.size() * mu.size()), ir = (i / mu.size()) % r.size(), im = i % mu.size();
         const Estimate e = glass_E(mu[im], r[ir], glass_ior_of_x(x[ix]), inside, s,
                                    stream_of(info.stream, i));
@@ -192,7 +192,7 @@ std::vector<Table> generate_luts(const LutOptions& opt) {
     } else if (info.glass) {
       const bool inside = info.inside;
       const auto x = coords(t.axes[0]), r = coords(t.axes[1]);
-      parallel_cells(arena, n, label, opt.progress, [&](size_t i) {
+      parallel_cells(arena, n, label, opt.progress, opt.cancel, [&](size_t i) {
         const Estimate e = glass_E_avg(r[i % r.size()], glass_ior_of_x(x[i / r.size()]), inside, s,
                                        stream_of(info.stream, i));
         t.values[i] = e.value;
@@ -201,7 +201,7 @@ std::vector<Table> generate_luts(const LutOptions& opt) {
     } else {  // Sheen_E, Sheen_ash_E: rows hold alpha_b directly
       const bool ash = id == Lut::SheenAshE;
       const auto ab = coords(t.axes[0]), mu = coords(t.axes[1]);
-      parallel_cells(arena, n, label, opt.progress, [&](size_t i) {
+      parallel_cells(arena, n, label, opt.progress, opt.cancel, [&](size_t i) {
         const Estimate e = sheen_E(mu[i % mu.size()], ab[i / mu.size()], ash ? SheenModel::Ash : SheenModel::Main, s,
                                    stream_of(info.stream, i));
         t.values[i] = e.value;

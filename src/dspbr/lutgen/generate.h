@@ -4,6 +4,7 @@
 // (settings.seed, stream = table id * 2^32 + cell index), so the result is bit-identical
 // whatever the thread count.
 #pragma once
+#include <atomic>
 #include <functional>
 #include <limits>
 #include <map>
@@ -44,6 +45,7 @@ struct LutOptions {
   uint64_t seed = 1;
   int threads = 0;         // 0: all hardware threads
   bool progress = true;    // progress on stderr: a live line on a terminal, a line per table elsewhere
+  const std::atomic<bool>* cancel = nullptr;  // set: the generation throws LutCancelled (parallel_cells.h)
   std::string command;     // recorded with project_version() in the files written ("": neither)
 };
 

@@ -8,11 +8,12 @@
 namespace dspbr {
 
 void parallel_cells(tbb::task_arena& arena, size_t n, const std::string& label, bool progress,
-                    const std::function<void(size_t)>& body) {
+                    const std::atomic<bool>* cancel, const std::function<void(size_t)>& body) {
   Progress report(label, n, progress);
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t i = r.begin(); i != r.end(); ++i) {
+        if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) throw LutCancelled();  // TBB stops the rest
         body(i);
         report.add();
       }

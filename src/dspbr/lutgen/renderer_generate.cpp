@@ -139,7 +139,7 @@ void add_renderer_glass_luts(RendererLuts& out, const LutOptions& opt, int scale
     WarpedTable& t = inside ? out.glass_inv_E : out.glass_E;
     const WarpedAxis &ai = t.axes[0], &ar = t.axes[1], &am = t.axes[2];
     const size_t plane = size_t(ar.size) * size_t(am.size);
-    parallel_cells(arena, t.size(), progress_label(inside ? Lut::GlassInvE : Lut::GlassE, true), opt.progress, [&](size_t i) {
+    parallel_cells(arena, t.size(), progress_label(inside ? Lut::GlassInvE : Lut::GlassE, true), opt.progress, opt.cancel, [&](size_t i) {
       const int ii = int(i / plane), ir = int((i % plane) / size_t(am.size)), im = int(i % size_t(am.size));
       const double r = std::max(ar.warp.from_grid(grid_x(ar, ir)), kGgxLimitRoughness);
       const double mu = am.warp.from_grid(grid_x(am, im), r * r);
@@ -164,7 +164,7 @@ RendererLuts generate_renderer_luts(const LutOptions& opt, int scale) {
   {  // GGX_E over (r, ggx_cos(mu; r^2))
     WarpedTable& t = out.ggx_E;
     const WarpedAxis &ar = t.axes[0], &am = t.axes[1];
-    parallel_cells(arena, t.size(), progress_label(Lut::GgxE, glass), opt.progress, [&](size_t i) {
+    parallel_cells(arena, t.size(), progress_label(Lut::GgxE, glass), opt.progress, opt.cancel, [&](size_t i) {
       const int ir = int(i / size_t(am.size)), im = int(i % size_t(am.size));
       const double r = std::max(ar.warp.from_grid(grid_x(ar, ir)), kGgxLimitRoughness);
       const double mu = am.warp.from_grid(grid_x(am, im), r * r);
@@ -177,7 +177,7 @@ RendererLuts generate_renderer_luts(const LutOptions& opt, int scale) {
   {  // GGX_beta - (1 - mu)^5 over (r^2, ggx_cos(mu; r^2)); zero on the r = 0 row (mirror)
     WarpedTable& t = out.ggx_beta;
     const WarpedAxis &ar = t.axes[0], &am = t.axes[1];
-    parallel_cells(arena, t.size(), progress_label(Lut::GgxBeta, glass), opt.progress, [&](size_t i) {
+    parallel_cells(arena, t.size(), progress_label(Lut::GgxBeta, glass), opt.progress, opt.cancel, [&](size_t i) {
       const int ir = int(i / size_t(am.size)), im = int(i % size_t(am.size));
       const double r = ar.warp.from_grid(grid_x(ar, ir));
       if (r == 0) return;  // beta = (1 - mu)^5 exactly
@@ -195,7 +195,7 @@ RendererLuts generate_renderer_luts(const LutOptions& opt, int scale) {
   for (const bool ash : {false, true}) {
     WarpedTable& t = ash ? out.sheen_ash_E : out.sheen_E;
     const WarpedAxis &aa = t.axes[0], &am = t.axes[1];
-    parallel_cells(arena, t.size(), progress_label(ash ? Lut::SheenAshE : Lut::SheenE, glass), opt.progress, [&](size_t i) {
+    parallel_cells(arena, t.size(), progress_label(ash ? Lut::SheenAshE : Lut::SheenE, glass), opt.progress, opt.cancel, [&](size_t i) {
       const int ia = int(i / size_t(am.size)), im = int(i % size_t(am.size));
       const Estimate e = sheen_E(am.warp.from_grid(grid_x(am, im)), aa.warp.from_grid(grid_x(aa, ia)),
                                  ash ? SheenModel::Ash : SheenModel::Main, s_sheen,
