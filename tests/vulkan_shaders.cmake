@@ -75,11 +75,13 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
   # HLSL: glslang's HLSL front end; the tables' registers t0.. shifted to bindings 2.. (after the
   # two buffers).
   set(_sl_hlsl_args -V -D -S comp -e main --shift-texture-binding 2 ${_sl_inc})
+  # What every kernel below is compiled from.
+  set(_sl_kernel_sources ${_sl}/conformance.comp ${_sl}/conformance.hlsl ${_sl}/kernel_common.glsl ${_sl}/albedo.glsl
+      ${_sl_deps} ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.hlsl)
   add_custom_command(OUTPUT ${_sl_glsl} ${_sl_hlsl}
     COMMAND ${DSPBR_GLSLANG_VK} -V ${_sl_inc} -o ${_sl_glsl} ${_sl}/conformance.comp
     COMMAND ${DSPBR_GLSLANG_VK} ${_sl_hlsl_args} -o ${_sl_hlsl} ${_sl}/conformance.hlsl
-    DEPENDS ${_sl}/conformance.comp ${_sl}/conformance.hlsl ${_sl}/kernel_common.glsl ${_sl}/albedo.glsl ${_sl_deps}
-            ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.hlsl
+    DEPENDS ${_sl_kernel_sources}
     COMMENT "glslangValidator: the shader library's conformance kernels (GLSL, HLSL)" VERBATIM)
   # The chi-square test's kernels: mode 3 alone (kernel_common.glsl, DSPBR_TEST_SAMPLES_ONLY).
   set(_sl_chi2_glsl ${PROJECT_BINARY_DIR}/shader_chi2_glsl.spv)
@@ -87,8 +89,7 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
   add_custom_command(OUTPUT ${_sl_chi2_glsl} ${_sl_chi2_hlsl}
     COMMAND ${DSPBR_GLSLANG_VK} -V -DDSPBR_TEST_SAMPLES_ONLY ${_sl_inc} -o ${_sl_chi2_glsl} ${_sl}/conformance.comp
     COMMAND ${DSPBR_GLSLANG_VK} ${_sl_hlsl_args} -DDSPBR_TEST_SAMPLES_ONLY -o ${_sl_chi2_hlsl} ${_sl}/conformance.hlsl
-    DEPENDS ${_sl}/conformance.comp ${_sl}/conformance.hlsl ${_sl}/kernel_common.glsl ${_sl}/albedo.glsl ${_sl_deps}
-            ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.hlsl
+    DEPENDS ${_sl_kernel_sources}
     COMMENT "glslangValidator: the shader library's chi-square kernels (GLSL, HLSL)" VERBATIM)
   add_custom_target(shader_conformance_kernels ALL DEPENDS ${_sl_glsl} ${_sl_hlsl} ${_sl_chi2_glsl} ${_sl_chi2_hlsl})
   # No warning from either front end (glslang prints "WARNING:" lines and still succeeds).

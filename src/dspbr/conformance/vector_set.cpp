@@ -526,8 +526,8 @@ BsdfOptions vector_options(const Vector& v) {
       o.position = vec();
     } else if (key == "object_normal") {
       const Vec3 n = vec();
-      if (!(length(n) > 0) || !std::isfinite(length(n)))
-        throw std::runtime_error("options.object_normal must be a non-zero finite vector");
+      const double len = length(n);
+      if (!(len > 0) || !std::isfinite(len)) throw std::runtime_error("options.object_normal must be a non-zero finite vector");
       o.object_normal = normalize(n);
     } else {
       throw std::runtime_error("unknown option \"" + key + "\" (known: sheen, position, object_normal)");
