@@ -153,9 +153,19 @@ DSPBR_FN float dspbr_volumetric_weight(DSPBR_IN(DspbrBsdf) b, vec3 v, float eta_
   if (!(v.z > 0.0f)) return 0.0f;
   // A smooth lobe under total internal reflection transmits nothing.
   float eta = eta_i / eta_o;
-  if (dspbr_is_delta_lobe(b, DSPBR_LOBE_TRANSMISSION) && eta * eta * (1.0f - v.z * v.z) >= 1.0f &&
-      abs(eta - 1.0f) >= dspbr_index_matched)
-    return 0.0f;
+  bool macro_tir = eta * eta * (1.0f - v.z * v.z) >= 1.0f && abs(eta - 1.0f) >= dspbr_index_matched;
+  if (dspbr_is_delta_lobe(b, DSPBR_LOBE_TRANSMISSION) && macro_tir) return 0.0f;
+  if (macro_tir) {
+    // Beyond the critical angle: the share of facets tilted towards v by more than
+    // theta_v - theta_c, times the factor at normal incidence (bsdf/volumetric_transmission.cpp).
+    // tan(theta_v - theta_c) = num / den from sines and cosines (no inverse trigonometry).
+    float alpha = max(b.ggx.au, b.ggx.av);
+    float cos_v = clamp(v.z, 0.0f, 1.0f), sin_v = sqrt(1.0f - cos_v * cos_v);
+    float sin_c = 1.0f / eta, cos_c = sqrt(max(0.0f, 1.0f - sin_c * sin_c));
+    float num = max(0.0f, sin_v * cos_c - cos_v * sin_c), den = cos_v * cos_c + sin_v * sin_c;
+    float a2 = alpha * alpha * den * den;
+    return max(0.0f, 0.5f * a2 / (a2 + num * num) * dspbr_mean(dspbr_core_transmission_factor(b, 1.0f, eta_i, eta_o)));
+  }
   return max(0.0f, dspbr_mean(dspbr_core_transmission_factor(b, v.z, eta_i, eta_o)));
 }
 
