@@ -5,11 +5,13 @@
 // Writes DIR/data/report.json and DIR/images/ (C++), then DIR/index.html and DIR/plots/ through
 // scripts/report/make_report.py (matplotlib + jinja2), found relative to the running binary
 // (installed in <prefix>/share/dspbr/report; the build copies it next to build/dspbr).
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fmt/format.h>
 #include <memory>
 #include <string>
+#include <sys/resource.h>
 #include <tbb/global_control.h>
 
 #include "commands.h"
@@ -103,7 +105,17 @@ void run_validate(const ValidateArgs& a) {
   const validate::SuiteResult r = validate::run_suite(cat, checked, s, out.staging());
 
   if (a.html) {
+    // Timed like the suite's phases (the report's own time is part of the run's).
+    const auto t0 = std::chrono::steady_clock::now();
+    rusage before{}, after{};
+    getrusage(RUSAGE_CHILDREN, &before);
     run_report_script(a.python, script, out.staging(), a.out);
+    getrusage(RUSAGE_CHILDREN, &after);
+    auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+    const double cpu = seconds(after.ru_utime) + seconds(after.ru_stime) - seconds(before.ru_utime) -
+                       seconds(before.ru_stime);
+    std::fprintf(stderr, "  %-16s %6.1fs  (cpu %6.1fs)\n", "report (html)",
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), cpu);
   }
   out.commit();
 

@@ -11,11 +11,15 @@ import signal
 # SIGINT ends the script at once and without a traceback (SIGTERM does by default): dspbr,
 # interrupted with it, says so in one line and discards the report folder (docs/limits.md).
 signal.signal(signal.SIGINT, signal.SIG_DFL)
+import base64
 import csv
+import itertools
 import json
 import math
 import os
+import re
 import sys
+import textwrap
 from concurrent.futures import ProcessPoolExecutor
 
 import matplotlib
@@ -93,9 +97,9 @@ def legend_above(ax, handles, labels, ncol):
     ax.legend(handles, labels, loc="lower left", bbox_to_anchor=(0.0, 1.0), ncol=ncol, fontsize=8, frameon=False)
 
 
-def furnace_plots(rep, figs):
-    """One panel per case: E − 1 by both estimators with ±4σ bars, tolerance lines, the unjudged
-    grazing band shaded; one legend above the panels."""
+def furnace_plots(rep, figs, part=None):
+    """One panel per case: E − 1 by the quadrature (its stated error as the bar) and the sampled
+    estimator (±4σ bars), tolerance lines; one legend above the panels."""
     energy = rep["energy"]
     tol = energy["tolerances"]
     k = tol["sigmas"]
@@ -106,7 +110,9 @@ def furnace_plots(rep, figs):
     for c in energy["cases"]:
         groups.setdefault(c["component"], []).append(c)
     out = []
-    for comp, cs in groups.items():
+    for i, (comp, cs) in enumerate(groups.items()):
+        if part is not None and i % 2 != part:
+            continue  # the other half (drawn by another process)
         ncol = min(len(cs), 4)
         nrow = math.ceil(len(cs) / ncol)
         fig, grid = plt.subplots(nrow + 1, ncol, figsize=(max(3.1 * ncol, 6.0), 2.5 * nrow + 0.7), squeeze=False,
@@ -126,21 +132,19 @@ def furnace_plots(rep, figs):
             es = np.array([r["sampled_se"][1] for r in rs])
             yn = np.array([r["non_delta"][1] for r in rs]) - 1
             en = np.array([r.get("non_delta_se", r["sampled_se"])[1] for r in rs])
-            ye = np.array([r["eval"][1] for r in rs]) - 1
-            ee = np.array([r["eval_se"][1] for r in rs])
+            ye = np.array([r["quadrature"][1] for r in rs]) - 1
+            ee = np.array([r["quadrature_error"] for r in rs])
             dx = 0.012 * (x.max() - x.min() if len(x) > 1 else 1)
-            if np.any(np.abs(x) < 0.1):  # estimator agreement NOT JUDGED there
-                handles["g"] = ax.axvspan(-0.1 if x.min() < 0 else 0, 0.1, color="0.88", lw=0)
             handles["s"] = ax.errorbar(x - dx, ys, yerr=k * es, fmt="o", ms=3, capsize=2, color="C0")
             if np.any(np.abs(yn - ys) > 1e-9):
                 handles["n"] = ax.errorbar(x, yn, yerr=k * en, fmt="s", ms=2.5, capsize=2, color="0.5")
-            handles["e"] = ax.errorbar(x + dx, ye, yerr=k * ee, fmt="x", ms=4, capsize=2, color="C1")
+            handles["e"] = ax.errorbar(x + dx, ye, yerr=ee, fmt="x", ms=4, capsize=2, color="C1")
             handles["z"] = ax.axhline(0.0, color="k", lw=0.8)
             handles["c"] = ax.axhline(tol["conservation"], color="r", lw=0.7, ls="--")
             if c["claim"] == "preserving":
                 handles["p"] = ax.axhline(-c.get("preservation_tol", tol["preservation"]), color="b", lw=0.7, ls="--")
-            # y range from the estimates and limits, not the error bars: a huge eval bar at grazing
-            # view (few directions near a narrow lobe) runs off the panel instead of flattening it.
+            # y range from the estimates and limits, not the error bars: a wide sampled bar (heavy
+            # tails at grazing view) runs off the panel instead of flattening it.
             pts = np.concatenate([ys, ye, yn if "n" in handles else ys, [0.0, tol["conservation"]]])
             lo, hi = float(np.min(pts)), float(np.max(pts))
             pad = 0.15 * (hi - lo) + 0.01
@@ -150,8 +154,8 @@ def furnace_plots(rep, figs):
             ax.tick_params(labelsize=7)
             ax.grid(alpha=0.3)
             for r in rs:
-                csv_rows.append([c["case"], r["cos"], *r["sampled"], *r["sampled_se"], *r["non_delta"], *r["eval"],
-                                 *r["eval_se"], r["invalid_fraction"], *[r["verdicts"].get(v, "")
+                csv_rows.append([c["case"], r["cos"], *r["sampled"], *r["sampled_se"], *r["non_delta"],
+                                 *r["quadrature"], r["quadrature_error"], r["samples"], r["invalid_fraction"], *[r["verdicts"].get(v, "")
                                                                           for v in ("agreement", "conservation",
                                                                                     "preservation")]])
         for ax in axes.ravel()[len(cs):]:
@@ -159,16 +163,15 @@ def furnace_plots(rep, figs):
         for ax in axes[:, 0]:
             ax.set_ylabel("E − 1", fontsize=8)
         labels = {"s": f"BSDF-sampled, all lobes (±{k:g}σ)", "n": f"BSDF-sampled, non-delta lobes (±{k:g}σ)",
-                  "e": f"cosine-weighted eval, non-delta (±{k:g}σ)", "z": "E = 1",
-                  "c": f"conservation limit 1 + {tol['conservation']:g}", "p": "preservation limit (claimed)",
-                  "g": "|cos θ_v| < 0.1: agreement NOT JUDGED"}
-        keys = [q for q in "snezcpg" if q in handles]
+                  "e": "quadrature of eval, non-delta (± its stated error)", "z": "E = 1",
+                  "c": f"conservation limit 1 + {tol['conservation']:g}", "p": "preservation limit (claimed)"}
+        keys = [q for q in "snezcp" if q in handles]
         legend_ax.legend([handles[q] for q in keys], [labels[q] for q in keys], loc="center", ncol=2 if ncol == 1 else 3,
                          fontsize=7, frameon=False)
         f = figs.save(fig, f"furnace_{slug(comp)}",
                       ["case", "cos", "sampled_r", "sampled_g", "sampled_b", "se_r", "se_g", "se_b", "non_delta_r",
-                       "non_delta_g", "non_delta_b", "eval_r", "eval_g", "eval_b", "eval_se_r", "eval_se_g",
-                       "eval_se_b", "invalid_fraction", "agreement", "conservation", "preservation"], csv_rows)
+                       "non_delta_g", "non_delta_b", "quadrature_r", "quadrature_g", "quadrature_b",
+                       "quadrature_error", "samples", "invalid_fraction", "agreement", "conservation", "preservation"], csv_rows)
         f["component"] = comp
         f["cases"] = cs
         # Every (case, view) row with the band and tolerance each verdict used.
@@ -469,14 +472,92 @@ def integrator_study_plot(rep, figs):
     return f
 
 
+def summary_plot(rep, figs):
+    """One page to attach: the banner, the verdict table, what DSPBR itself loses or gains (the
+    albedo range of each case measured with power) and the tables' accuracy (worst error of each
+    table against its tolerance)."""
+    statement = energy_statement(rep)
+    cases = [c for s in statement for c in s["cases"]]
+    tables = rep["tables"]["tables"] if rep["tables"].get("available") else []
+    fig = plt.figure(figsize=(11.0, 8.5), layout="constrained")  # US letter, landscape
+    grid = fig.add_gridspec(2, 2, height_ratios=[1.0, 1.25])
+    fig.suptitle("\n".join(textwrap.wrap(rep["banner"], 150)), fontsize=8.5, fontweight="bold",
+                 color="#060" if all(c["failed"] == 0 for c in rep["summary"]) else "#b00")
+    ax = fig.add_subplot(grid[0, :])
+    ax.axis("off")
+    ax.set_title("Verdicts", fontsize=10, loc="left")
+    cells = [[words(c["check"]), c["passed"], c["failed"], c["waived"], c["not_judged"]] for c in rep["summary"]]
+    table = ax.table(cellText=cells, colLabels=["check", "PASS", "FAIL", "WAIVED", "NOT JUDGED"], loc="upper left",
+                     colWidths=[0.62, 0.09, 0.09, 0.09, 0.11], cellLoc="left")
+    table.auto_set_font_size(False)
+    table.set_fontsize(8)
+    for (row, col), cell in table.get_celld().items():
+        if row > 0 and col == 2 and cells[row - 1][2]:
+            cell.set_facecolor("#f4c0c0")
+        if row > 0 and col == 4 and cells[row - 1][4]:
+            cell.set_facecolor("#e8e8e8")
+    ax = fig.add_subplot(grid[1, 0])
+    ax.set_title("Where DSPBR itself loses or gains energy\n(albedo range of white materials, views judged)",
+                 fontsize=9, loc="left")
+    y = np.arange(len(cases))
+    for i, c in enumerate(cases):
+        ax.plot([c["min"], c["max"]], [i, i], lw=4, solid_capstyle="butt",
+                color="C3" if c["max"] > 1 + rep["energy"]["tolerances"]["conservation"] else "C0")
+    ax.axvline(1.0, color="k", lw=0.8)
+    ax.set_yticks(y, [c["case"] for c in cases], fontsize=6.5)
+    ax.invert_yaxis()
+    ax.set_xlabel("E (blue: loss, red: gain beyond the conservation tolerance)", fontsize=7)
+    ax.tick_params(axis="x", labelsize=7)
+    ax.grid(axis="x", alpha=0.3)
+    ax = fig.add_subplot(grid[1, 1])
+    ax.set_title("Tables at the point of use: worst error / tolerance", fontsize=9, loc="left")
+    if tables:
+        ratio = [max(t["max_abs_error"], 1e-12) / t["tolerance"] for t in tables]
+        ax.barh(np.arange(len(tables)), ratio, color=["C3" if r > 1 else "C2" for r in ratio])
+        ax.axvline(1.0, color="k", lw=0.8, ls="--")
+        ax.set_xscale("log")
+        ax.set_yticks(np.arange(len(tables)), [f"{t['label']} (tol {t['tolerance']:g})" for t in tables], fontsize=6.5)
+        ax.invert_yaxis()
+        ax.tick_params(axis="x", labelsize=7)
+        ax.grid(axis="x", alpha=0.3)
+    else:
+        ax.axis("off")
+        ax.text(0, 0.5, "no tables checked", fontsize=8)
+    rows = [["verdict", c["check"], c["passed"], c["failed"], c["waived"], c["not_judged"]] for c in rep["summary"]]
+    rows += [["energy", c["case"], c["min"], c["max"], c["views"], c["of"]] for c in cases]
+    rows += [["table", t["label"], t["max_abs_error"], t["tolerance"], t["verdict"], ""] for t in tables]
+    return figs.save(fig, "summary", ["kind", "what", "a", "b", "c", "d"], rows)
+
+
+SINGLE_FILE_NOTE = ('<p class="warn">This is the single-file copy of the report (report.html, for a release '
+                    'attachment): its figures are embedded; the full-size figures, their CSVs, the EXR spheres and '
+                    'data/report.json are in the report folder beside index.html.</p>')
+
+
+def single_file(html, out):
+    """The page as one self-contained file: every <img> embedded as a data URI, links to the
+    folder's files (full-size PNGs, CSVs, EXRs, report.json) reduced to their text."""
+    def embed(m):
+        with open(os.path.join(out, m.group(2)), "rb") as f:
+            data = base64.b64encode(f.read()).decode("ascii")
+        return f'{m.group(1)}"data:image/png;base64,{data}"'
+
+    html = re.sub(r'(<img[^>]*?src=)"((?:plots|images)/[^"]+\.png)"', embed, html)
+    html = re.sub(r'<a (?:class="[^"]*" )?href="(?:(?:plots|images|data)/[^"]+|report\.html)">(.*?)</a>', r"\1", html,
+                  flags=re.S)
+    return html.replace("<h1>", SINGLE_FILE_NOTE + "\n<h1>", 1)
+
+
 def run_figure_job(name, out):
     with open(os.path.join(out, "data", "report.json")) as f:
         rep = json.load(f)
     figs = Figures(out)
     if name == "spheres":
         return sphere_plots(rep, figs, out)
+    if name.startswith("furnace:"):
+        return furnace_plots(rep, figs, int(name[-1]))
     return {"furnace": furnace_plots, "luts": lut_plots, "chi2": chi2_plots, "reciprocity": reciprocity_plot,
-            "convergence": convergence_plot, "integrators": integrator_study_plot}[name](rep, figs)
+            "convergence": convergence_plot, "integrators": integrator_study_plot, "summary": summary_plot}[name](rep, figs)
 
 
 def read_report(report_dir, prog):
@@ -499,11 +580,19 @@ def main():
     rep = read_report(out, "make_report.py")
     if rep is None:
         return 1
-    # The figure groups are independent: drawn by two processes (most costly first).
-    jobs = ["furnace", "spheres", "luts", "chi2", "reciprocity", "convergence", "integrators"]
+    # The figure groups are independent: drawn by two processes (most costly first, the furnace
+    # plots in two halves). The integrator study (committed data, the same in every run) only in
+    # the full run's report: the quick run stays within seconds.
+    jobs = ["furnace:0", "furnace:1", "luts", "chi2", "spheres", "summary", "convergence", "reciprocity"]
+    if rep.get("mode") != "quick":
+        jobs.insert(2, "integrators")
     with ProcessPoolExecutor(max_workers=2) as pool:
         futures = {k: pool.submit(run_figure_job, k, out) for k in jobs}
         ctx = {k: f.result() for k, f in futures.items()}
+    # The furnace halves in the components' order.
+    halves = [ctx.pop("furnace:0"), ctx.pop("furnace:1")]
+    ctx["furnace"] = [f for pair in itertools.zip_longest(*halves) for f in pair if f is not None]
+    ctx.setdefault("integrators", None)
     ctx.update({
         "rep": rep,
         "statement": energy_statement(rep),
@@ -517,10 +606,11 @@ def main():
     env.filters["words"] = words
     env.filters["word"] = lambda s: {"PASS": "pass", "FAIL": "fail", "WAIVED": "waived", "NOT JUDGED": "nj"}.get(s, "")
     html = env.get_template("index.html.j2").render(**ctx)
-    tmp = os.path.join(out, ".index.html.tmp")
-    with open(tmp, "w") as f:
-        f.write(html)
-    os.replace(tmp, os.path.join(out, "index.html"))
+    for name, text in (("index.html", html), ("report.html", single_file(html, out))):
+        tmp = os.path.join(out, f".{name}.tmp")
+        with open(tmp, "w") as f:
+            f.write(text)
+        os.replace(tmp, os.path.join(out, name))
     return 0
 
 

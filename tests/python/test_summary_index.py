@@ -43,7 +43,8 @@ def test_index_of_a_quick_report(tmp_path):
     doc = open(os.path.join(SOURCE_DIR, "docs", "validation.md"), encoding="utf-8").read()
     e = rep["energy"]
     assert re.search(rf"^\| BSDF samples \| {e['samples']} \|", doc, flags=re.M), e["samples"]
-    assert re.search(rf"^\| eval directions \| 2 × {int((e['eval_directions'] // 2) ** 0.5)}² \|", doc, flags=re.M)
+    assert re.search(rf"^\| quadrature tolerance \| {e['quadrature_tolerance']:g} \|", doc, flags=re.M)
+    assert re.search(rf"^\| BSDF samples at most \| {e['samples_max']} \|", doc, flags=re.M)
 
 
 def test_committed_index_is_a_full_run():

@@ -6,6 +6,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "dspbr/bsdf/flakes.h"
 #include "dspbr/material.h"
 #include "dspbr/rng.h"
 #include "dspbr/validate/phase_adapter.h"
@@ -96,6 +97,13 @@ struct Builder {
     c.bsdf = component(comp, m, opt);
     c.claim = claim;
     c.note = note;
+    const Flake flake = flake_at(opt.position, opt.object_normal, m);
+    if (flake.opacity > 0 && !flake_cone_is_delta(flake_cos_cone(m.flakeRoughness))) {
+      // The flake's cone BSDF: constant inside the cone about reflect(v, n_f), 0 outside.
+      const Vec3 n_f = flake.normal;
+      const double cos_cone = flake_cos_cone(m.flakeRoughness);
+      c.cones = [n_f, cos_cone](const Vec3& v) { return std::vector<FeatureCone>{{reflect(v, n_f), cos_cone}}; };
+    }
     if (!m.thinWalled && (m.transparency > 0 || m.translucency > 0)) {
       c.eta_below = m.ior;
       c.viewer_below = true;

@@ -4,12 +4,14 @@
 // on any const Bsdf&.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "dspbr/bsdf/bsdf.h"
 #include "dspbr/tables/lut_set.h"
+#include "dspbr/validate/albedo_quadrature.h"
 
 namespace dspbr::validate {
 
@@ -36,6 +38,9 @@ struct BsdfCase {
   bool non_reciprocal_by_design = false;
   std::string non_reciprocal_reason;
   bool chi2 = true;               // include in the chi-square tests
+  // Where f(v, .) jumps (the flake's cone), for the furnace's quadrature (albedo_quadrature.h);
+  // empty: nowhere.
+  std::function<std::vector<FeatureCone>(const Vec3& v)> cones;
 };
 
 struct StabilityCase {

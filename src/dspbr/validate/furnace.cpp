@@ -1,5 +1,6 @@
 #include "dspbr/validate/furnace.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -130,8 +131,7 @@ BoundVerdict judge_bound(double tolerance, Beyond beyond, Worse worse, PerChanne
 
 }  // namespace
 
-EnergyVerdict judge_energy(const AlbedoEstimate& eval, const SampledAlbedo& sampled, const EnergyTolerances& tol,
-                           bool eval_reliable) {
+EnergyVerdict judge_energy(const QuadratureAlbedo& quad, const SampledAlbedo& sampled, const EnergyTolerances& tol) {
   EnergyVerdict v;
   const AlbedoEstimate& t = sampled.total;
   const AlbedoEstimate& nd = sampled.non_delta;
@@ -139,14 +139,12 @@ EnergyVerdict judge_energy(const AlbedoEstimate& eval, const SampledAlbedo& samp
   v.albedo_max = t.value.max_component();
   v.albedo_min = t.value.min_component();
   const double k = tol.sigmas;
-  // The estimates of the whole integral in channel c: the sampled one, and (where the eval
-  // estimator is reliable) the eval one plus the sampled delta part (independent streams).
+  // The estimates of the whole integral in channel c: the sampled one, and the quadrature plus the
+  // sampled delta part (its band: the delta part's noise plus the quadrature's stated error).
   auto estimates = [&](int c) {
-    std::vector<Estimate> e{{t.value[c], k * t.std_error[c], "sampled"}};
-    if (eval_reliable)
-      e.push_back({eval.value[c] + dl.value[c], k * std::hypot(eval.std_error[c], dl.std_error[c]),
-                   "eval + sampled delta"});
-    return e;
+    return std::vector<Estimate>{{t.value[c], k * t.std_error[c], "sampled"},
+                                 {quad.value[c] + dl.value[c], k * dl.std_error[c] + quad.error,
+                                  "quadrature + sampled delta"}};
   };
   v.conservation = judge_bound(
       tol.conservation, [&](double x, double band) { return x - band > 1.0 + tol.conservation; },
@@ -154,18 +152,20 @@ EnergyVerdict judge_energy(const AlbedoEstimate& eval, const SampledAlbedo& samp
   v.preservation = judge_bound(
       tol.preservation, [&](double x, double band) { return x + band < 1.0 - tol.preservation; },
       [](double a, double b) { return a < b; }, estimates);
-  // Agreement on the non-delta integral: |difference| against the noise of both.
+  // Agreement on the non-delta integral: |difference| against the sampled noise and the
+  // quadrature's error.
+  auto agreement_band = [&](int c) { return k * nd.std_error[c] + quad.error; };
+  const double scale = std::max({1.0, quad.value.max_component(), nd.value.max_component()});
   v.agreement = judge_bound(
-      tol.agreement_band_max, [&](double d, double band) { return d > band + tol.agreement_abs; },
+      tol.agreement_band_max * scale, [&](double d, double band) { return d > band + tol.agreement_abs; },
       [](double a, double b) { return a > b; },
       [&](int c) {
-        return std::vector<Estimate>{{std::abs(eval.value[c] - nd.value[c]),
-                                      k * std::hypot(eval.std_error[c], nd.std_error[c]), "eval vs sampled non-delta"}};
+        return std::vector<Estimate>{
+            {std::abs(quad.value[c] - nd.value[c]), agreement_band(c), "quadrature vs sampled non-delta"}};
       });
-  for (int c = 0; c < 3; ++c) {
-    const double bound = k * std::hypot(eval.std_error[c], nd.std_error[c]) + tol.agreement_abs;
-    v.disagreement = std::max(v.disagreement, std::abs(eval.value[c] - nd.value[c]) / bound);
-  }
+  for (int c = 0; c < 3; ++c)
+    v.disagreement = std::max(v.disagreement,
+                              std::abs(quad.value[c] - nd.value[c]) / (agreement_band(c) + tol.agreement_abs));
   return v;
 }
 

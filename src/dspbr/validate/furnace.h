@@ -12,6 +12,7 @@
 #include <string>
 
 #include "dspbr/bsdf/bsdf.h"
+#include "dspbr/validate/albedo_quadrature.h"
 
 namespace dspbr::validate {
 
@@ -37,24 +38,29 @@ struct SampledAlbedo {
 SampledAlbedo albedo_sampled(const Bsdf& bsdf, const Vec3& v, std::size_t n, uint64_t seed, uint64_t stream);
 
 // Verdicts of the white-furnace check at one direction. Two estimates of the whole integral:
-// the sampled one (sampled.total) and the combined one (albedo_eval + sampled.delta: the eval
-// estimator for the non-delta part, which is exact where the BSDF has no delta lobe). A bound
-// (conservation E <= 1 + tol, preservation E >= 1 - tol)
-//  - fails where either estimate lies beyond it by more than `sigmas` standard errors (so noise
-//    alone does not fail it);
-//  - passes only where the band +-sigmas standard errors of the narrower estimate lies within the
-//    tolerance (band <= tol): a violation of the tolerance by its own size would then have
-//    failed it;
+// the sampled one (sampled.total) and the combined one (the quadrature of the non-delta part,
+// albedo_quadrature.h, plus sampled.delta; exact to its stated error where the BSDF has no delta
+// lobe). A bound (conservation E <= 1 + tol, preservation E >= 1 - tol)
+//  - fails where either estimate lies beyond it by more than its band (sigmas standard errors,
+//    plus the quadrature's stated error), so that noise alone does not fail it;
+//  - passes only where the band of the narrower estimate lies within the tolerance (band <= tol):
+//    a violation of the tolerance by its own size would then have failed it;
 //  - is not judged otherwise (the band is wider than the tolerance: the check has no power).
-// The agreement of the two estimators on the non-delta integral is judged the same way, with the
-// tolerance agreement_abs + agreement_band_max: fails beyond sigmas noise + agreement_abs, not
-// judged where sigmas noise exceeds agreement_band_max.
+// The agreement of the quadrature and the sampled estimator on the non-delta integral is judged
+// the same way, with the tolerance agreement_abs + agreement_band_max: fails beyond its band +
+// agreement_abs, not judged where the band exceeds agreement_band_max (times the albedo where it exceeds 1).
 struct EnergyTolerances {
   double conservation = 0.01;   // E <= 1 + conservation
-  double preservation = 0.02;   // E >= 1 - preservation (only where the spec claims preservation)
+  // E >= 1 - preservation (only where the spec claims preservation). Measured with the quadrature
+  // (full run, 2026-12-06): the lowest preserving albedo is 0.99903 (opaque dielectric r = 0.2 at
+  // cos 0.8, table interpolation), the widest band 1.8e-3: 0.005 leaves room for both and fails a
+  // lobe that loses 1.5% (test ValidateSuite.PlantedGrazingLossFailsTheFullRun).
+  double preservation = 0.005;
   double sigmas = 4.0;
-  double agreement_abs = 2e-3;  // |E_eval - E_sampled,non-delta| allowed on top of the noise
-  double agreement_band_max = 0.02;  // widest sigmas-noise band with which the agreement is judged
+  double agreement_abs = 2e-3;  // |E_quad - E_sampled,non-delta| allowed on top of the band
+  // Widest band with which the agreement is judged, relative where the albedo exceeds 1 (the
+  // alternative sheen's gain reaches E = 3.9 at grazing view).
+  double agreement_band_max = 0.02;
 };
 
 enum class Decision { Pass, Fail, NotJudged };
@@ -66,7 +72,7 @@ struct BoundVerdict {
   double value = 0;      // estimate (agreement: |difference|)
   double band = 0;       // sigmas standard errors of it
   double tolerance = 0;  // the bound's tolerance (the band must not exceed it)
-  const char* estimator = "";  // "sampled" or "eval + sampled delta" (agreement: "eval vs sampled non-delta")
+  const char* estimator = "";  // "sampled" or "quadrature + sampled delta" (agreement: "quadrature vs sampled non-delta")
   // "band +-0.43 wider than the tolerance 0.01" for Decision::NotJudged, else empty.
   std::string reason() const;
 };
@@ -74,16 +80,13 @@ struct BoundVerdict {
 struct EnergyVerdict {
   BoundVerdict conservation, preservation, agreement;
   double albedo_max = 0, albedo_min = 0;  // over channels, sampled estimator (delta included)
-  double disagreement = 0;                // max over channels |E_eval - E_sampled,non-delta| / noise-aware bound
+  double disagreement = 0;                // max over channels |E_quad - E_sampled,non-delta| / noise-aware bound
   // Convenience: the bound did not fail (PASS or NOT JUDGED).
   bool conserving() const { return conservation.decision != Decision::Fail; }
   bool preserving() const { return preservation.decision != Decision::Fail; }
   bool estimators_agree() const { return agreement.decision != Decision::Fail; }
 };
 
-// eval_reliable = false: the eval estimator is not used for the bounds (grazing views, where its
-// sample variance underestimates its error); the agreement is computed all the same.
-EnergyVerdict judge_energy(const AlbedoEstimate& eval, const SampledAlbedo& sampled, const EnergyTolerances& tol,
-                           bool eval_reliable = true);
+EnergyVerdict judge_energy(const QuadratureAlbedo& quad, const SampledAlbedo& sampled, const EnergyTolerances& tol);
 
 }  // namespace dspbr::validate

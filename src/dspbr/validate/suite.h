@@ -27,8 +27,9 @@ struct SuiteSettings {
 
   // White furnace
   std::vector<double> furnace_cos;  // view cosines (mirrored below for viewer_below cases)
-  int furnace_strata = 0;           // eval estimator: strata^2 directions per hemisphere
-  std::size_t furnace_samples = 0;  // sampled estimator
+  double furnace_quadrature_tolerance = 1e-4;  // absolute error aimed at by the quadrature
+  std::size_t furnace_samples = 0;  // sampled estimator: first count
+  std::size_t furnace_samples_max = 0;  // its cap (x4 per round while a verdict is NOT JUDGED)
   EnergyTolerances energy;
   // Reciprocity
   std::size_t reciprocity_pairs = 0;
