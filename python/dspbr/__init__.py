@@ -21,9 +21,19 @@ except ImportError:
         "(apt-get install python3-numpy) or a venv made with `/usr/bin/python3 -m venv --system-site-packages`"
     ) from None
 
+from typing import TYPE_CHECKING
+
 from . import _dspbr as _extension
-from ._dspbr import (DELTA, DIFFUSE, GLOSSY, REFLECTION, TRANSMISSION, Bsdf, component_names, lookup, lut,
-                     parameter_ids, scene)
+from ._dspbr import DELTA, DIFFUSE, GLOSSY, REFLECTION, TRANSMISSION, component_names, parameter_ids
+from ._guard import guarded_class as _guarded_class, guarded_module as _guarded_module
+
+if TYPE_CHECKING:  # the extension's types (its stubs, python/dspbr/_dspbr/*.pyi)
+    from ._dspbr import Bsdf, lookup, lut, scene
+else:  # the same, with calls it cannot convert refused in one line naming the argument (_guard.py)
+    Bsdf = _guarded_class(_extension.Bsdf, "dspbr.Bsdf")
+    lut = _guarded_module(_extension.lut, "dspbr.lut")
+    lookup = _guarded_module(_extension.lookup, "dspbr.lookup")
+    scene = _guarded_module(_extension.scene, "dspbr.scene")
 
 __version__: str = getattr(_extension, "__version__")  # `dspbr --version`'s (git describe)
 
