@@ -6,7 +6,7 @@
 #   bash scripts/fuzz.sh --build-only     configure and build only (the dspbr_fuzz target of a -DDSPBR_FUZZ=ON build)
 #   bash scripts/fuzz.sh --no-build SECONDS   run only (CTest fuzz_short of a -DDSPBR_FUZZ=ON build)
 # Work folder: ${FUZZ_DIR:-${BUILD_DIR:-build}/fuzz} (build, corpora, artifacts, logs).
-# FUZZ_TARGETS="gltf uri" runs only those targets (default: all seven).
+# FUZZ_TARGETS="gltf uri" runs only those targets (default: all eight).
 # Exit status: 0 when no target crashed, hung (10 s per input), leaked past 2 GB or got a
 # sanitizer report; else 1, with the reproducer in <work folder>/artifacts/.
 set -euo pipefail
@@ -19,7 +19,7 @@ case "${1:-}" in
   "") ;;
   *) seconds="$1" ;;
 esac
-read -r -a targets <<<"${FUZZ_TARGETS:-params instance gltf luts uri output conformance}"
+read -r -a targets <<<"${FUZZ_TARGETS:-params instance gltf luts uri output conformance lookups}"
 
 if ((build)); then
   cxx="${FUZZ_CXX:-$(command -v clang++ || true)}"
@@ -40,7 +40,7 @@ fi
 # Seed corpora (rebuilt each run from the sources; what the fuzzer adds goes to corpus/<target>).
 seeds="$work/seeds"
 rm -rf "$seeds"
-mkdir -p "$seeds"/{params,instance,gltf,luts,uri,output,conformance}
+mkdir -p "$seeds"/{params,instance,gltf,luts,uri,output,conformance,lookups}
 cp "$here/data/dspbr/params-2025x.json" "$seeds/params/"
 for f in "$here"/tests/data/params/*.json; do
   if grep -q '"materials"' "$f"; then cp "$f" "$seeds/params/"; else cp "$f" "$seeds/instance/"; fi
@@ -84,6 +84,15 @@ printf '1{"results": [{"id": "plain_metal/gold-r10/00", "f_cos": [1, 2, 3], "pdf
   >"$seeds/conformance/results-json"
 printf '1id,f_cos_r,f_cos_g,f_cos_b,pdf\nplain_metal/gold-r10/00,1,2,3,4\nmetallic/metal-mirror/00,0,0,0,0\n' \
   >"$seeds/conformance/results-csv"
+
+# Lookup arguments (7 floats): NaN, infinities, huge, subnormal, and ordinary values.
+/usr/bin/python3 - "$seeds/lookups" <<'PY'
+import struct, sys
+rows = [[float("nan")] * 7, [float("inf"), -float("inf"), 1e30, -1e30, 0.0, 1.0, 0.0],
+        [0.5, 0.5, 1.5, 0.3, 0.7, 1.0, 1.0], [1e-45, 2.0, 1e4, 0.0, -0.0, 0.0, 1.0]]
+for i, r in enumerate(rows):
+    open(f"{sys.argv[1]}/{i}", "wb").write(struct.pack("<7f", *r))
+PY
 
 mkdir -p "$work/artifacts" "$work/logs"
 # The short run (--no-build, CTest) starts from the seeds alone each time, so that it stays a few
