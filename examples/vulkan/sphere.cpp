@@ -39,7 +39,7 @@ constexpr double kDark = 1e-3;
 // The bound covers what differs between the two sides: the shader's float arithmetic (its
 // geometry, the BSDF, the driver's sqrt / exp / pow) against double, and the lookups' Catmull-Rom
 // interpolation of the same renderer tables in float (the reference reads the built-in renderer
-// tables, the same values, in double). The measured errors are in docs/renderer.md
+// tables, the same values, in double). The measured errors are in docs/design/renderer.md
 // ("Measurements"); 1e-3 is the bound of issue 43 for the maximum over pixels and channels.
 constexpr double kMaxBound = 1e-3, kMeanBound = 1e-4;
 // Below the threshold the values are near 0 (a relative error says little): the absolute
