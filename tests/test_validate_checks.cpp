@@ -209,6 +209,13 @@ TEST(ValidateFurnace, PassOnlyWhereTheBandLiesWithinTheTolerance) {
   EXPECT_NEAR(v.conservation.band, 0.4, 1e-12);
   EXPECT_EQ(v.conservation.reason(), "band ±0.4 wider than the tolerance 0.01");
   EXPECT_EQ(v.agreement.decision, Decision::NotJudged);  // 4 x 0.1 + 0.4 > 0.02
+  EXPECT_FALSE(v.conservation.beyond);  // E = 1: within the bound, band aside
+  // E = 1.05 with the same bands: still NOT JUDGED, but beyond 1 + 0.01 (the report marks it).
+  q.value = e.value = Rgb(1.05);
+  s.total = e;
+  const EnergyVerdict beyond = judge_energy(q, s, EnergyTolerances{});
+  EXPECT_EQ(beyond.conservation.decision, Decision::NotJudged);
+  EXPECT_TRUE(beyond.conservation.beyond);
   // A gain of 2 bands is detected whatever the width.
   q.value = e.value = Rgb(1.0 + 0.01 + 0.8);
   s.total = e;

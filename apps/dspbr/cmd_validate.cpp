@@ -114,8 +114,8 @@ void run_validate(const ValidateArgs& a) {
     auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
     const double cpu = seconds(after.ru_utime) + seconds(after.ru_stime) - seconds(before.ru_utime) -
                        seconds(before.ru_stime);
-    std::fprintf(stderr, "  %-16s %6.1fs  (cpu %6.1fs)\n", "report (html)",
-                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), cpu);
+    validate::print_phase_time("report (html)",
+                               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), cpu);
   }
   out.commit();
 

@@ -98,10 +98,10 @@ struct Builder {
     c.claim = claim;
     c.note = note;
     const Flake flake = flake_at(opt.position, opt.object_normal, m);
-    if (flake.opacity > 0 && !flake_cone_is_delta(flake_cos_cone(m.flakeRoughness))) {
+    const double cos_cone = flake_cos_cone(m.flakeRoughness);
+    if (flake.opacity > 0 && !flake_cone_is_delta(cos_cone)) {
       // The flake's cone BSDF: constant inside the cone about reflect(v, n_f), 0 outside.
       const Vec3 n_f = flake.normal;
-      const double cos_cone = flake_cos_cone(m.flakeRoughness);
       c.cones = [n_f, cos_cone](const Vec3& v) { return std::vector<FeatureCone>{{reflect(v, n_f), cos_cone}}; };
     }
     if (!m.thinWalled && (m.transparency > 0 || m.translucency > 0)) {

@@ -108,7 +108,7 @@ BoundVerdict judge_bound(double tolerance, Beyond beyond, Worse worse, PerChanne
     const std::vector<Estimate> est = per_channel(c);
     for (const Estimate& e : est)
       if (beyond(e.value, e.band) && (!failed || worse(e.value, fail.value))) {
-        fail = {Decision::Fail, e.value, e.band, tolerance, e.name};
+        fail = {Decision::Fail, e.value, e.band, tolerance, e.name, true};
         failed = true;
       }
     // The narrower band decides whether the bound could have failed.
@@ -116,7 +116,7 @@ BoundVerdict judge_bound(double tolerance, Beyond beyond, Worse worse, PerChanne
     for (const Estimate& e : est)
       if (e.band < best->band) best = &e;
     const BoundVerdict v{best->band <= tolerance ? Decision::Pass : Decision::NotJudged, best->value, best->band,
-                         tolerance, best->name};
+                         tolerance, best->name, beyond(best->value, 0.0)};
     if (v.decision == Decision::NotJudged) {
       if (!not_judged || v.band > unjudged.band) unjudged = v;
       not_judged = true;

@@ -73,6 +73,8 @@ struct BoundVerdict {
   double band = 0;       // sigmas standard errors of it
   double tolerance = 0;  // the bound's tolerance (the band must not exceed it)
   const char* estimator = "";  // "sampled" or "quadrature + sampled delta" (agreement: "quadrature vs sampled non-delta")
+  // The estimate lies beyond the bound, its band left aside (what a NOT JUDGED view would suggest).
+  bool beyond = false;
   // "band +-0.43 wider than the tolerance 0.01" for Decision::NotJudged, else empty.
   std::string reason() const;
 };

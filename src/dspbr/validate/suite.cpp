@@ -117,6 +117,11 @@ Status status_from(const json& word) {
   return Status::Pass;
 }
 
+// The sample count at which a bound's band (~ 1/sqrt(n)) would fit its tolerance, from its band at n.
+double samples_for_power(const BoundVerdict& b, std::size_t n) {
+  return double(n) * (b.band / b.tolerance) * (b.band / b.tolerance);
+}
+
 json run_energy(const Catalog& cat, const SuiteSettings& s, Verdicts& verdicts) {
   struct Item { std::size_t c; double cos; };
   std::vector<Item> items;
@@ -143,14 +148,14 @@ json run_energy(const Catalog& cat, const SuiteSettings& s, Verdicts& verdicts) 
       out[i].sampled = albedo_sampled(*bc.bsdf, v, n, s.seed, 2 * i + 1 + 1000000 * round);
       out[i].verdict = judge_energy(out[i].quad, out[i].sampled, tol);
       const EnergyVerdict& e = out[i].verdict;
-      double factor = 1;  // (band / tolerance)^2 of the verdicts without power
+      double needed = 0;  // samples for the verdicts without power, times 1.5
       for (const BoundVerdict* b : {&e.agreement, &e.conservation, &e.preservation}) {
         if (b == &e.preservation && bc.claim != EnergyClaim::Preserving) continue;
-        if (b->decision == Decision::NotJudged) factor = std::max(factor, 1.5 * (b->band / b->tolerance) * (b->band / b->tolerance));
+        if (b->decision == Decision::NotJudged) needed = std::max(needed, 1.5 * samples_for_power(*b, n));
       }
-      if (factor <= 1) break;
+      if (needed == 0) break;
       std::size_t next = 4 * n;
-      while (double(next) < factor * double(n)) next *= 4;
+      while (double(next) < needed) next *= 4;
       if (next > s.furnace_samples_max) break;
       n = next;
     }
@@ -160,14 +165,14 @@ json run_energy(const Catalog& cat, const SuiteSettings& s, Verdicts& verdicts) 
   json rows = json::array();
   std::vector<json> per_case(cat.cases.size());
   // A bound without power at the sampled estimator's cap says what would give it power.
-  auto bound_json = [&s](const BoundVerdict& b, Status st, std::size_t samples) {
+  const std::size_t full_run_cap = SuiteSettings::defaults(false).furnace_samples_max;
+  auto bound_json = [&s, full_run_cap](const BoundVerdict& b, Status st, std::size_t samples) {
     json j = {{"status", status_word(st)}, {"value", b.value}, {"band", b.band}, {"tolerance", b.tolerance},
               {"estimator", b.estimator}};
     if (b.decision == Decision::NotJudged)
       j["reason"] = fmt::format("{} with {} samples: the band would fit at about {:.2g} samples, beyond this run's cap "
                                 "{} (the sampled weights are heavy-tailed here; the full run's cap is {})",
-                                b.reason(), samples, double(samples) * (b.band / b.tolerance) * (b.band / b.tolerance),
-                                s.furnace_samples_max, SuiteSettings::defaults(false).furnace_samples_max);
+                                b.reason(), samples, samples_for_power(b, samples), s.furnace_samples_max, full_run_cap);
     return j;
   };
   auto bound_detail = [](const char* what, const BoundVerdict& b) {
@@ -226,12 +231,10 @@ json run_energy(const Catalog& cat, const SuiteSettings& s, Verdicts& verdicts) 
       if (!pc.contains(k) || rank(status_from(word)) > rank(status_from(pc[k]))) pc[k] = word;
       if (word == status_word(Status::NotJudged)) {
         pc[k + "_not_judged"] = pc.value(k + "_not_judged", 0) + 1;
-        const json& b = judged[k];
-        const double value = b["value"], tolerance = b["tolerance"];
-        const bool beyond = k == "conservation"   ? value > 1 + tolerance
-                            : k == "preservation" ? value < 1 - tolerance
-                                                  : value > tolerance;
-        if (beyond) pc[k + "_unjudged_beyond"] = pc.value(k + "_unjudged_beyond", 0) + 1;
+        const BoundVerdict& b = k == "conservation"   ? o.verdict.conservation
+                                : k == "preservation" ? o.verdict.preservation
+                                                      : o.verdict.agreement;
+        if (b.beyond) pc[k + "_unjudged_beyond"] = pc.value(k + "_unjudged_beyond", 0) + 1;
       } else {
         pc[k + "_judged"] = pc.value(k + "_judged", 0) + 1;
       }
@@ -846,9 +849,8 @@ SuiteResult run_suite(const Catalog& cat, const LutSet* luts, const SuiteSetting
     const std::clock_t c0 = std::clock();  // processor time of all threads
     report[name] = f();
     if (s.progress)
-      std::fprintf(stderr, "  %-16s %6.1fs  (cpu %6.1fs)\n", name,
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
-                   double(std::clock() - c0) / CLOCKS_PER_SEC);
+      print_phase_time(name, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
+                       double(std::clock() - c0) / CLOCKS_PER_SEC);
   };
   timed("energy", [&] { return run_energy(cat, s, verdicts); });
   timed("reciprocity", [&] { return run_reciprocity(cat, s, verdicts); });
@@ -887,6 +889,10 @@ SuiteResult run_suite(const Catalog& cat, const LutSet* luts, const SuiteSetting
   r.waived = verdicts.waived;
   r.report = std::move(report);
   return r;
+}
+
+void print_phase_time(const char* name, double wall_s, double cpu_s) {
+  std::fprintf(stderr, "  %-16s %6.1fs  (cpu %6.1fs)\n", name, wall_s, cpu_s);
 }
 
 }  // namespace dspbr::validate

@@ -80,6 +80,10 @@ struct SuiteResult {
 // verdicts NOT JUDGED, from report["mode"], ["summary"] and ["energy"].
 std::string banner(const nlohmann::json& report);
 
+// One line of the run's timing breakdown on stderr: "  energy  10.4s  (cpu  20.1s)". The suite
+// prints one per phase; `dspbr validate` adds the report page's.
+void print_phase_time(const char* name, double wall_s, double cpu_s);
+
 // The tables of `luts` that are missing or empty (canonical names); a set used for validation must
 // have none.
 std::vector<std::string> missing_tables(const LutSet& luts);
