@@ -449,8 +449,8 @@ DSPBR_TABLE(dspbr_GGX_E_avg_table, 32)
 DSPBR_TABLE_END
 float dspbr_GGX_E_avg_at(int i) { return dspbr_GGX_E_avg_table[i]; }
 DSPBR_TABLE(dspbr_GGX_B_avg_table, 32)
-  0.0476190373f, 0.0475743525f, 0.0471912622f, 0.0464508571f, 0.0458539575f, 0.0452880785f, 0.0439502671f, 0.0416995771f,
-  0.0390518941f, 0.0362932719f, 0.03344246f, 0.0305364337f, 0.02765988f, 0.0248867404f, 0.0222660936f, 0.0198287796f,
+  0.0476190373f, 0.0475754216f, 0.0472158343f, 0.0465361513f, 0.0459300578f, 0.0452881828f, 0.0439502671f, 0.0416995771f,
+  0.0390518941f, 0.0362932719f, 0.03344246f, 0.0305364896f, 0.0276601389f, 0.0248867404f, 0.0222660936f, 0.0198287796f,
   0.0175919831f, 0.0155618424f, 0.0137359984f, 0.012106075f, 0.0106597636f, 0.00938250031f, 0.00825872365f, 0.00727277296f,
   0.0064095119f, 0.00565471221f, 0.00499527436f, 0.00441933097f, 0.00391625334f, 0.00347661809f, 0.00309212902f, 0.00275552389f
 DSPBR_TABLE_END
@@ -852,10 +852,11 @@ float dspbr_lut_interp_dspbr_Sheen_ash_E(float x0, float x1) {
   float r3 = i + 2 < 32 ? q3 : 2.0f * r2 - r1;
   return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
 }
-// E_m(mu; r): single-scattering GGX albedo.
+// E_m(mu; r): single-scattering GGX albedo, in [0, 1]. The cubic's undershoot (overshoot) is clamped
+// here, in beta and in the sheen albedos, so that every albedo composed from them is >= 0.
 float dspbr_ggx_E(float cos_theta, float roughness) {
   float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
-  return dspbr_lut_interp_dspbr_GGX_E(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(cos_theta, r * r)));
+  return dspbr_lut_clampf(dspbr_lut_interp_dspbr_GGX_E(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(cos_theta, r * r))), 0.0f, 1.0f);
 }
 // 1 - E_m,avg(r), stored as a logarithm (it vanishes like r^4).
 float dspbr_ggx_E_avg_missing(float roughness) {
@@ -867,7 +868,7 @@ float dspbr_ggx_beta(float cos_theta, float roughness) {
   float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
   float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
   float m = 1.0f - mu, m2 = m * m;
-  return m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(mu, r * r)));
+  return max(m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(mu, r * r))), 0.0f);
 }
 float dspbr_lut_ggx_B(float cos_theta, float roughness) {
   return dspbr_ggx_beta(cos_theta, roughness) * dspbr_ggx_E(cos_theta, roughness);
@@ -897,11 +898,11 @@ float dspbr_base_E_avg(float roughness, float f0_in) {
 }
 // E_b(mu; alpha_b) of the main sheen (Charlie D_b, the spec's Lambda fit).
 float dspbr_sheen_E(float cos_theta, float alpha_b) {
-  return dspbr_lut_interp_dspbr_Sheen_E(pow(((dspbr_lut_clampf(alpha_b, 0.00390625f, 1.0f) - 0.00390625f) / 0.99609375f), 0.25f), pow(((dspbr_lut_clampf(cos_theta, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f), 0.25f));
+  return max(dspbr_lut_interp_dspbr_Sheen_E(pow(((dspbr_lut_clampf(alpha_b, 0.00390625f, 1.0f) - 0.00390625f) / 0.99609375f), 0.25f), pow(((dspbr_lut_clampf(cos_theta, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f), 0.25f)), 0.0f);
 }
 // E_b(mu; alpha_b) of the alternative sheen (visibility 1 / (4 (mu_v + mu_l - mu_v mu_l))).
 float dspbr_sheen_ash_E(float cos_theta, float alpha_b) {
-  return dspbr_lut_interp_dspbr_Sheen_ash_E(pow(((dspbr_lut_clampf(alpha_b, 0.00390625f, 1.0f) - 0.00390625f) / 0.99609375f), 0.25f), pow(((dspbr_lut_clampf(cos_theta, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f), 0.25f));
+  return max(dspbr_lut_interp_dspbr_Sheen_ash_E(pow(((dspbr_lut_clampf(alpha_b, 0.00390625f, 1.0f) - 0.00390625f) / 0.99609375f), 0.25f), pow(((dspbr_lut_clampf(cos_theta, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f), 0.25f)), 0.0f);
 }
 // M_r,ms / F_ms = (1 - E_m(mu_v)) (1 - E_m(mu_l)) / (pi (1 - E_m,avg)); 0 when 1 - E_m,avg <= 1e-9.
 float dspbr_ms_lobe(float cos_v, float cos_l, float roughness) {

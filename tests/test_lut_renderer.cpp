@@ -185,6 +185,21 @@ TEST(LutRenderer, SheenTablesMatchQuadratureOverTheWholeDomain) {
   }
 }
 
+// The albedos near 0 are clamped (docs/luts.md "Limits"): before, the cubic gave E at f0 = 0 down
+// to -3.5e-4 near cos 0.87, r 0.11 and the sheen albedos -1.3e-5.
+TEST(LutRenderer, AlbedosAreNeverNegative) {
+  const RendererLuts& L = committed();
+  double worst = 0;
+  const int n = 401;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double mu = double(i) / (n - 1), r = double(j) / (n - 1);
+      for (const double v : {L.E_m(mu, r), L.beta(mu, r), L.E_base(mu, r, 0.0), L.E_sheen(mu, r), L.E_sheen_ash(mu, r)})
+        worst = std::min(worst, v);
+    }
+  EXPECT_GE(worst, 0.0);
+}
+
 TEST(LutRenderer, AveragesMatchQuadrature) {
   for (double r : {0.02, 0.1, 0.25, 0.5, 0.77, 1.0}) {
     EXPECT_NEAR(committed().E_m_avg(r), validate::ggx_albedo_avg_ref(r, {24}).value, 2e-3) << r;

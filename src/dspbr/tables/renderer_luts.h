@@ -74,12 +74,13 @@ struct RendererLuts {
   double E_sheen(double cos_theta, double alpha_b) const;
 
   // The pieces of the Base_E composition (shared with AlbedoSlice):
-  // beta from its stored value, beta = (1 - mu)^5 + stored;
-  static double decode_beta(double mu, double stored) { return std::pow(1.0 - mu, 5) + stored; }
+  // beta from its stored value, beta = (1 - mu)^5 + stored, at least 0 (the interpolating cubic
+  // undershoots where beta nears 0: down to -3.5e-4 at r 0.11, cos 0.87; docs/luts.md "Limits");
+  static double decode_beta(double mu, double stored) { return std::max(0.0, std::pow(1.0 - mu, 5) + stored); }
   // the same with (1 - mu)^5 by multiplications (equal to rounding; the lobes' per-evaluation form);
   static double decode_beta_fast(double mu, double stored) {
     const double m = 1.0 - mu, m2 = m * m;
-    return m2 * m2 * m + stored;
+    return std::max(0.0, m2 * m2 * m + stored);
   }
   // F_ms(f0, 1; E_m,avg), the base's multiple-scattering Fresnel;
   static double base_fresnel_ms(double f0, double e_m_avg);
@@ -100,7 +101,7 @@ inline double RendererLuts::E_m(double cos_theta, double roughness) const {
   const double r = std::clamp(roughness, 0.0, 1.0);
   const double x0 = ggx_E.axes[0].warp.to_grid(r);
   const double x1 = ggx_E.axes[1].warp.to_grid(cos_theta, r * r);
-  return decode(ggx_E.encoding, ggx_E.interpolate_2d(x0, x1));
+  return std::clamp(decode(ggx_E.encoding, ggx_E.interpolate_2d(x0, x1)), 0.0, 1.0);  // E_m in [0, 1]
 }
 
 // The physical coordinates (one per axis, slowest first; unused ones 0) of sample `index` of a
