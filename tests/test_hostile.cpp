@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "dspbr/conformance/results.h"
 #include "dspbr/io/read_file.h"
 #include "dspbr/limits.h"
 #include "dspbr/lutgen/lut_io.h"
@@ -306,4 +307,28 @@ TEST(Hostile, JsonBeyondTheMemoryBoundIsRefused) {
   }
   EXPECT_EQ(dspbr::parse_json(list(300000, "{}"), "r.json", "results file")["results"].size(), 300000u);
   EXPECT_EQ(dspbr::parse_json(list(1000000, "0"), "r.json", "results file")["results"].size(), 1000000u);
+}
+
+// Issue 45 (#2): a CSV results file is charged against the same bound, each row twice its Result
+// (the vector's growth) and its id. Rows of 8 bytes took ~44 x the file before (15 MB: 500 MB);
+// 4 MB of them are now refused at the row that exceeds the bound, and 100,000 rows are read.
+TEST(Hostile, CsvResultsBeyondTheMemoryBoundAreRefused) {
+  const auto rows = [](std::size_t n) {
+    std::string s = "id,f_cos_r,f_cos_g,f_cos_b\n";
+    for (std::size_t i = 0; i < n; ++i) s += "a,0,0,0\n";
+    return s;
+  };
+  const std::string big = rows(500000);
+  try {
+    dspbr::conformance::parse_results(big, "r.csv");
+    ADD_FAILURE() << "500,000 rows were read";
+  } catch (const std::runtime_error& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("r.csv: line ", 0), 0u) << m;
+    EXPECT_NE(m.find(": its results would take more than " +
+                     std::to_string(dspbr::limits::json_memory_budget(big.size()) >> 20) + " MiB in memory"),
+              std::string::npos)
+        << m;
+  }
+  EXPECT_EQ(dspbr::conformance::parse_results(rows(100000), "r.csv").size(), 100000u);
 }

@@ -105,19 +105,35 @@ std::optional<Rgb> csv_rgb(const std::vector<std::string>& f, std::size_t c, con
              csv_number(f[c + 2], name + "_b", where)};
 }
 
-std::vector<Result> parse_csv_results(std::string_view bytes, const std::string& path) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start <= bytes.size()) {
-    std::size_t end = bytes.find('\n', start);
-    if (end == std::string_view::npos) end = bytes.size();
-    std::string line(bytes.substr(start, end - start));
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(std::move(line));
-    start = end + 1;
+// The lines of a CSV file, read one at a time (no copy of the file's lines: memory stays linear in
+// the results, not in the lines; a file of 15 MB of newlines took 650 MB as strings).
+class CsvLines {
+ public:
+  explicit CsvLines(std::string_view bytes) : bytes_(bytes) {}
+  // The next line without its "\r\n" or "\n" (false after the last); number() is its 1-based number.
+  bool next(std::string_view* line) {
+    if (start_ > bytes_.size()) return false;
+    std::size_t end = bytes_.find('\n', start_);
+    if (end == std::string_view::npos) end = bytes_.size();
+    *line = bytes_.substr(start_, end - start_);
+    if (!line->empty() && line->back() == '\r') line->remove_suffix(1);
+    start_ = end + 1;
+    ++number_;
+    return true;
   }
+  std::size_t number() const { return number_; }
+
+ private:
+  std::string_view bytes_;
+  std::size_t start_ = 0, number_ = 0;
+};
+
+std::vector<Result> parse_csv_results(std::string_view bytes, const std::string& path) {
+  CsvLines lines(bytes);
+  std::string_view first_line;
+  lines.next(&first_line);
   static const std::vector<std::string> kBase = {"id", "f_cos_r", "f_cos_g", "f_cos_b"};
-  const std::vector<std::string> header = csv_fields(lines.empty() ? "" : lines[0], "line 1");
+  const std::vector<std::string> header = csv_fields(std::string(first_line), "line 1");
   bool has_pdf = false, has_albedo = false;
   {
     std::vector<std::string> expect = kBase;
@@ -129,19 +145,26 @@ std::vector<Result> parse_csv_results(std::string_view bytes, const std::string&
     }
     if (header != expect)
       fail(path, "line 1: the CSV header must be id,f_cos_r,f_cos_g,f_cos_b[,pdf][,albedo_r,albedo_g,albedo_b], got " +
-                     in_quotes(lines.empty() ? "" : lines[0]));
+                     in_quotes(std::string(first_line)));
   }
   const std::size_t columns = 4 + (has_pdf ? 1 : 0) + (has_albedo ? 3 : 0);
   std::vector<Result> out;
+  // Memory: the readers' bound (limits.h), each result charged twice its size (the vector's growth)
+  // and its id, so that rows of a few bytes cannot take ~40 x the file's size.
+  const std::size_t budget = limits::json_memory_budget(bytes.size());
+  std::size_t used = 0;
   try {
-    for (std::size_t n = 1; n < lines.size(); ++n) {
-      if (lines[n].find_first_not_of(" \t") == std::string::npos) continue;  // blank lines (the final newline)
-      const std::string line_where = "line " + std::to_string(n + 1);
-      const std::vector<std::string> f = csv_fields(lines[n], line_where);
+    for (std::string_view line; lines.next(&line);) {
+      if (line.find_first_not_of(" \t") == std::string_view::npos) continue;  // blank lines (the final newline)
+      const std::string line_where = "line " + std::to_string(lines.number());
+      const std::vector<std::string> f = csv_fields(std::string(line), line_where);
       const std::string where = line_where + (f.empty() ? "" : " (id " + in_quotes(f[0]) + ")");
       if (f.size() != columns)
         throw std::runtime_error(where + ": " + std::to_string(f.size()) + " fields, the header has " +
                                  std::to_string(columns));
+      if ((used += 2 * sizeof(Result) + f[0].size()) > budget)
+        throw std::runtime_error(line_where + ": its results would take more than " + std::to_string(budget >> 20) +
+                                 " MiB in memory, 10 x the file's size + 64 MiB (the readers' bound, docs/limits.md)");
       Result r;
       r.id = f[0];
       std::size_t c = 1;
