@@ -52,6 +52,7 @@ SMALL = {
     "dspbr lut --bench-integrators --bench-csv study.csv": (None, "the integrators' study: about 42 s"),
     "dspbr lut --out DIR --layout renderer": (None, "7 s; the README's test runs the same command"),
     "dspbr lut --out DIR --quiet": (TINY_LUT, "every table: about 15 s"),
+    "dspbr fit --out DIR": ("--quick", "every fit: about 2 minutes, and scripts/main.sh runs it"),
     "dspbr validate --out report": ("--quick --no-html", "the full run: minutes"),
     "dspbr validate --threads 1 --out DIR": ("--quick --no-html", "the full run: minutes"),
     "dspbr validate --quick --out DIR": ("--no-html", "the HTML report is made by the README's test of the same run"),
