@@ -310,7 +310,7 @@ TEST(Hostile, JsonBeyondTheMemoryBoundIsRefused) {
 }
 
 // Issue 45 (#2): a CSV results file is charged against the same bound, each row twice its Result
-// (the vector's growth) and its id. Rows of 8 bytes took ~44 x the file before (15 MB: 500 MB);
+// (the vector's growth) and its id, and a line is split into at most the header's fields. Rows of 8 bytes took ~44 x the file before (15 MB: 500 MB);
 // 4 MB of them are now refused at the row that exceeds the bound, and 100,000 rows are read.
 TEST(Hostile, CsvResultsBeyondTheMemoryBoundAreRefused) {
   const auto rows = [](std::size_t n) {
@@ -331,4 +331,12 @@ TEST(Hostile, CsvResultsBeyondTheMemoryBoundAreRefused) {
         << m;
   }
   EXPECT_EQ(dspbr::conformance::parse_results(rows(100000), "r.csv").size(), 100000u);
+  // One line of 4 million commas was 4 million strings (15 MB of them: 685 MB); now refused at the
+  // fifth field.
+  try {
+    dspbr::conformance::parse_results("id,f_cos_r,f_cos_g,f_cos_b\n" + std::string(4000000, ','), "r.csv");
+    ADD_FAILURE() << "a line of commas was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "r.csv: line 2: more than 4 fields, the header has 4");
+  }
 }

@@ -61,8 +61,12 @@ std::vector<Result> parse_json_results(std::string_view bytes, const std::string
   return out;
 }
 
-// The fields of one CSV line (RFC 4180 quoting: a quoted field may hold commas and doubled quotes).
-std::vector<std::string> csv_fields(const std::string& line, const std::string& where) {
+// The fields of one CSV line (RFC 4180 quoting: a quoted field may hold commas and doubled quotes),
+// at most `max_fields` of them: a line with more is refused ("WHERE: more than N fields" and `why`)
+// when the field after the last is reached (a line of 15 MB of commas would otherwise be 7.5
+// million strings, 40 x its size).
+std::vector<std::string> csv_fields(std::string_view line, const std::string& where, std::size_t max_fields,
+                                    const std::string& why) {
   std::vector<std::string> out;
   std::string cur;
   std::size_t i = 0;
@@ -83,6 +87,8 @@ std::vector<std::string> csv_fields(const std::string& line, const std::string& 
     } else {
       while (i < line.size() && line[i] != ',') cur += line[i++];
     }
+    if (out.size() == max_fields)
+      throw std::runtime_error(where + ": more than " + std::to_string(max_fields) + " fields" + why);
     out.push_back(cur);
     if (i >= line.size()) break;
     ++i;  // the comma
@@ -133,7 +139,14 @@ std::vector<Result> parse_csv_results(std::string_view bytes, const std::string&
   std::string_view first_line;
   lines.next(&first_line);
   static const std::vector<std::string> kBase = {"id", "f_cos_r", "f_cos_g", "f_cos_b"};
-  const std::vector<std::string> header = csv_fields(std::string(first_line), "line 1");
+  // The header: id, f_cos_r..b, pdf, albedo_r..b at most.
+  const std::vector<std::string> header = [&] {
+    try {
+      return csv_fields(first_line, "line 1", 8, "");
+    } catch (const std::runtime_error&) {
+      return std::vector<std::string>(9);  // too many: refused below, as any other header
+    }
+  }();
   bool has_pdf = false, has_albedo = false;
   {
     std::vector<std::string> expect = kBase;
@@ -145,7 +158,7 @@ std::vector<Result> parse_csv_results(std::string_view bytes, const std::string&
     }
     if (header != expect)
       fail(path, "line 1: the CSV header must be id,f_cos_r,f_cos_g,f_cos_b[,pdf][,albedo_r,albedo_g,albedo_b], got " +
-                     in_quotes(std::string(first_line)));
+                     in_quotes(first_line));
   }
   const std::size_t columns = 4 + (has_pdf ? 1 : 0) + (has_albedo ? 3 : 0);
   std::vector<Result> out;
@@ -157,7 +170,8 @@ std::vector<Result> parse_csv_results(std::string_view bytes, const std::string&
     for (std::string_view line; lines.next(&line);) {
       if (line.find_first_not_of(" \t") == std::string_view::npos) continue;  // blank lines (the final newline)
       const std::string line_where = "line " + std::to_string(lines.number());
-      const std::vector<std::string> f = csv_fields(std::string(line), line_where);
+      const std::vector<std::string> f =
+          csv_fields(line, line_where, columns, ", the header has " + std::to_string(columns));
       const std::string where = line_where + (f.empty() ? "" : " (id " + in_quotes(f[0]) + ")");
       if (f.size() != columns)
         throw std::runtime_error(where + ": " + std::to_string(f.size()) + " fields, the header has " +
