@@ -49,6 +49,12 @@ def glb(json_bytes):
 
 # (name, the reader's size limit, writer(size) -> (file suffix, bytes), argv(path, tmp) -> command)
 def readers(dspbr, vectors):
+    def check_results(path, tmp):  # a results file against the valid vectors
+        return [dspbr, "conformance", "check", vectors, path, "--no-html", "--out", os.path.join(tmp, "r")]
+
+    def csv(unit, sep, tail=b""):  # a results CSV: its header, then the units
+        return lambda size: (".csv", repeated(b"id,f_cos_r,f_cos_g,f_cos_b\n", unit, sep, tail, size))
+
     gltf_nodes = lambda size: (".gltf", repeated(b'{"asset":{"version":"2.0"},"nodes":[', b"{}", b",", b"]}", size))
     return [
         ("parameter definitions (params list)", DOCUMENT,
@@ -69,16 +75,10 @@ def readers(dspbr, vectors):
          lambda p, t: [dspbr, "conformance", "check", p, vectors, "--no-html", "--out", os.path.join(t, "r")]),
         ("conformance results, JSON (conformance check)", DOCUMENT,
          lambda size: (".json", repeated(b'{"results":[', b"{}", b",", b"]}", size)),
-         lambda p, t: [dspbr, "conformance", "check", vectors, p, "--no-html", "--out", os.path.join(t, "r")]),
-        ("conformance results, CSV newlines (conformance check)", DOCUMENT,
-         lambda size: (".csv", repeated(b"id,f_cos_r,f_cos_g,f_cos_b\n", b"", b"\n", b"", size)),
-         lambda p, t: [dspbr, "conformance", "check", vectors, p, "--no-html", "--out", os.path.join(t, "r")]),
-        ("conformance results, CSV one line of commas (conformance check)", DOCUMENT,
-         lambda size: (".csv", repeated(b"id,f_cos_r,f_cos_g,f_cos_b\n", b"", b",", b"", size)),
-         lambda p, t: [dspbr, "conformance", "check", vectors, p, "--no-html", "--out", os.path.join(t, "r")]),
-        ("conformance results, CSV rows (conformance check)", DOCUMENT,
-         lambda size: (".csv", repeated(b"id,f_cos_r,f_cos_g,f_cos_b\n", b"a,0,0,0", b"\n", b"\n", size)),
-         lambda p, t: [dspbr, "conformance", "check", vectors, p, "--no-html", "--out", os.path.join(t, "r")]),
+         check_results),
+        ("conformance results, CSV newlines (conformance check)", DOCUMENT, csv(b"", b"\n"), check_results),
+        ("conformance results, CSV one line of commas (conformance check)", DOCUMENT, csv(b"", b","), check_results),
+        ("conformance results, CSV rows (conformance check)", DOCUMENT, csv(b"a,0,0,0", b"\n", b"\n"), check_results),
     ]
 
 
