@@ -1,8 +1,8 @@
 # The reader benchmark (scripts/bench_readers.py, docs/limits.md "Reading cost"; issue 45) run at a
 # sixteenth of its sizes: every reader's peak memory within 10 x the input + 200 MB and an exit
 # status that is a verdict (0, 1 or 2), never a crash. Its time ratios are the benchmark's to report
-# (no timed assertion here); the memory bound has power: a reader at the 55 x the input that JSON of
-# empty objects cost before would exceed it on the 4 MB glTF.
+# (no timed assertion here); the memory bound has power: a reader at 55 x its input (what JSON of
+# empty objects cost before the readers' bound) would exceed it on the 4 MB glTF.
 import json
 import os
 import subprocess

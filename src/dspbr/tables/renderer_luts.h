@@ -75,7 +75,8 @@ struct RendererLuts {
 
   // The pieces of the Base_E composition (shared with AlbedoSlice):
   // beta from its stored value, beta = (1 - mu)^5 + stored, at least 0 (the interpolating cubic
-  // undershoots where beta nears 0: down to -3.5e-4 at r 0.11, cos 0.87; docs/luts.md "Limits");
+  // undershoots where beta nears 0: E at f0 = 0 reached -3.5e-4 at r 0.11, cos 0.87; docs/luts.md
+  // "Limits");
   static double decode_beta(double mu, double stored) { return std::max(0.0, std::pow(1.0 - mu, 5) + stored); }
   // the same with (1 - mu)^5 by multiplications (equal to rounding; the lobes' per-evaluation form);
   static double decode_beta_fast(double mu, double stored) {
