@@ -12,6 +12,8 @@
 #include <string>
 
 #include "dspbr/conformance/results.h"
+#include "dspbr/gltf/gltf_file.h"
+#include "dspbr/gltf/gltf_material.h"
 #include "dspbr/io/read_file.h"
 #include "dspbr/limits.h"
 #include "dspbr/lutgen/lut_io.h"
@@ -339,4 +341,26 @@ TEST(Hostile, CsvResultsBeyondTheMemoryBoundAreRefused) {
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "r.csv: line 2: more than 4 fields, the header has 4");
   }
+}
+
+// A glTF's materials are limited (limits.h kSceneMaterials): an analysis costs up to ~11 kB per
+// material and an empty one 3 bytes of glTF, so 65,536 of them (197 kB) took 723 MB in
+// `scene analyze --json --parameters`. One more than the limit is refused naming the file; the
+// limit itself is read.
+TEST(Hostile, GltfMaterialsBeyondTheLimitAreRefused) {
+  const auto gltf = [](std::size_t n) {
+    std::string s = R"({"asset": {"version": "2.0"}, "materials": [)";
+    for (std::size_t i = 0; i < n; ++i) s += i ? ",{}" : "{}";
+    s += "]}";
+    return dspbr::gltf::parse_gltf(std::vector<std::uint8_t>(s.begin(), s.end()), "m.gltf");
+  };
+  const std::size_t limit = dspbr::limits::kSceneMaterials;
+  try {
+    dspbr::gltf::map_materials(gltf(limit + 1));
+    ADD_FAILURE() << "more materials than the limit were read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "m.gltf: " + std::to_string(limit + 1) + " materials, more than the limit of " +
+                                         std::to_string(limit) + " (docs/limits.md)");
+  }
+  EXPECT_EQ(dspbr::gltf::map_materials(gltf(limit)).size(), limit);
 }

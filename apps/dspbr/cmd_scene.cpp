@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "provenance.h"
 #include "dspbr/io/json_write.h"
+#include "dspbr/limits.h"
 #include "dspbr/params/material_params.h"
 #include "dspbr/scene/components.h"
 #include "dspbr/scene/scene_analysis.h"
@@ -90,12 +91,16 @@ void run_analyze(const AnalyzeOptions& opt) {
   for (const std::string& p : opt.paths)
     for (std::string& f : scene_files(p)) files.push_back(std::move(f));
   std::vector<SceneAnalysis> scenes;
+  std::size_t materials = 0;  // of the run: its analyses are kept until printed (limits.h)
   for (const std::string& f : files) {
     try {
       scenes.push_back(analyze_scene(f, opt.compensation));
     } catch (const std::runtime_error& e) {
       throw UsageError(e.what());
     }
+    if ((materials += scenes.back().materials.size()) > limits::kSceneMaterials)
+      throw UsageError(f + ": the run's scenes hold more than " + std::to_string(limits::kSceneMaterials) +
+                       " materials, the limit of one run (docs/limits.md); analyze them in several runs");
   }
   const bool several = files.size() > 1 || opt.paths.size() > 1;
   const nlohmann::ordered_json summary = summary_json(scenes, layout, opt.compensation);

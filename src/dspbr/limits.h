@@ -51,6 +51,12 @@ inline constexpr std::uint64_t kTableFileBytes = std::uint64_t(1) << 30;
 // validation scenes have at most 64 kB.
 inline constexpr std::uint64_t kGltfBytes = std::uint64_t(256) << 20;
 
+// Materials of one glTF, and of one `scene analyze` run: an analysis costs up to ~11 kB per material
+// (--json --parameters), a material as little as 3 bytes of glTF ("{},"): 65,536 empty materials
+// (197 kB) took 723 MB. 10,000 keeps a run within 10 x its input + 200 MB; the validation scenes
+// have 1 to 3 each.
+inline constexpr std::size_t kSceneMaterials = 10000;
+
 // Worker threads (--threads, Python threads=): 0 means all cores; far above the cores of any
 // machine (TBB fails near INT_MAX).
 inline constexpr int kThreads = 1024;

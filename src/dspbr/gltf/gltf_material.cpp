@@ -12,6 +12,7 @@
 #include "dspbr/params/material_params.h"
 #include "dspbr/params/param_defs.h"
 #include "dspbr/io/json_fields.h"
+#include "dspbr/limits.h"
 
 namespace dspbr::gltf {
 
@@ -290,6 +291,9 @@ std::vector<GltfMaterial> map_materials(const GltfFile& file) {
   if (!file.json.contains("materials")) return out;
   const Json& mats = file.json["materials"];
   if (!mats.is_array()) throw std::runtime_error(file.path + ": \"materials\" must be an array");
+  if (mats.size() > limits::kSceneMaterials)
+    throw std::runtime_error(file.path + ": " + std::to_string(mats.size()) + " materials, more than the limit of " +
+                             std::to_string(limits::kSceneMaterials) + " (docs/limits.md)");
   std::set<std::string> required;
   if (file.json.contains("extensionsRequired") && file.json["extensionsRequired"].is_array())
     for (const auto& r : file.json["extensionsRequired"])
