@@ -33,3 +33,19 @@ def test_bad_files_raise_the_cli_message(tmp_path):
         with pytest.raises(ValueError) as e:
             dspbr.scene.analyze(path)
         assert str(e.value) == msg
+
+
+def test_scene_folders_beyond_the_material_limit_are_refused(tmp_path):
+    # limits.h kSceneMaterials (10,000; docs/limits.md): two files of 5,001 empty materials each are
+    # within the per-file limit; the folder (conformance generate --scenes) and the run (scene
+    # analyze) are not, and are refused before any vector or analysis is printed.
+    doc = {"asset": {"version": "2.0"}, "materials": [{}] * 5001}
+    for name in ("a.gltf", "b.gltf"):
+        (tmp_path / name).write_text(json.dumps(doc))
+    message = cli_error("conformance", "generate", "--out", tmp_path / "v", "--scenes", tmp_path, "--no-albedo",
+                        "--directions", "1")
+    assert message == f"--scenes: {tmp_path / 'b.gltf'}: the scene folder holds more than 10000 materials, the limit (docs/limits.md)"
+    assert not (tmp_path / "v").exists()
+    message = cli_error("scene", "analyze", tmp_path)
+    assert message.startswith(f"{tmp_path / 'b.gltf'}: the run's scenes hold more than 10000 materials")
+    assert dspbr.scene.analyze(str(tmp_path / "a.gltf"))["materials"][5000]["name"] == "material 5000"

@@ -21,6 +21,7 @@
 #include "dspbr/gltf/gltf_file.h"
 #include "dspbr/gltf/gltf_material.h"
 #include "dspbr/io/json_values.h"
+#include "dspbr/limits.h"
 #include "dspbr/tables/lut_set.h"
 #include "dspbr/params/material_instance.h"
 #include "dspbr/params/material_params.h"
@@ -495,6 +496,9 @@ std::vector<Case> scene_cases(const std::string& dir) {
       }
       out.push_back(std::move(c));
     }
+    if (out.size() > limits::kSceneMaterials)  // the folder's, as one scene analyze run's (limits.h)
+      throw std::runtime_error(f.string() + ": the scene folder holds more than " +
+                               std::to_string(limits::kSceneMaterials) + " materials, the limit (docs/limits.md)");
   }
   return out;
 }
