@@ -139,14 +139,18 @@ std::vector<Result> parse_csv_results(std::string_view bytes, const std::string&
   std::string_view first_line;
   lines.next(&first_line);
   static const std::vector<std::string> kBase = {"id", "f_cos_r", "f_cos_g", "f_cos_b"};
-  // The header: id, f_cos_r..b, pdf, albedo_r..b at most.
-  const std::vector<std::string> header = [&] {
-    try {
-      return csv_fields(first_line, "line 1", 8, "");
-    } catch (const std::runtime_error&) {
-      return std::vector<std::string>(9);  // too many: refused below, as any other header
-    }
-  }();
+  const auto bad_header = [&] {
+    fail(path, "line 1: the CSV header must be id,f_cos_r,f_cos_g,f_cos_b[,pdf][,albedo_r,albedo_g,albedo_b], got " +
+                   in_quotes(first_line));
+  };
+  // The header: id, f_cos_r..b, pdf, albedo_r..b at most; one that cannot be read (more fields, an
+  // unterminated quote) is a bad header.
+  std::vector<std::string> header;
+  try {
+    header = csv_fields(first_line, "line 1", 8, "");
+  } catch (const std::runtime_error&) {
+    bad_header();
+  }
   bool has_pdf = false, has_albedo = false;
   {
     std::vector<std::string> expect = kBase;
@@ -156,9 +160,7 @@ std::vector<Result> parse_csv_results(std::string_view bytes, const std::string&
       has_albedo = true;
       for (const char* c : {"albedo_r", "albedo_g", "albedo_b"}) expect.push_back(c);
     }
-    if (header != expect)
-      fail(path, "line 1: the CSV header must be id,f_cos_r,f_cos_g,f_cos_b[,pdf][,albedo_r,albedo_g,albedo_b], got " +
-                     in_quotes(first_line));
+    if (header != expect) bad_header();
   }
   const std::size_t columns = 4 + (has_pdf ? 1 : 0) + (has_albedo ? 3 : 0);
   std::vector<Result> out;
