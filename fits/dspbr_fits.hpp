@@ -9,11 +9,11 @@
 // Smith Lambda of the Charlie sheen distribution (spec "Sheen"):
 //   Lambda = b (sqrt(1 + A^2 tan^2) - 1) exp(c mu / (1 + d mu)), b, A, c, d rational in sqrt(alpha_b).
 // Domain: alpha_b in [0.00390625, 1], cos_theta in [0.001, 0.999] (valid and exact-limit behaved on (0, 1]:
-// +inf at cos 0, 0 at cos 1). Relative error of Lambda: max 9.09e-03, RMS 3.73e-03.
+// +inf at cos 0, 0 at cos 1). Relative error of Lambda: max 1.10e-02, RMS 3.81e-03.
 inline float dspbr_fit_sheen_lambda(float cos_theta, float alpha_b) {
-  static const float q[16] = {7.80269913e-01f, -8.39750851e-01f, 1.98732547e-01f, -7.42873432e-01f, 6.28435679e+07f, 1.74314020e+07f,
-      6.23593734e+07f, 1.21603104e+08f, -1.96223541e-02f, 5.62357441e-01f, -1.38134309e+00f, -2.71320865e+00f,
-      -1.10557852e+00f, 3.74017863e+00f, -7.84506126e-01f, -9.42449706e-01f};
+  static const float q[16] = {7.88486071e-01f, -8.82022727e-01f, 2.11086180e-01f, -7.83568150e-01f, 1.15597681e+08f, 3.16627766e+07f,
+      1.16982508e+08f, 2.26064547e+08f, -1.65508740e-02f, 5.19036200e-01f, -1.13036510e+00f, -2.35554128e+00f,
+      -1.07799249e+00f, 3.35794603e+00f, -5.99421388e-01f, -9.34326188e-01f};
   const float mu = std::fmin(std::fabs(cos_theta), 1.0f);
   if (mu <= 0.0f) return HUGE_VALF;  // grazing: fully masked
   if (mu >= 1.0f) return 0.0f;       // normal incidence: no masking
@@ -125,8 +125,8 @@ inline float dspbr_fit_detail_ggx_E5(float cos_theta, float roughness) {
       -6.17796141e-02f, -9.51098613e+00f, -7.17601436e+00f, -4.26332135e+00f, -2.29464027e+00f, -8.19054374e-01f,
       -1.53091671e-02f, 6.81788222e+00f, -2.89627457e+00f, -6.11139123e+00f, -4.32489607e+00f, -3.55887613e-01f,
       6.03384772e-01f, 8.33120613e+00f, -6.10585937e+00f, -8.95459917e+00f, -2.44111174e+00f, 2.14983690e+00f,
-      8.67540686e-01f, 3.37947443e-02f, -6.40188601e+00f, -4.05433223e+00f, 2.04997318e+00f, 1.73776790e+00f,
-      -3.83957282e-04f, -1.20433713e+00f, -1.68266629e+00f, 2.07024360e-01f, 1.27086896e+00f, -1.17100211e-01f,
+      8.67540686e-01f, 3.37947445e-02f, -6.40188601e+00f, -4.05433223e+00f, 2.04997318e+00f, 1.73776790e+00f,
+      -3.83957279e-04f, -1.20433713e+00f, -1.68266629e+00f, 2.07024360e-01f, 1.27086896e+00f, -1.17100211e-01f,
       -9.37240275e-03f};
   return dspbr_fit_detail_clamp01(dspbr_fit_detail_dual(q, roughness, cos_theta, dspbr_fit_detail_u(cos_theta, roughness)));
 }
@@ -172,7 +172,7 @@ inline float dspbr_fit_sheen_E(float cos_theta, float alpha_b) {
       1.29841385e-01f, 1.61801587e+00f, 4.06732562e-01f, 3.40906907e-01f, 6.67320465e-01f, 9.47645205e-01f,
       1.24987644e-01f, -3.70643826e+00f, -3.49092533e+00f, -2.37380939e+00f, -2.67722731e+00f, -1.23102286e+00f,
       -2.89147489e-01f, 1.06166827e+01f, 3.97181744e+00f, 3.64341983e+00f, 1.80247213e+00f, -1.39607888e-01f,
-      -7.38017452e-04f, -4.60771482e+00f, -4.48842267e-01f, -9.27859015e-01f, 5.43638787e-01f, 5.23745870e-01f,
+      -7.38017453e-04f, -4.60771482e+00f, -4.48842267e-01f, -9.27859015e-01f, 5.43638787e-01f, 5.23745870e-01f,
       5.09188770e-01f, 5.06308827e-01f, -1.33608604e-01f, -2.75457538e-01f, -3.35315641e-01f, 2.54645556e-01f,
       -1.58231260e-01f};
   const float a = alpha_b < 0.00390625f ? 0.00390625f : (alpha_b > 1.0f ? 1.0f : alpha_b);

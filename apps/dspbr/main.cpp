@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "baseline_libm.h"
 #include "commands.h"
 #include "report_script.h"
 #include "dspbr/io/message.h"
@@ -119,7 +120,12 @@ int run_full(char** argv) {
 
 int main(int argc, char** argv) {
 #ifdef DSPBR_FRONT
-  if (!front_runs(argc, argv)) return run_full(argv);
+  if (!front_runs(argc, argv)) {
+    if (dspbr::cli::wants_baseline_libm(argc, argv)) dspbr::cli::set_baseline_libm_environment();
+    return run_full(argv);
+  }
+#else
+  dspbr::cli::run_on_baseline_libm(argc, argv);
 #endif
   CLI::App app{"dspbr: reference toolchain for the Enterprise PBR Shading Model (DSPBR 2025x)"};
   app.require_subcommand(1);

@@ -18,7 +18,7 @@ struct SheenLambdaFitSettings {
   double alpha_min = 1.0 / 256;  // r_b = 1/16; below it Lambda ~ 1/sqrt(alpha) grows without bound
   double mu_min = 1e-3, mu_max = 0.999;
   int n_alpha = 26, n_mu = 40;   // fit grid (geometric in alpha_b, cosine_grid in mu)
-  MinimaxOptions minimax{8, 500, 1e-3};
+  MinimaxOptions minimax{16, 2000, 1e-3};  // docs/design/fits.md: the rich form converges slowly
 };
 
 // Documented starting points of the Ceres fits.
