@@ -82,7 +82,7 @@ AlbedoSlice AlbedoSlice::E_m(const LutSet& luts, double roughness) {
   s.kind_ = Kind::Renderer;
   const WarpedTable& t = luts.renderer.ggx_E;
   s.table_ = Padded::of(t.slice(t.axes[0].warp.to_grid(r)));
-  s.table_.lo = 0, s.table_.hi = 1;
+  s.table_.range = kEmRange;
   s.alpha_ = r * r;
   uint64_t h = mix(uint64_t(s.table_.n), uint64_t(s.table_.warp.kind));
   for (double v : {s.table_.warp.p, s.table_.warp.lo, s.alpha_}) h = mix(h, bits(v));
@@ -118,7 +118,7 @@ AlbedoSlice AlbedoSlice::E_sheen(const LutSet& luts, double alpha_b, bool altern
   s.kind_ = Kind::Renderer;
   const WarpedTable& t = alternative ? luts.renderer.sheen_ash_E : luts.renderer.sheen_E;
   s.table_ = Padded::of(t.slice(t.axes[0].warp.to_grid(alpha_b)));
-  s.table_.lo = 0;
+  s.table_.range = kSheenERange;
   return s;
 }
 

@@ -65,8 +65,8 @@ class AlbedoSlice {
     int n = 0;
     Warp warp;
     Encoding encoding = Encoding::Value;
-    // The decoded value's range, as RendererLuts clamps the same lookup (E_m: [0, 1]; E_b: >= 0).
-    double lo = -HUGE_VAL, hi = HUGE_VAL;
+    // The decoded value's range, as RendererLuts clamps the same lookup (kEmRange, kSheenERange).
+    AlbedoRange range{-HUGE_VAL, HUGE_VAL};
     static Padded of(const WarpedTable& t);
     // The cubic of cell i at fraction f, not decoded.
     double cubic(int i, double f) const { return cubic_at(c.data() + 4 * size_t(i), f); }
@@ -75,7 +75,7 @@ class AlbedoSlice {
       int i;
       double f;
       grid_cell(x, n, &i, &f);
-      return std::clamp(decode(encoding, cubic(i, f)), lo, hi);
+      return range.clamp(decode(encoding, cubic(i, f)));
     }
   };
   // RendererGlass: the table cut at the roughness (WarpedTable::slice_middle), its rows

@@ -170,15 +170,15 @@ double RendererLuts::E_base_avg(double roughness, double f0) const {
   return f0 * e_avg + (1.0 - f0) * B_avg(roughness) + base_fresnel_ms(f0, e_avg) * missing;
 }
 
-// At least 0, as beta (the cubic undershoots where E_b nears 0, by 1.3e-5; docs/luts.md "Limits").
+// At least 0, as beta (the cubic undershoots where E_b nears 0, by 1.3e-5).
 double RendererLuts::E_sheen(double cos_theta, double alpha_b) const {
-  return std::max(0.0,
-                  sheen_E.lookup_grid(sheen_E.axes[0].warp.to_grid(alpha_b), sheen_E.axes[1].warp.to_grid(cos_theta)));
+  return kSheenERange.clamp(
+      sheen_E.lookup_grid(sheen_E.axes[0].warp.to_grid(alpha_b), sheen_E.axes[1].warp.to_grid(cos_theta)));
 }
 
 double RendererLuts::E_sheen_ash(double cos_theta, double alpha_b) const {
-  return std::max(0.0, sheen_ash_E.lookup_grid(sheen_ash_E.axes[0].warp.to_grid(alpha_b),
-                                               sheen_ash_E.axes[1].warp.to_grid(cos_theta)));
+  return kSheenERange.clamp(
+      sheen_ash_E.lookup_grid(sheen_ash_E.axes[0].warp.to_grid(alpha_b), sheen_ash_E.axes[1].warp.to_grid(cos_theta)));
 }
 
 double RendererLuts::E_glass(double cos_theta, double roughness, double ior, bool inside) const {

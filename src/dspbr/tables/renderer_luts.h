@@ -36,12 +36,22 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "dspbr/tables/table_registry.h"
 #include "dspbr/tables/warped_table.h"
 
 namespace dspbr {
+
+// The range a lookup clamps its decoded value to: the Catmull-Rom cubic over- and undershoots
+// where a table nears its bounds (docs/luts.md, "Limits"). NaN stays NaN (std::clamp).
+struct AlbedoRange {
+  double lo, hi;
+  double clamp(double x) const { return std::clamp(x, lo, hi); }
+};
+inline constexpr AlbedoRange kEmRange{0.0, 1.0};                                          // E_m
+inline constexpr AlbedoRange kSheenERange{0.0, std::numeric_limits<double>::infinity()};  // E_b (both sheens)
 
 struct RendererLuts {
   WarpedTable ggx_E, ggx_beta, ggx_E_avg, ggx_B_avg, sheen_E, sheen_ash_E;
@@ -102,7 +112,7 @@ inline double RendererLuts::E_m(double cos_theta, double roughness) const {
   const double r = std::clamp(roughness, 0.0, 1.0);
   const double x0 = ggx_E.axes[0].warp.to_grid(r);
   const double x1 = ggx_E.axes[1].warp.to_grid(cos_theta, r * r);
-  return std::clamp(decode(ggx_E.encoding, ggx_E.interpolate_2d(x0, x1)), 0.0, 1.0);  // E_m in [0, 1]
+  return kEmRange.clamp(decode(ggx_E.encoding, ggx_E.interpolate_2d(x0, x1)));
 }
 
 // The physical coordinates (one per axis, slowest first; unused ones 0) of sample `index` of a
