@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "report_script.h"
 #include "dspbr/io/json_write.h"
+#include "dspbr/conformance/vector_set.h"
 
 namespace dspbr::cli {
 
@@ -14,6 +15,35 @@ void write_text(const std::string& path, const std::string& text) {
   f << text;
   f.close();
   if (!f) throw std::runtime_error("cannot write " + path);
+}
+
+void add_tables_option(CLI::App* cmd, std::string& tables) {
+  cmd->add_option("--tables", tables,
+                  "Judge against the reference reading this table set: renderer (the vectors as written), published "
+                  "(the published tables, multilinear), fits (the LUT-free fits), uncompensated (no energy "
+                  "compensation); for an implementation that ships them (docs/conformance.md)")
+      ->capture_default_str();
+}
+
+conformance::DemoTables parse_tables_option(const std::string& tables) {
+  try {
+    return conformance::parse_demo_tables(tables);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--tables: ") + e.what());
+  }
+}
+
+void expect_with_tables(conformance::DemoTables tables, std::vector<conformance::Vector>& vectors,
+                        nlohmann::ordered_json& provenance, const std::string& vectors_file) {
+  provenance["tables"] = conformance::demo_tables_name(tables);
+  if (tables == conformance::DemoTables::Renderer) return;
+  std::fprintf(stderr, "conformance: expectations of %zu vectors with the %s tables ...\n", vectors.size(),
+               conformance::demo_tables_name(tables));
+  try {
+    conformance::expect_with_tables(vectors, conformance::demo_table_set(tables));
+  } catch (const std::runtime_error& e) {
+    throw UsageError(vectors_file + ": " + e.what());
+  }
 }
 
 void judge_results(const Judgement& j, OutputFolder& out, const std::vector<conformance::Vector>& vectors,

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dspbr/conformance/checker.h"
+#include "dspbr/conformance/demo_tables.h"
 #include "dspbr/conformance/results.h"
 #include "dspbr/conformance/vector.h"
 #include "dspbr/io/output_folder.h"
@@ -28,6 +29,16 @@ struct Judgement {
   std::string python, script;    // script "": report.json alone (--no-html)
   conformance::Selection selection;
 };
+
+// --tables of `check` and `run`: the table set the vectors' expectations are computed with
+// (conformance/demo_tables.h). The default, renderer, judges against the vectors as written.
+void add_tables_option(CLI::App* cmd, std::string& tables);
+// Before any work: the set --tables names (UsageError naming the option when it names none).
+conformance::DemoTables parse_tables_option(const std::string& tables);
+// With a set other than renderer: the vectors' expectations recomputed with it
+// (conformance::expect_with_tables; a progress line on stderr), recorded in provenance["tables"].
+void expect_with_tables(conformance::DemoTables tables, std::vector<conformance::Vector>& vectors,
+                        nlohmann::ordered_json& provenance, const std::string& vectors_file);
 
 // Writes the report into `out` (the run's folder, interrupt_cleanup.h; the caller may have written
 // other files into its staging folder) and commits it.

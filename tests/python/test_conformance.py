@@ -46,6 +46,23 @@ def test_published_tables_fail_where_tables_are_read(vectors, tmp_path):
     assert mirror and all(v["verdict"] == "PASS" for v in mirror)
 
 
+def test_tables_option_judges_against_those_tables(vectors, tmp_path):
+    # The published tables' results fail as written (test above) and pass against the reference
+    # reading the same tables; the report says which tables; an unknown set is refused up front.
+    path = tmp_path / "results.json"
+    dc.write_results(dc.run(vectors, lambda v: dc.reference_eval(v, tables="published")), path)
+    code, out, err = run_cli("conformance", "check", vectors, path, "--no-html", "--tables", "published",
+                             "--out", tmp_path / "report")
+    assert code == 0, out + err
+    assert "with the published tables" in err
+    report = json.loads((tmp_path / "report" / "report.json").read_text())
+    assert report["provenance"]["tables"] == "published"
+    code, _, err = run_cli("conformance", "check", vectors, path, "--no-html", "--tables", "publishd",
+                           "--out", tmp_path / "bad")
+    assert code == 2 and err.startswith("dspbr: error: --tables:"), err
+    assert not (tmp_path / "bad").exists()
+
+
 def test_bad_values_name_the_vector(vectors):
     with pytest.raises(ValueError, match=r"vector 'plain_metal/gold-r10/00': f_cos\[1\] must be a finite number, got nan"):
         dc.run(vectors, lambda v: [0.0, float("nan"), 0.0])

@@ -546,6 +546,27 @@ Evaluation evaluate(const Vector& v, const LutSet& luts) {
   return {b.eval(v.v, v.l) * std::abs(v.l.z), b.pdf(v.v, v.l)};
 }
 
+void expect_with_tables(std::vector<Vector>& vectors, const LutSet& luts) {
+  // Each vector's material is built once per vector (as evaluate does): independent, so parallel.
+  tbb::parallel_for(std::size_t(0), vectors.size(), [&](std::size_t i) {
+    Vector& v = vectors[i];
+    try {
+      const Material m = vector_material(v);
+      const MaterialBsdf b(m, luts, vector_options(v), active_components(m));
+      v.f_cos = b.eval(v.v, v.l) * std::abs(v.l.z);
+      v.pdf = b.pdf(v.v, v.l);
+      v.delta = delta_lobes(b, v.v);
+      if (v.albedo) {  // the finer of generate's two quadratures, with the delta lobes
+        Rgb a = albedo_quadrature(b, v.v, 32, 128);
+        for (const DeltaExpectation& d : v.delta) a = a + d.value;
+        v.albedo = a;
+      }
+    } catch (const std::exception& e) {
+      throw std::runtime_error("vector '" + v.id + "': " + e.what());
+    }
+  });
+}
+
 std::vector<Vector> generate_vectors(const GenerateSettings& s) {
   std::vector<Case> cases = builtin_cases();
   if (!s.scenes_dir.empty()) {

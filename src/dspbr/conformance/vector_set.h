@@ -56,4 +56,11 @@ struct Evaluation {
 };
 Evaluation evaluate(const Vector& v, const LutSet& luts);
 
+// The vectors' expectations as the reference computes them reading `luts` instead of the renderer
+// tables (`conformance check --tables`): f cos, pdf, the delta lobes and, where a vector has one,
+// the albedo (the finer of generate's two quadratures). The tolerances stay: their table part
+// (kTableError) then allows the implementation's lookups that far from `luts`' own.
+// Throws std::runtime_error for an invalid instance or options.
+void expect_with_tables(std::vector<Vector>& vectors, const LutSet& luts);
+
 }  // namespace dspbr::conformance
