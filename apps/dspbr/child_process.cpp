@@ -23,8 +23,14 @@ ChildExit run_child(const std::vector<std::string>& argv, const std::string& log
     posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
   }
+  // Its own process group: an interrupt stops the child and what it starts (interrupt_cleanup.h).
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attr, 0);
   pid_t pid = 0;
-  r.error = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+  r.error = posix_spawnp(&pid, args[0], &actions, &attr, args.data(), environ);
+  posix_spawnattr_destroy(&attr);
   posix_spawn_file_actions_destroy(&actions);
   if (r.error != 0) return r;
   r.started = true;

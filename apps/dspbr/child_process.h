@@ -1,8 +1,9 @@
 // Running another program from a command (the report scripts, glslangValidator): posix_spawnp
 // with the arguments as given (no shell), the output to the terminal or a file, and the child
 // registered with the interrupt handling (interrupt_cleanup.h): SIGINT or SIGTERM to dspbr stops
-// the child with the same signal before the run's folder is discarded, so that no child outlives
-// an interrupted run (std::system ignored SIGINT in the caller while the child ran).
+// the child and every process it started (its own process group) before the run's folder is
+// discarded, so that nothing outlives an interrupted run (std::system ignored SIGINT in the caller
+// while the child ran; the report script's workers outlived a signal sent to it alone).
 #pragma once
 #include <string>
 #include <vector>

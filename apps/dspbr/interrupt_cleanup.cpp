@@ -15,6 +15,7 @@
 #include <optional>
 #include <stdexcept>
 #include <thread>
+#include <time.h>
 
 namespace dspbr::cli {
 
@@ -33,6 +34,26 @@ extern "C" void on_signal(int sig) {
   }
 }
 
+// Stops a child started in its own process group (child_process.cpp) and whatever it started: the
+// group gets `sig`; the child has up to 2 s to end, then the group gets SIGKILL, and SIGKILL again
+// after the child ended, for members that ignore `sig` (the report script's worker processes,
+// which held the caller's output pipe and slept forever once their parent was gone). The group's
+// id stays reserved while a member lives, so the last kill reaches no other process.
+void stop_child_group(pid_t child, int sig) {
+  ::kill(-child, sig);
+  bool ended = false;
+  for (int i = 0; i < 200 && !ended; ++i) {  // 200 x 10 ms
+    const pid_t w = ::waitpid(child, nullptr, WNOHANG);
+    ended = w == child || (w < 0 && errno == ECHILD);  // ECHILD: the waiting thread reaped it
+    if (!ended) {
+      const timespec ten_ms{0, 10 * 1000 * 1000};
+      ::nanosleep(&ten_ms, nullptr);
+    }
+  }
+  ::kill(-child, SIGKILL);
+  if (!ended) ::waitpid(child, nullptr, 0);
+}
+
 }  // namespace
 
 struct InterruptCleanup::State {
@@ -49,10 +70,7 @@ struct InterruptCleanup::State {
     while ((n = ::read(pipe_read, &sig, 1)) < 0 && errno == EINTR) {
     }
     if (n != 1 || sig == 0) return;  // closed or told to stop
-    if (const pid_t child = g_child.load(); child > 0) {  // stop the child first: it may write into the staging folder
-      ::kill(child, sig);
-      ::waitpid(child, nullptr, 0);
-    }
+    if (const pid_t child = g_child.load(); child > 0) stop_child_group(child, sig);  // it may write into the staging folder
     const std::lock_guard<std::mutex> lock(opening);  // wait for a folder being created
     const std::string what = out ? out->discard() : "nothing was written";
     std::fprintf(stderr, "dspbr: interrupted (%s): %s\n", sig == SIGINT ? "SIGINT" : "SIGTERM", what.c_str());

@@ -31,8 +31,9 @@ class InterruptCleanup {
   std::unique_ptr<State> state_;
 };
 
-// The child process a command is waiting for (child_process.h), 0 for none: an interrupt sends it
-// the same signal and waits for it before the cleanup.
+// The child process a command is waiting for (child_process.h, which starts it as the leader of
+// its own process group), 0 for none: an interrupt sends its group the same signal, SIGKILL
+// after 2 s and once it ended, and waits for it before the cleanup.
 void watch_child(pid_t pid);
 
 }  // namespace dspbr::cli
