@@ -2,18 +2,21 @@
 // one-line error and exit status 2, or, for legal input at the edge, the answer computed another
 // way (the same direction written with small numbers).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "dspbr/conformance/results.h"
 #include "dspbr/gltf/gltf_file.h"
 #include "dspbr/gltf/gltf_material.h"
+#include "dspbr/io/atomic_file.h"
 #include "dspbr/io/read_file.h"
 #include "dspbr/limits.h"
 #include "dspbr/lutgen/lut_io.h"
@@ -363,4 +366,44 @@ TEST(Hostile, GltfMaterialsBeyondTheLimitAreRefused) {
                                          std::to_string(limit) + " (docs/limits.md)");
   }
   EXPECT_EQ(dspbr::gltf::map_materials(gltf(limit)).size(), limit);
+}
+
+// An output path that names a FIFO, a device or a link to one is refused before anything is
+// written and keeps its type (before: rename(2) replaced it by a regular file, /dev/full included
+// when run as root); a link to a regular file is still replaced by the new file, not written through.
+TEST(Hostile, OutputsNeverReplaceAFifoOrADevice) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(::testing::TempDir()) / "hostile_special_outputs";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path fifo = dir / "fifo", to_device = dir / "null", to_file = dir / "link", file = dir / "file";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  fs::create_symlink("/dev/null", to_device);
+  std::ofstream(file) << "old";
+  fs::create_symlink(file, to_file);
+  for (const fs::path& p : {fifo, to_device}) {
+    try {
+      dspbr::write_text_atomically(p.string(), "new");
+      ADD_FAILURE() << p << " was written";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "cannot write '" + p.string() +
+                                           "': it exists and is not a regular file (a folder, FIFO, device, socket "
+                                           "or a link to one); name a file path");
+    }
+  }
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo)));
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(to_device)));
+  EXPECT_TRUE(fs::is_character_file(fs::status("/dev/null")));
+  dspbr::write_text_atomically(to_file.string(), "new");  // the link is replaced, its target untouched
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(to_file)));
+  std::ifstream old(file);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(old), {}), "old");
+  // The CLI refuses it before any work, naming the option (exit 2).
+  const ToolRun run = run_dspbr("conformance reference no-such-vectors.json --out " + fifo.string());
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("--out: cannot write '" + fifo.string() + "': it exists and is not a regular file"),
+            std::string::npos)
+      << run.output;
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo)));
+  fs::remove_all(dir);
 }

@@ -133,12 +133,7 @@ void run_check(const CheckArgs& a) {
 // do not depend on the tables are left out): the demonstrations' implementations.
 void run_reference(const ReferenceArgs& a) {
   check_output_file(a.out, "--out");
-  conformance::DemoTables tables;
-  try {
-    tables = conformance::parse_demo_tables(a.tables);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--tables: ") + e.what());
-  }
+  const conformance::DemoTables tables = parse_tables_option(a.tables);
   std::vector<conformance::Vector> vectors;
   try {
     vectors = conformance::read_vectors(a.vectors);

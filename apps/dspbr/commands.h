@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "dspbr/io/atomic_file.h"
 #include "dspbr/limits.h"
 #include "dspbr/io/decimal.h"
 #include "dspbr/io/message.h"
@@ -70,6 +71,11 @@ inline void check_output_file(const std::string& path, const std::string& option
   if (!fs::is_directory(folder, ec))
     throw UsageError(option + ": the folder '" + quote_input(folder.string()) + "' does not exist (create it first)");
   if (fs::is_directory(p, ec)) throw UsageError(option + ": '" + quote_input(path) + "' is a folder");
+  try {
+    require_replaceable(path);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(option + ": " + e.what());
+  }
 }
 
 // Seeds: any 64-bit unsigned integer.

@@ -13,8 +13,22 @@ namespace dspbr {
 
 namespace fs = std::filesystem;
 
+void require_replaceable(const std::string& path) {
+  const fs::path target(path);
+  std::error_code ec;
+  const fs::file_status own = fs::symlink_status(target, ec);
+  if (ec || !fs::exists(own) || fs::is_regular_file(own)) return;
+  if (fs::is_symlink(own)) {
+    const fs::file_status to = fs::status(target, ec);
+    if (ec || !fs::exists(to) || fs::is_regular_file(to)) return;
+  }
+  throw std::runtime_error("cannot write '" + path + "': it exists and is not a regular file (a folder, FIFO, device, "
+                           "socket or a link to one); name a file path");
+}
+
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
   const fs::path target(path);
+  require_replaceable(path);
   const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
   fs::create_directories(parent, ec);
@@ -30,6 +44,12 @@ void write_atomically(const std::string& path, const std::function<void(const st
   };
   try {
     write(tmp.string());
+  } catch (...) {
+    clean();
+    throw;
+  }
+  try {
+    require_replaceable(path);  // again: it may have appeared while the file was written
   } catch (...) {
     clean();
     throw;

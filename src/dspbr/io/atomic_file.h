@@ -9,8 +9,16 @@
 namespace dspbr {
 
 // Calls write(tmp_path) and renames tmp_path to path when it returns normally; removes the
-// temporary file and folder and rethrows when it throws. Creates missing parent folders.
+// temporary file and folder and rethrows when it throws. Creates missing parent folders. Throws
+// std::runtime_error, before writing, when path exists and is not a regular file or a link to one
+// (a FIFO or a device would otherwise be replaced by a regular file).
 void write_atomically(const std::string& path, const std::function<void(const std::string& tmp_path)>& write);
+
+// Throws std::runtime_error ("cannot write 'path': it exists and is not a regular file ...") when
+// path exists and is neither a regular file nor a link to one or to nothing: a FIFO, a device, a
+// socket, a folder or a link to one of them (/dev/stdout) would be replaced by the rename. A link
+// to a regular file, or a dangling one, is replaced (never written through).
+void require_replaceable(const std::string& path);
 
 // Writes a text file atomically.
 void write_text_atomically(const std::string& path, const std::string& text);
