@@ -37,3 +37,15 @@ def test_bad_input(tmp_path):
     missing = str(tmp_path / "missing.gltf")
     assert "missing.gltf" in cli_error("shader", "--scene", missing, "--out", str(tmp_path / "c"))
     assert not (tmp_path / "a").exists() and not (tmp_path / "c").exists()
+
+
+def test_a_scene_name_cannot_inject_code(tmp_path):
+    # The scene's file name goes into a comment of the header: a newline in it must not end the
+    # comment (before, a file named "x\n#error injected\n.gltf" put an #error line into the header).
+    scene = os.path.join(SOURCE_DIR, "data", "dspbr", "scenes", "sphere", "09-sheen-dielectric.gltf")
+    hostile = tmp_path / "x\n#error injected\n\\.gltf"
+    hostile.write_bytes(open(scene, "rb").read())
+    (tmp_path / "sphere.bin").write_bytes(open(os.path.join(os.path.dirname(scene), "sphere.bin"), "rb").read())
+    _, text = header(tmp_path, "--scene", str(hostile))
+    assert all(line.startswith(("//", "#ifndef", "#define", "#endif")) for line in text.splitlines()), text
+    assert "x\\x0a#error injected\\x0a\\.gltf" in text.splitlines()[0]

@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "dspbr/component.h"
+#include "dspbr/io/message.h"
 #include "dspbr/tables/renderer_luts.h"
 #include "dspbr/tables/table_registry.h"
 #include "dspbr/version.h"
@@ -43,7 +44,9 @@ std::string shader_specialization_header(uint32_t components, const std::string&
     std::string& list = (components & c) ? kept : dropped;
     list += (list.empty() ? "" : ", ") + std::string(component_name(Component(c)));
   }
-  std::string h = "// dspbr_specialization.h: the DSPBR shader library specialised for " + source + ".\n";
+  // source may hold a file name: every byte outside printable ASCII written \xNN, so that it
+  // cannot end the comment (a newline); the line ends in '.', so a backslash cannot continue it.
+  std::string h = "// dspbr_specialization.h: the DSPBR shader library specialised for " + quote_input(source) + ".\n";
   h += "// Written by `dspbr shader` (dspbr " + std::string(project_version()) + "); include it before dspbr.h, dspbr.glsl or\n";
   h += "// dspbr.hlsl (docs/renderer.md, \"Only what a scene needs\").\n";
   h += "// Compiled in: " + (kept.empty() ? std::string("(none)") : kept) + ".\n";
