@@ -269,6 +269,16 @@ TEST(Hostile, TableAxisWithAnEmptyRangeIsRefused) {
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "'range.json': tables.GGX_E_avg.axes[0]: lo must be below hi");
   }
+  // Found by this stop's fresh tester: lo -1e308, hi 1e308 was read, and validate failed only at the
+  // end on a NaN error figure.
+  const std::string wide =
+      R"({"format": "dspbr_luts", "version": 1, "tables": {"GGX_E_avg": {"axes": [{"name": "roughness", "size": 2, "lo": -1e308, "hi": 1e308, "grid": "cell"}], "values": [1, 1]}}})";
+  try {
+    dspbr::read_lut_json_text(wide, "wide.json");
+    ADD_FAILURE() << "accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "'wide.json': tables.GGX_E_avg.axes[0]: hi - lo must be a finite number");
+  }
 }
 
 // Issue 45 (#1): the JSON readers build the document with nlohmann's plain SAX parser (linear in
@@ -366,6 +376,24 @@ TEST(Hostile, GltfMaterialsBeyondTheLimitAreRefused) {
                                          std::to_string(limit) + " (docs/limits.md)");
   }
   EXPECT_EQ(dspbr::gltf::map_materials(gltf(limit)).size(), limit);
+}
+
+// Found by this stop's fresh tester: emissiveFactor 1e308 times emissiveStrength 1e308 (each
+// legal) made emissionColor infinite; `scene analyze --parameters` printed it as null, exit 0.
+TEST(Hostile, GltfEmissionBeyondTheLargestNumberIsRefused) {
+  const std::string s =
+      R"({"asset": {"version": "2.0"}, "materials": [{"name": "hot", "emissiveFactor": [1e308, 1e308, 1e308],)"
+      R"( "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 1e308}}}]})";
+  try {
+    dspbr::gltf::map_materials(dspbr::gltf::parse_gltf(std::vector<std::uint8_t>(s.begin(), s.end()), "e.gltf"));
+    ADD_FAILURE() << "an infinite emission was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "e.gltf: materials[0] 'hot': emissiveFactor x KHR_materials_emissive_strength.emissiveStrength is beyond the "
+              "largest number");
+  }
+  const ToolRun run = run_dspbr("scene analyze --parameters " + temp_file("hot.gltf", s));
+  EXPECT_EQ(run.status, 2) << run.output;
 }
 
 // An output path that names a FIFO, a device or a link to one is refused before anything is

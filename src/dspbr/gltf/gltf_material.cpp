@@ -131,6 +131,8 @@ class Mapper {
     const auto emissive = numbers<3>(mat_, "emissiveFactor", {0, 0, 0}, "");
     texture(mat_, "emissiveTexture", "", {"emissionColor"});
     m.emissionColor = rgb(emissive) * strength;
+    if (!(std::isfinite(m.emissionColor.r) && std::isfinite(m.emissionColor.g) && std::isfinite(m.emissionColor.b)))
+      fail("emissiveFactor x KHR_materials_emissive_strength.emissiveStrength is beyond the largest number");
     if (const Json* e = ext("3DS_materials_emission")) {
       const std::string p = "3DS_materials_emission.";
       m.emissionValue = number(*e, "emissionValue", 0.0, p);

@@ -1,5 +1,6 @@
 #include "dspbr/tables/table_files.h"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -60,6 +61,8 @@ std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::strin
         a.lo = jf::number_member(axes[d], "lo", at);
         a.hi = jf::number_member(axes[d], "hi", at);
         if (!(a.lo < a.hi)) throw std::runtime_error(at + ": lo must be below hi");
+        // The lookups divide by hi - lo: a span beyond the largest double made every cell index NaN.
+        if (!std::isfinite(a.hi - a.lo)) throw std::runtime_error(at + ": hi - lo must be a finite number");
         cells *= size_t(a.size);
         if (cells > limits::kTableCells)
           throw std::runtime_error(where + ": more than " + std::to_string(limits::kTableCells) + " cells");
