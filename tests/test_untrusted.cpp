@@ -314,3 +314,23 @@ TEST(Untrusted, ControlCharactersInAFileNameAreEscaped) {
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_EQ(r.output, "dspbr: error: " + dir.string() + "/a\\x0ab\\x1b[31m.gltf does not exist\n");
 }
+
+// Names read from files reach the terminal escaped too (found by this stop's fresh tester: `params
+// list`, `params show`, `params check` and `conformance check`'s summary printed them raw: ESC
+// sequences, forged lines).
+TEST(Untrusted, ControlCharactersInNamesFromFilesAreEscaped) {
+  const fs::path dir = fresh("names_in_files");
+  const std::string evil = "e\\u001b[31mvil\\nforged";  // JSON text: ESC and a newline
+  const fs::path params = dir / "params.json";
+  write(params, R"({"materials": {")" + evil + R"(": {"name": ")" + evil +
+                    R"(", "parameters": {"roughness": {"type": "float", "default": 0.5}}}}})");
+  const fs::path instance = dir / "instance.json";
+  write(instance, R"({"material": ")" + evil + R"(", "values": {}})");
+  for (const std::string& cmd : {"params list " + params.string(), "params show " + params.string() + " \"$(printf 'e\\033[31mvil\\nforged')\"",
+                                 "params check --params " + params.string() + " " + instance.string()}) {
+    const ToolRun r = run_dspbr(cmd);
+    EXPECT_EQ(r.status, 0) << cmd << ": " << r.output;
+    EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << cmd << ": " << r.output;
+    EXPECT_NE(r.output.find("e\\x1b[31mvil\\x0aforged"), std::string::npos) << cmd << ": " << r.output;
+  }
+}

@@ -44,20 +44,20 @@ std::string range_text(const ParamDef& p) {
 }
 
 void print_material(const MaterialDef& m) {
-  std::printf("%s", m.id.c_str());
-  if (!m.name.empty()) std::printf(" \"%s\"", m.name.c_str());
-  for (const auto& base : m.inherits) std::printf(" <- %s", base.c_str());
+  std::printf("%s", one_line(m.id).c_str());
+  if (!m.name.empty()) std::printf(" \"%s\"", one_line(m.name).c_str());
+  for (const auto& base : m.inherits) std::printf(" <- %s", one_line(base).c_str());
   std::printf("\n");
   bool first = true;
   std::string group;
   for (const auto& p : m.parameters) {
     if (first || p.group != group) {
-      std::printf("  [%s]\n", p.group.empty() ? "(no group)" : p.group.c_str());
+      std::printf("  [%s]\n", p.group.empty() ? "(no group)" : one_line(p.group).c_str());
       group = p.group;
       first = false;
     }
     std::printf("    %-3s %-28s %-8s default %-24s %-28s%s%s\n",
-                p.ui_order < 0 ? "-" : std::to_string(p.ui_order).c_str(), p.id.c_str(), param_type_name(p.type),
+                p.ui_order < 0 ? "-" : std::to_string(p.ui_order).c_str(), one_line(p.id).c_str(), param_type_name(p.type),
                 p.default_value.dump().c_str(), range_text(p).c_str(), p.uniform ? " uniform" : "",
                 p.hidden ? " (hidden)" : "");
   }
@@ -94,8 +94,8 @@ void add_params_command(CLI::App& app) {
     }
     for (const auto& id : defs.material_ids()) {
       const auto& m = defs.material(id);
-      std::printf("%-12s %-32s %s\n", id.c_str(), m.name.c_str(),
-                  m.inherits.empty() ? "" : ("inherits " + m.inherits.front()).c_str());
+      std::printf("%-12s %-32s %s\n", one_line(id).c_str(), one_line(m.name).c_str(),
+                  m.inherits.empty() ? "" : one_line("inherits " + m.inherits.front()).c_str());
     }
   });
 
@@ -139,7 +139,7 @@ void add_params_command(CLI::App& app) {
         doc = read_json_file(path, "material instance file", limits::kDocumentBytes);
       } catch (const std::exception& e) {
         ++bad;
-        std::fprintf(stderr, "%s\n", e.what());  // names the file
+        std::fprintf(stderr, "%s\n", one_line(e.what()).c_str());  // names the file
         continue;
       }
       std::vector<std::string> problems;
@@ -154,10 +154,10 @@ void add_params_command(CLI::App& app) {
         problems.push_back(e.what());
       }
       if (problems.empty()) {
-        std::printf("%s: ok (material '%s')\n", path.c_str(), type.c_str());
+        std::printf("%s\n", one_line(path + ": ok (material '" + type + "')").c_str());
       } else {
         ++bad;
-        for (const auto& p : problems) std::fprintf(stderr, "%s: %s\n", path.c_str(), p.c_str());
+        for (const auto& p : problems) std::fprintf(stderr, "%s\n", one_line(path + ": " + p).c_str());
       }
     }
     if (bad) throw UsageError(std::to_string(bad) + " of " + std::to_string(opt->instances.size()) +

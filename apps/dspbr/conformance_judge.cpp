@@ -66,13 +66,13 @@ void judge_results(const Judgement& j, OutputFolder& out, const std::vector<conf
   std::printf("  %-28s %12s %6s %6s %6s %12s  %s\n", "group", "verdict", "PASS", "FAIL", "N/S", "worst ratio",
               "worst vector");
   for (const auto& g : report["groups"])
-    std::printf("  %-28s %12s %6d %6d %6d %12.3g  %s\n", g["name"].get<std::string>().c_str(),
+    std::printf("  %-28s %12s %6d %6d %6d %12.3g  %s\n", one_line(g["name"].get<std::string>()).c_str(),
                 g["verdict"].get<std::string>().c_str(), g["passed"].get<int>(), g["failed"].get<int>(),
-                g["not_supplied"].get<int>(), g["worst_ratio"].get<double>(), g["worst_id"].get<std::string>().c_str());
+                g["not_supplied"].get<int>(), g["worst_ratio"].get<double>(), one_line(g["worst_id"].get<std::string>()).c_str());
   for (const auto& [name, q] : report["quantities"].items())
     if (q["not_judged"].get<int>() > 0)
       std::printf("  NOT JUDGED: %s of %d vectors (not in %s)\n", name.c_str(), q["not_judged"].get<int>(),
-                  j.results.c_str());
+                  one_line(j.results).c_str());
   if (!check.passed())
     throw std::runtime_error(std::to_string(check.failed) + " of " + std::to_string(check.judged()) +
                              " judged conformance vectors fail (details in " + j.out + ")");
