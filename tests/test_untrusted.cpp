@@ -199,7 +199,10 @@ TEST(Untrusted, SceneAnalysisWritesNoNonFiniteNumber) {
   const ToolRun r = run_dspbr("scene analyze --json --parameters " + path);
   EXPECT_NE(r.status, 0) << r.output;
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
-  EXPECT_NE(r.output.find("is not finite (NaN or infinity); nothing written"), std::string::npos) << r.output;
+  // refused where it is read (before: when the JSON was written), naming the file and the material
+  EXPECT_NE(r.output.find("bright.gltf: materials[0] 'm': emissiveFactor x KHR_materials_emissive_strength"),
+            std::string::npos)
+      << r.output;
   EXPECT_EQ(r.output.find("null"), std::string::npos) << r.output;
   doc["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = 1;
   write(path, doc.dump());
@@ -333,4 +336,13 @@ TEST(Untrusted, ControlCharactersInNamesFromFilesAreEscaped) {
     EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << cmd << ": " << r.output;
     EXPECT_NE(r.output.find("e\\x1b[31mvil\\x0aforged"), std::string::npos) << cmd << ": " << r.output;
   }
+  // A NUL byte no longer ends the message early (it ended "unknown material 'generic").
+  const fs::path nul = dir / "nul.json";
+  write(nul, R"({"material": "generic\u0000x", "values": {"x\u0000y": 1}})");
+  const ToolRun e = run_dspbr("eval --view 0,0,1 --light 0,0,1 --material " + nul.string());
+  EXPECT_EQ(e.status, 2) << e.output;
+  EXPECT_NE(e.output.find("unknown material 'generic\\x00x' (built-in"), std::string::npos) << e.output;
+  write(nul, R"({"material": "generic", "values": {"x\u0000y": 1}})");
+  const ToolRun c = run_dspbr("params check " + nul.string());
+  EXPECT_NE(c.output.find("unknown parameter 'x\\x00y' for material 'generic'"), std::string::npos) << c.output;
 }

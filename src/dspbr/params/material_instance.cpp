@@ -163,11 +163,11 @@ std::vector<std::string> check_material_instance(const ParamDefs& defs, const Js
       std::vector<std::string> ids;
       for (const ParamDef& p : m.parameters)
         if (!p.hidden) ids.push_back(p.id);
-      problems.push_back("unknown parameter '" + id + "' for material '" + type + "'" + did_you_mean(id, ids));
+      problems.push_back("unknown parameter " + in_quotes(id) + " for material " + in_quotes(type) + did_you_mean(id, ids));
       continue;
     }
     if (d->hidden) {
-      problems.push_back("parameter '" + id + "' is hidden in material '" + type + "' and must not be set");
+      problems.push_back("parameter " + in_quotes(id) + " is hidden in material " + in_quotes(type) + " and must not be set");
       continue;
     }
     check_value(*d, v, problems);
@@ -188,7 +188,7 @@ Material material_from_instance(const ParamDefs& defs, const Json& instance) {
     try {
       set_material_parameter(out, id, v);
     } catch (const std::invalid_argument& e) {
-      throw std::runtime_error("material '" + m.id + "': " + e.what() + " (no counterpart in the reference BSDF)");
+      throw std::runtime_error("material " + in_quotes(m.id) + ": " + e.what() + " (no counterpart in the reference BSDF)");
     }
   };
   for (const auto& p : m.parameters) apply(p.id, p.default_value);

@@ -1,5 +1,6 @@
 #include "dspbr/params/param_defs.h"
 
+#include "dspbr/io/message.h"
 #include "dspbr/io/read_file.h"
 #include "dspbr/limits.h"
 #include "dspbr/io/json_fields.h"
@@ -375,8 +376,8 @@ const MaterialDef& ParamDefs::material(const std::string& id) const {
   const auto it = materials_.find(id);
   if (it == materials_.end()) {
     std::string known;
-    for (const auto& m : order_) known += (known.empty() ? "" : ", ") + m;
-    throw std::invalid_argument("unknown material '" + id + "' (" + source_ + " defines: " + known + ")");
+    for (const auto& m : order_) known += (known.empty() ? "" : ", ") + quote_input(m);
+    throw std::invalid_argument("unknown material " + in_quotes(id) + " (" + source_ + " defines: " + known + ")");
   }
   return it->second;
 }
