@@ -98,8 +98,8 @@ void run_generate(const GenerateArgs& a) {
                      {"thin_film_relative", conformance::kThinFilmRelative},
                      {"albedo_agreement", conformance::kAlbedoAgreement}}},
       {"conventions", "docs/bsdf.md: local frame (normal +z), v and l away from the surface, f_cos = f(v, l) |l.z|"}};
-  write_text(out.staging() + "/vectors.json", vectors_text(conformance::vectors_document(vectors, provenance)));
-  write_text(out.staging() + "/vectors.csv", conformance::vectors_csv(vectors));
+  write_text(out, "vectors.json", vectors_text(conformance::vectors_document(vectors, provenance)));
+  write_text(out, "vectors.csv", conformance::vectors_csv(vectors));
   out.commit();
   std::size_t delta = 0, albedo = 0;
   for (const auto& v : vectors) delta += v.delta.empty() ? 0 : 1, albedo += v.albedo ? 1 : 0;

@@ -83,9 +83,10 @@ std::string compiler_errors(const std::string& log, std::size_t count) {
 }
 
 #ifdef DSPBR_HAVE_VULKAN
-// The kernel compiled (SPIR-V words) from the user's file: written into `work` as
-// "dspbr_conformance_user" after a #line naming it, and included by the kit's entry.
-std::vector<uint32_t> compile_kernel(const RunArgs& a, const std::string& work) {
+// The kernel compiled (SPIR-V words) from the user's file: written into the staging folder's
+// .kernel/ as "dspbr_conformance_user" after a #line naming it, and included by the kit's entry.
+std::vector<uint32_t> compile_kernel(const RunArgs& a, const OutputFolder& out) {
+  const std::string work = out.staging() + "/.kernel";
   const bool hlsl = !a.hlsl.empty();
   const std::string user = hlsl ? a.hlsl : a.glsl;
   const char* option = hlsl ? "--hlsl" : "--glsl";
@@ -96,7 +97,7 @@ std::vector<uint32_t> compile_kernel(const RunArgs& a, const std::string& work) 
     throw UsageError(std::string(option) + ": " + e.what());
   }
   const std::string shaders = shared_path("shaders", "; the shader library is installed with dspbr");
-  write_text(work + "/dspbr_conformance_user", "#line 1 \"" + line_name(user) + "\"\n" + text + "\n");
+  write_text(out, ".kernel/dspbr_conformance_user", "#line 1 \"" + line_name(user) + "\"\n" + text + "\n");
   const std::string spv = work + "/kernel.spv", log = work + "/compiler.txt";
   std::vector<std::string> argv = {a.glslang, "-V", "-S", "comp"};
   if (hlsl) argv.insert(argv.end(), {"-D", "-e", "main", "--shift-texture-binding", "2"});
@@ -168,9 +169,8 @@ void run_shader(const RunArgs& a) {
   OutputFolder& out = cleanup.out();
   // The compile's files live in the staging folder (removed before the commit; an interrupt or an
   // error discards them with it).
-  const std::string work = out.staging() + "/.kernel";
-  fs::create_directory(work);
-  const std::vector<uint32_t> spirv = compile_kernel(a, work);
+  fs::create_directory(out.staging() + "/.kernel");
+  const std::vector<uint32_t> spirv = compile_kernel(a, out);
 
   vk_compute::Device device("dspbr conformance run");
   if (!device.has_device())
@@ -213,7 +213,7 @@ void run_shader(const RunArgs& a) {
                           {"device", device.device_name()}};
   expect_with_tables(tables, vectors, provenance, a.vectors);
   Judgement j{a.vectors, user, a.out, a.python, script, a.selection};
-  write_text(out.staging() + "/results.json", json_text(conformance::results_document(results), -1, "results.json") + "\n");
+  write_text(out, "results.json", json_text(conformance::results_document(results), -1, "results.json") + "\n");
   judge_results(j, out, vectors, results, provenance);
 #endif
 }

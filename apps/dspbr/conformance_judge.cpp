@@ -1,6 +1,8 @@
 #include "conformance_judge.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 
 #include "commands.h"
@@ -10,11 +12,17 @@
 
 namespace dspbr::cli {
 
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary);
+void write_text(const OutputFolder& out, const std::string& name, const std::string& text) {
+  errno = 0;
+  std::ofstream f(out.staging() + "/" + name, std::ios::binary);
   f << text;
+  f.flush();
+  const int write_error = errno;
   f.close();
-  if (!f) throw std::runtime_error("cannot write " + path);
+  // The message names the file as it would have been (the staging folder is gone when it is read)
+  // and the system's reason (a full disk: "No space left on device").
+  if (!f) throw std::runtime_error("cannot write '" + out.dir() + "/" + name + "': " +
+                                   std::strerror(write_error ? write_error : errno ? errno : EIO));
 }
 
 void add_tables_option(CLI::App* cmd, std::string& tables) {
@@ -55,7 +63,7 @@ void judge_results(const Judgement& j, OutputFolder& out, const std::vector<conf
                      (j.selection.groups.empty() && j.selection.components.empty() ? "" : " selected") + " vectors of " +
                      j.vectors);
   const nlohmann::ordered_json report = conformance::check_report(vectors, results, check, provenance);
-  write_text(out.staging() + "/report.json", json_text(report, 1, "report.json"));
+  write_text(out, "report.json", json_text(report, 1, "report.json"));
   if (!j.script.empty()) run_report_script(j.python, j.script, out.staging(), j.out);
   out.commit();
 

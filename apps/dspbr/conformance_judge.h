@@ -18,8 +18,9 @@
 
 namespace dspbr::cli {
 
-// Writes `text` to `path` (a file of the run's staging folder); std::runtime_error when it cannot.
-void write_text(const std::string& path, const std::string& text);
+// Writes `text` to the file `name` of the run's staging folder; std::runtime_error naming
+// out.dir()/name and the system's reason when it cannot.
+void write_text(const OutputFolder& out, const std::string& name, const std::string& text);
 
 inline constexpr const char* kDefaultPython = "/usr/bin/python3";
 
