@@ -346,3 +346,16 @@ TEST(Untrusted, ControlCharactersInNamesFromFilesAreEscaped) {
   const ToolRun c = run_dspbr("params check " + nul.string());
   EXPECT_NE(c.output.find("unknown parameter 'x\\x00y' for material 'generic'"), std::string::npos) << c.output;
 }
+
+// An empty list option is refused like the other list options (found by this stop's fresh tester:
+// `fit --only ""` ran every fit, `eval --components ""` used the material's components).
+TEST(Untrusted, EmptyListsAreRefused) {
+  const fs::path dir = fresh("empty_lists");
+  for (const std::string& cmd : {"fit --quick --only '' --out " + (dir / "f").string(),
+                                 std::string("eval --view 0,0,1 --light 0,0,1 --components ''")}) {
+    const ToolRun r = run_dspbr(cmd);
+    EXPECT_EQ(r.status, 2) << cmd << ": " << r.output;
+    EXPECT_NE(r.output.find(": must name at least one, got ''"), std::string::npos) << cmd << ": " << r.output;
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+}

@@ -184,7 +184,8 @@ void add_common_options(CLI::App* cmd, EvalArgs& a) {
                   "or published (the published grids, as a renderer using them gets)")
       ->capture_default_str();
   cmd->add_option("--components", a.components,
-                  "Comma-separated components to include (default: the material's active ones)");
+                  "Comma-separated components to include (default: the material's active ones)")
+      ->check(non_empty_list());
   cmd->add_flag("--transmission-compensation", a.transmission_compensation,
                 "Add the energy compensation of rough transmission (beyond DSPBR 2025x; docs/bsdf.md)");
 }

@@ -143,7 +143,8 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--out", args->out, "Output folder for <fit>.json and dspbr_fits.hpp")->capture_default_str();
   cmd->add_option("--only", args->only,
                   "Comma-separated fits: sheen_lambda, albedo (= ggx_E, ggx_E_avg, base_E, base_E_avg, sheen_E), "
-                  "flake_roughness (default: all)");
+                  "flake_roughness (default: all)")
+      ->check(non_empty_list());
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores); results do not depend on it")
       ->capture_default_str()
       ->transform(thread_count());

@@ -60,6 +60,13 @@ inline CLI::Validator decimal_number() {
       "NUMBER");
 }
 
+// A list option (--only, --components) given an empty value: refused, as the other list options
+// refuse it (an empty value would silently mean the default, "all").
+inline CLI::Validator non_empty_list() {
+  return CLI::Validator([](std::string& s) -> std::string { return s.empty() ? "must name at least one, got ''" : ""; },
+                        "LIST");
+}
+
 // An output file option (--out FILE), checked before the work: its folder exists (a command that
 // writes one file does not create folders) and the file is not a folder itself.
 inline void check_output_file(const std::string& path, const std::string& option) {
