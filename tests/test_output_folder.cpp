@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <dlfcn.h>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -297,4 +298,31 @@ TEST(OutputFolder, WhatCannotBePutBackIsNamedAndKept) {
   EXPECT_EQ(read_all(dir / "a.json"), "new a");
   EXPECT_EQ(read_all(dir / "c.json"), "old c");
   EXPECT_FALSE(fs::exists(dir / "b.json"));
+}
+
+// A FIFO (or a link to a device) at a target name refuses the set before any file moves, as a
+// folder there does (rename(2) would replace it by a regular file).
+TEST(OutputFolder, AFifoAtATargetRefusesTheSet) {
+  const fs::path dir = fresh("fifo");
+  fs::create_directories(dir);
+  write(dir / "a.json", "old");
+  ASSERT_EQ(::mkfifo((dir / "b.json").c_str(), 0600), 0);
+  fs::create_symlink("/dev/null", dir / "c.json");
+  for (const std::string name : {"b.json", "c.json"}) {
+    OutputFolder out(dir.string(), "--out");
+    write(fs::path(out.staging()) / "a.json", "new");
+    write(fs::path(out.staging()) / name, "new");
+    try {
+      out.commit();
+      ADD_FAILURE() << name << " was replaced";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "cannot write '" + (dir / name).string() +
+                                           "': it exists and is not a regular file (a folder, FIFO, device, socket or "
+                                           "a link to one); name a file path: nothing written");
+    }
+  }
+  EXPECT_EQ(read_all(dir / "a.json"), "old");
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(dir / "b.json")));
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / "c.json")));
+  EXPECT_EQ(listing(dir), (std::set<std::string>{"a.json", "b.json", "c.json"}));
 }

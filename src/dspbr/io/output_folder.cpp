@@ -1,5 +1,7 @@
 #include "dspbr/io/output_folder.h"
 
+#include "dspbr/io/atomic_file.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -126,6 +128,13 @@ std::vector<std::string> OutputFolder::commit() {
     if (is_real_folder(fs::path(s.dir) / rel)) {
       s.remove_own();
       throw std::runtime_error("'" + (fs::path(s.dir) / rel).string() + "' is a folder: nothing written");
+    }
+    // ... nor should it replace a FIFO, a device or a socket (or a link to one) by a regular file.
+    try {
+      require_replaceable((fs::path(s.dir) / rel).string());
+    } catch (const std::runtime_error& e) {
+      s.remove_own();
+      throw std::runtime_error(std::string(e.what()) + ": nothing written");
     }
   }
   // All or nothing: every file in place that the set replaces is first hard-linked into a folder
