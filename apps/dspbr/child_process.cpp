@@ -4,6 +4,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cerrno>
 
 #include "interrupt_cleanup.h"
@@ -12,11 +13,20 @@ extern char** environ;
 
 namespace dspbr::cli {
 
-ChildExit run_child(const std::vector<std::string>& argv, const std::string& log) {
+ChildExit run_child(const std::vector<std::string>& argv, const std::string& log, const std::vector<std::string>& env) {
   ChildExit r;
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  // The environment: this process's, with each NAME=VALUE of env replacing or adding its name.
+  std::vector<char*> envp;
+  for (char** e = environ; *e != nullptr; ++e) {
+    const std::string entry = *e, name = entry.substr(0, entry.find('='));
+    const bool replaced = std::any_of(env.begin(), env.end(), [&](const std::string& x) { return x.compare(0, name.size() + 1, name + "=") == 0; });
+    if (!replaced) envp.push_back(*e);
+  }
+  for (const std::string& x : env) envp.push_back(const_cast<char*>(x.c_str()));
+  envp.push_back(nullptr);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   if (!log.empty()) {
@@ -29,7 +39,7 @@ ChildExit run_child(const std::vector<std::string>& argv, const std::string& log
   posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
   posix_spawnattr_setpgroup(&attr, 0);
   pid_t pid = 0;
-  r.error = posix_spawnp(&pid, args[0], &actions, &attr, args.data(), environ);
+  r.error = posix_spawnp(&pid, args[0], &actions, &attr, args.data(), envp.data());
   posix_spawnattr_destroy(&attr);
   posix_spawn_file_actions_destroy(&actions);
   if (r.error != 0) return r;

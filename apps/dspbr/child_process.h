@@ -17,7 +17,9 @@ struct ChildExit {
 };
 
 // Runs argv (argv[0] searched on PATH); `log` "": output to the terminal, else stdout and stderr
-// into the file `log` (created or truncated).
-ChildExit run_child(const std::vector<std::string>& argv, const std::string& log = "");
+// into the file `log` (created or truncated). `env`: NAME=VALUE entries set for the child on top
+// of this process's environment.
+ChildExit run_child(const std::vector<std::string>& argv, const std::string& log = "",
+                    const std::vector<std::string>& env = {});
 
 }  // namespace dspbr::cli

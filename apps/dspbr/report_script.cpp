@@ -3,6 +3,7 @@
 #include "child_process.h"
 #include "commands.h"
 
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -45,21 +46,32 @@ void run_report_script(const std::string& python, const std::string& script, con
                        const std::string& out) {
   // Messages name the command without the staging folder it was given (a temporary path).
   const std::string cmd = shell_quote(python) + " " + shell_quote(script);
-  const ChildExit r = run_child({python, script, folder});
+  // matplotlib keeps its caches under $HOME, and creates a missing $HOME: without one, the script
+  // gets a folder of the run's own staging folder instead, removed before the commit.
+  const std::filesystem::path mpl = std::filesystem::path(folder) / ".matplotlib";
+  std::error_code ec;
+  const char* home = std::getenv("HOME");
+  const bool own_config = home == nullptr || !std::filesystem::is_directory(home, ec);
+  if (own_config) std::filesystem::create_directory(mpl, ec);
+  const ChildExit r = run_child({python, script, folder}, "", own_config ? std::vector<std::string>{"MPLCONFIGDIR=" + mpl.string()}
+                                                                          : std::vector<std::string>{});
+  if (own_config) std::filesystem::remove_all(mpl, ec);
   if (!r.started)
     throw UsageError("--python: cannot run " + shell_quote(python) + ": " + std::strerror(r.error) +
                      " (nothing was written to " + out + ")");
   if (r.status != 0)
     throw std::runtime_error("the report script failed (exit status " + std::to_string(r.status) + "): " + cmd +
                              " (nothing was written to " + out + ")");
-  std::error_code ec;
   if (!std::filesystem::is_regular_file(std::filesystem::path(folder) / "index.html", ec))
     throw std::runtime_error("the report script exited 0 without writing index.html: " + cmd +
                              " (nothing was written to " + out + ")");
 }
 
 void check_report_python(const std::string& python) {
-  const ChildExit r = run_child({python, "-c", "import numpy, matplotlib, jinja2"}, "/dev/null");
+  // matplotlib found, not imported: importing it writes its caches under $HOME (docs/limits.md).
+  const ChildExit r = run_child(
+      {python, "-c", "import importlib.util, numpy, jinja2\nif importlib.util.find_spec('matplotlib') is None: raise SystemExit(1)"},
+      "/dev/null");
   if (!r.started) throw UsageError("--python: cannot run " + shell_quote(python) + ": " + std::strerror(r.error));
   if (r.status != 0)
     throw UsageError("--python: " + shell_quote(python) + " cannot import numpy, matplotlib and jinja2 (exit status " +

@@ -21,13 +21,14 @@ std::string shared_path(const std::string& relative, const std::string& hint);
 // shared_path("report/<name>"): scripts/report/<name>, once check_report_python(python) passed.
 std::string report_script(const std::string& name, const std::string& python);
 
-// Runs `python script folder`; throws std::runtime_error with the command and its exit status when
+// Runs `python script folder` (without a $HOME folder, with MPLCONFIGDIR in folder/.matplotlib,
+// removed after it); throws std::runtime_error with the command and its exit status when
 // it fails, or when it wrote no folder/index.html ("... (nothing was written to <out>)").
 void run_report_script(const std::string& python, const std::string& script, const std::string& folder,
                        const std::string& out);
 
-// Before any work: `python -c "import numpy, matplotlib, jinja2"` succeeds, else UsageError naming
-// --python and what to install (about 0.4 s: the imports).
+// Before any work: python imports numpy and jinja2 and finds matplotlib (not imported: that would
+// write its caches under $HOME), else UsageError naming --python and what to install (about 0.3 s).
 void check_report_python(const std::string& python);
 
 }  // namespace dspbr::cli

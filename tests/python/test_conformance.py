@@ -114,3 +114,18 @@ def test_documented_commands_run(tmp_path):
         if p.returncode == 77 and args[1:3] == ["conformance", "run"]:
             continue
         assert p.returncode == 0, (command, p.stdout, p.stderr)
+
+
+def test_the_report_writes_nothing_outside_its_folder(vectors, tmp_path):
+    # Without a $HOME folder (found by a fresh tester: matplotlib created $HOME/.cache and
+    # $HOME/.config, and $HOME itself) the report keeps matplotlib's caches in its staging folder
+    # and removes them; the report is complete.
+    path = tmp_path / "results.json"
+    dc.write_results(dc.run(vectors, dc.reference_eval), path)
+    env = dict(os.environ, HOME=str(tmp_path / "nohome"))
+    p = subprocess.run([dspbr_exe(), "conformance", "check", vectors, str(path), "--out", str(tmp_path / "report")],
+                       capture_output=True, text=True, env=env)
+    assert p.returncode == 0, p.stdout + p.stderr
+    assert not (tmp_path / "nohome").exists()
+    assert (tmp_path / "report" / "index.html").is_file()
+    assert not (tmp_path / "report" / ".matplotlib").exists()
