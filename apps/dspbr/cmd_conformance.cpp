@@ -46,7 +46,8 @@ struct ReferenceArgs {
 };
 
 struct CheckArgs {
-  std::string vectors, results, out, tables = "renderer";
+  std::string vectors, results, out;
+  RepresentationOptions representation;
   std::string python = kDefaultPython;
   bool html = true, require_all = false;
   conformance::Selection selection;
@@ -108,7 +109,7 @@ void run_generate(const GenerateArgs& a) {
 }
 
 void run_check(const CheckArgs& a) {
-  const conformance::DemoTables tables = parse_tables_option(a.tables);
+  parse_tables_option(a.representation.tables);  // before any work
   const std::string script = a.html ? report_script("conformance_report.py", a.python) : std::string();
   std::vector<conformance::Vector> vectors;
   std::vector<conformance::Result> results;
@@ -123,7 +124,7 @@ void run_check(const CheckArgs& a) {
   OJson provenance = output_provenance();
   provenance["vectors"] = a.vectors;
   provenance["results"] = a.results;
-  expect_with_tables(tables, vectors, provenance, a.vectors);
+  expect_with(a.representation, vectors, provenance, a.vectors);
   Judgement j{a.vectors, a.results, a.out, a.python, script, a.selection};
   InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
   judge_results(j, cleanup.out(), vectors, results, provenance);
@@ -201,7 +202,7 @@ void add_conformance_command(CLI::App& app) {
                   "Judge only the vectors whose material has one of these components (comma-separated: "
                   "clearcoat, sheen, ...)")
       ->delimiter(',');
-  add_tables_option(chk, c->tables);
+  add_representation_options(chk, c->representation);
   chk->add_flag("--require-all", c->require_all,
                 "Every vector needs a result (by default a vector without one, or a quantity left out or null, "
                 "is NOT SUPPLIED and not judged)");

@@ -49,7 +49,8 @@ constexpr std::uint64_t kShaderBytes = limits::kDocumentBytes;
 constexpr std::size_t kBatch = 4096;
 
 struct RunArgs {
-  std::string vectors, glsl, hlsl, out, tables = "renderer";
+  std::string vectors, glsl, hlsl, out;
+  RepresentationOptions representation;
   std::string glslang = "glslangValidator";
   std::string python = kDefaultPython;
   bool html = true;
@@ -154,7 +155,7 @@ void run_shader(const RunArgs& a) {
 #ifndef DSPBR_HAVE_VULKAN
   throw UsageError("this dspbr was built without Vulkan (libvulkan-dev): `conformance run` cannot run shaders");
 #else
-  const conformance::DemoTables tables = parse_tables_option(a.tables);
+  parse_tables_option(a.representation.tables);  // before any work
   const std::string script = a.html ? report_script("conformance_report.py", a.python) : std::string();
   std::vector<conformance::Vector> vectors;
   try {
@@ -211,7 +212,7 @@ void run_shader(const RunArgs& a) {
   provenance["vectors"] = a.vectors;
   provenance["shader"] = {{"file", user}, {"language", a.glsl.empty() ? "HLSL" : "GLSL"},
                           {"device", device.device_name()}};
-  expect_with_tables(tables, vectors, provenance, a.vectors);
+  expect_with(a.representation, vectors, provenance, a.vectors);
   Judgement j{a.vectors, user, a.out, a.python, script, a.selection};
   write_text(out, "results.json", json_text(conformance::results_document(results), -1, "results.json") + "\n");
   judge_results(j, out, vectors, results, provenance);
@@ -241,7 +242,7 @@ void add_conformance_run_command(CLI::App& conformance) {
   run->add_option("--components", r->selection.components,
                   "Run and judge only the vectors whose material has one of these components (comma-separated)")
       ->delimiter(',');
-  add_tables_option(run, r->tables);
+  add_representation_options(run, r->representation);
   run->callback([r] { run_shader(*r); });
 }
 

@@ -25,12 +25,18 @@ void write_text(const OutputFolder& out, const std::string& name, const std::str
                                    std::strerror(write_error ? write_error : errno ? errno : EIO));
 }
 
-void add_tables_option(CLI::App* cmd, std::string& tables) {
-  cmd->add_option("--tables", tables,
+void add_representation_options(CLI::App* cmd, RepresentationOptions& o) {
+  cmd->add_option("--tables", o.tables,
                   "Judge against the reference reading this table set: renderer (the vectors as written), published "
                   "(the published tables, multilinear), fits (the LUT-free fits), uncompensated (no energy "
                   "compensation); for an implementation that ships them (docs/conformance.md)")
       ->capture_default_str();
+  cmd->add_option("--min-roughness", o.min_roughness,
+                  "The implementation clamps roughness and clearcoatRoughness to at least R: judge f_cos and pdf "
+                  "against the reference with the same clamp (a mirror becomes its narrow lobe, judged with its "
+                  "reflectance as the albedo; docs/conformance.md)")
+      ->check(decimal_number())
+      ->check(CLI::Range(0.0, 1.0));
 }
 
 conformance::DemoTables parse_tables_option(const std::string& tables) {
@@ -41,14 +47,16 @@ conformance::DemoTables parse_tables_option(const std::string& tables) {
   }
 }
 
-void expect_with_tables(conformance::DemoTables tables, std::vector<conformance::Vector>& vectors,
-                        nlohmann::ordered_json& provenance, const std::string& vectors_file) {
+void expect_with(const RepresentationOptions& o, std::vector<conformance::Vector>& vectors,
+                 nlohmann::ordered_json& provenance, const std::string& vectors_file) {
+  const conformance::DemoTables tables = parse_tables_option(o.tables);
   provenance["tables"] = conformance::demo_tables_name(tables);
-  if (tables == conformance::DemoTables::Renderer) return;
-  std::fprintf(stderr, "conformance: expectations of %zu vectors with the %s tables ...\n", vectors.size(),
-               conformance::demo_tables_name(tables));
+  provenance["min_roughness"] = o.min_roughness;
+  if (tables == conformance::DemoTables::Renderer && o.min_roughness == 0) return;
+  std::fprintf(stderr, "conformance: expectations of %zu vectors with the %s tables, roughness at least %g ...\n",
+               vectors.size(), conformance::demo_tables_name(tables), o.min_roughness);
   try {
-    conformance::expect_with_tables(vectors, conformance::demo_table_set(tables));
+    conformance::expect_with(vectors, {&conformance::demo_table_set(tables), o.min_roughness});
   } catch (const std::runtime_error& e) {
     throw UsageError(vectors_file + ": " + e.what());
   }

@@ -31,15 +31,19 @@ struct Judgement {
   conformance::Selection selection;
 };
 
-// --tables of `check` and `run`: the table set the vectors' expectations are computed with
-// (conformance/demo_tables.h). The default, renderer, judges against the vectors as written.
-void add_tables_option(CLI::App* cmd, std::string& tables);
-// Before any work: the set --tables names (UsageError naming the option when it names none).
+// --tables and --min-roughness of `check` and `run`: how the implementation represents DSPBR
+// (conformance::Representation). The defaults judge against the vectors as written.
+struct RepresentationOptions {
+  std::string tables = "renderer";  // conformance/demo_tables.h
+  double min_roughness = 0;
+};
+void add_representation_options(CLI::App* cmd, RepresentationOptions& o);
+// --tables, parsed before any work (UsageError naming the option when it names no set).
 conformance::DemoTables parse_tables_option(const std::string& tables);
-// With a set other than renderer: the vectors' expectations recomputed with it
-// (conformance::expect_with_tables; a progress line on stderr), recorded in provenance["tables"].
-void expect_with_tables(conformance::DemoTables tables, std::vector<conformance::Vector>& vectors,
-                        nlohmann::ordered_json& provenance, const std::string& vectors_file);
+// Other than the defaults: the vectors' expectations recomputed for them (conformance::expect_with;
+// a progress line on stderr); provenance["tables"] and ["min_roughness"] record them.
+void expect_with(const RepresentationOptions& o, std::vector<conformance::Vector>& vectors,
+                 nlohmann::ordered_json& provenance, const std::string& vectors_file);
 
 // Writes the report into `out` (the run's folder, interrupt_cleanup.h; the caller may have written
 // other files into its staging folder) and commits it.

@@ -61,6 +61,16 @@ def test_tables_option_judges_against_those_tables(vectors, tmp_path):
                            "--out", tmp_path / "bad")
     assert code == 2 and err.startswith("dspbr: error: --tables:"), err
     assert not (tmp_path / "bad").exists()
+    code, _, err = run_cli("conformance", "check", vectors, path, "--no-html", "--min-roughness", "1.5",
+                           "--out", tmp_path / "bad")
+    assert code == 2 and "--min-roughness" in err, err
+    # The published tables' results with roughness clamped to 0.05 (what the library computes
+    # for that representation) against the reference with both: recorded in the provenance.
+    code, out, err = run_cli("conformance", "check", vectors, path, "--no-html", "--tables", "published",
+                             "--min-roughness", "0.05", "--out", tmp_path / "clamped")
+    report = json.loads((tmp_path / "clamped" / "report.json").read_text())
+    assert report["provenance"]["min_roughness"] == 0.05 and report["provenance"]["tables"] == "published"
+    assert "roughness at least 0.05" in err
 
 
 def test_bad_values_name_the_vector(vectors):

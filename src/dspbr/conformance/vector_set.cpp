@@ -546,17 +546,21 @@ Evaluation evaluate(const Vector& v, const LutSet& luts) {
   return {b.eval(v.v, v.l) * std::abs(v.l.z), b.pdf(v.v, v.l)};
 }
 
-void expect_with_tables(std::vector<Vector>& vectors, const LutSet& luts) {
+void expect_with(std::vector<Vector>& vectors, const Representation& r) {
+  const LutSet& luts = r.tables != nullptr ? *r.tables : LutSet::builtin();
   // Each vector's material is built once per vector (as evaluate does): independent, so parallel.
   tbb::parallel_for(std::size_t(0), vectors.size(), [&](std::size_t i) {
     Vector& v = vectors[i];
     try {
-      const Material m = vector_material(v);
-      const MaterialBsdf b(m, luts, vector_options(v), active_components(m));
+      Material m = vector_material(v);
+      const uint32_t mask = active_components(m);
+      m.roughness = std::max(m.roughness, r.min_roughness);
+      m.clearcoatRoughness = std::max(m.clearcoatRoughness, r.min_roughness);
+      const MaterialBsdf b(m, luts, vector_options(v), mask);
       v.f_cos = b.eval(v.v, v.l) * std::abs(v.l.z);
       v.pdf = b.pdf(v.v, v.l);
       v.delta = delta_lobes(b, v.v);
-      if (v.albedo) {  // the finer of generate's two quadratures, with the delta lobes
+      if (v.albedo && r.min_roughness == 0) {  // the finer of generate's two quadratures, with the delta lobes
         Rgb a = albedo_quadrature(b, v.v, 32, 128);
         for (const DeltaExpectation& d : v.delta) a = a + d.value;
         v.albedo = a;

@@ -56,11 +56,21 @@ struct Evaluation {
 };
 Evaluation evaluate(const Vector& v, const LutSet& luts);
 
-// The vectors' expectations as the reference computes them reading `luts` instead of the renderer
-// tables (`conformance check --tables`): f cos, pdf, the delta lobes and, where a vector has one,
-// the albedo (the finer of generate's two quadratures). The tolerances stay: their table part
-// (kTableError) then allows the implementation's lookups that far from `luts`' own.
-// Throws std::runtime_error for an invalid instance or options.
-void expect_with_tables(std::vector<Vector>& vectors, const LutSet& luts);
+// How an implementation represents DSPBR where it differs from the reference by design
+// (`conformance check --tables`, `--min-roughness`).
+struct Representation {
+  const LutSet* tables = nullptr;  // the energy tables it reads (nullptr: the renderer tables)
+  double min_roughness = 0;        // it clamps roughness and clearcoatRoughness to at least this
+};
+
+// The vectors' expectations as the reference computes them for that representation: f cos, pdf,
+// the delta lobes and, where a vector has one, the albedo (the finer of generate's two
+// quadratures) with the tables; with min_roughness > 0, f cos, pdf and the delta lobes of the
+// material with its roughnesses clamped (a mirror becomes a narrow lobe: its delta lobes go, its
+// peak is judged against the clamped lobe's), the albedo kept (the mirror's reflectance, which the
+// narrow lobe carries). The tolerances stay: their table part (kTableError) then allows the
+// implementation's lookups that far from the tables' own. Throws std::runtime_error for an
+// invalid instance or options.
+void expect_with(std::vector<Vector>& vectors, const Representation& r);
 
 }  // namespace dspbr::conformance
