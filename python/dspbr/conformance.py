@@ -9,6 +9,7 @@ my_eval(vector) receives one vector (a dict: "material" in the params instance f
 "v", "l", ...; conventions of docs/bsdf.md) and returns its f(v, l) |l.z| as 3 numbers, or a dict
 with "f_cos" and any of "pdf", "albedo", "emission", "delta". reference_eval is such a function:
 the reference BSDF (tables="published" gives what a renderer using the published tables gets).
+run_batched does the same for a vectorised implementation: one call per material, arrays in and out.
 """
 import json
 import math
@@ -98,6 +99,51 @@ def run(vectors, my_eval):
             r["f_cos"] = _rgb(out, "f_cos", vid)
         results.append(r)
     return {"results": results}
+
+
+def run_batched(vectors, my_eval_batch):
+    """run() for a vectorised implementation: my_eval_batch(material, options, v, l) is called once per
+    run of consecutive vectors that share a material and options (the set lists each material's
+    vectors together), with v and l numpy arrays of shape (n, 3), and returns f(v, l) |l.z| as an
+    array of shape (n, 3), or a dict with "f_cos" (n, 3) and optionally "pdf" (n,) (NaN: not
+    supplied for that vector) or "albedo" / "emission" (n, 3). The results and their checks are
+    run()'s: ValueError naming the vector for a value that is not finite, or a shape that does not
+    match the batch."""
+    import numpy as np
+    if isinstance(vectors, str):
+        vectors = load(vectors)
+    elif isinstance(vectors, dict):
+        vectors = vectors["vectors"]
+    outputs = {}
+    start = 0
+    while start < len(vectors):
+        key = json.dumps([vectors[start]["material"], vectors[start].get("options")], sort_keys=True)
+        end = start + 1
+        while end < len(vectors) and json.dumps([vectors[end]["material"], vectors[end].get("options")],
+                                                sort_keys=True) == key:
+            end += 1
+        batch = vectors[start:end]
+        v = np.array([x["v"] for x in batch], dtype=np.float64)
+        l = np.array([x["l"] for x in batch], dtype=np.float64)
+        out = my_eval_batch(batch[0]["material"], batch[0].get("options"), v, l)
+        out = dict(out) if isinstance(out, dict) else {"f_cos": out}
+        for name, value in out.items():
+            if name == "delta":
+                raise ValueError(f"vector {batch[0]['id']!r}: delta lobes are not batched (run() takes them per vector)")
+            shape = (len(batch),) if name == "pdf" else (len(batch), 3)
+            if name in _KEYS:
+                value = np.asarray(value, dtype=np.float64)
+                if value.shape != shape:
+                    raise ValueError(f"vector {batch[0]['id']!r}: {name} of a batch of {len(batch)} must have shape "
+                                     f"{shape}, got {value.shape}")
+            out[name] = value
+        for k, x in enumerate(batch):
+            r = {name: value[k] if name in _KEYS else value for name, value in out.items()}
+            if "pdf" in r and math.isnan(r["pdf"]):
+                r["pdf"] = None  # not supplied
+            outputs[x["id"]] = r
+        start = end
+    return run(vectors, lambda x: outputs[x["id"]])
 
 
 def write_results(results, path):
