@@ -6,7 +6,9 @@
  *   dspbr conformance check VECTORS.json RESULTS.csv --out REPORT
  *
  * The renderer plugs in through one function (renderer.h): link your own renderer_eval instead of
- * reference_renderer.cpp (the reference BSDF, used here so that the example passes). A GLSL or
+ * reference_renderer.cpp (the reference BSDF, used here so that the example passes), or, built
+ * with -DRENDERER_BATCH, renderer_eval_batch: all vectors of one material in one call (arrays in,
+ * arrays out). A GLSL or
  * HLSL implementation runs through `dspbr conformance run --glsl/--hlsl` instead. A vector the
  * renderer does not support gets no line (NOT SUPPLIED), a pdf it does not compute an empty field.
  * Exit status 0, or 2 with one line on stderr naming the file and the line. */
@@ -17,7 +19,7 @@
 
 #include "renderer.h"
 
-enum { kMaxLine = 1 << 16, kMaxFields = 32 };
+enum { kMaxLine = 1 << 16, kMaxFields = 32, kMaxBatch = 4096 };
 
 /* Splits one CSV line into fields in place (RFC 4180: quoted fields with doubled quotes). */
 static int split_csv(char* line, char** fields) {
@@ -67,6 +69,59 @@ static void write_csv_field(FILE* out, const char* s) {
   fputc('"', out);
 }
 
+/* The vectors of one material (consecutive lines with the same material and options), evaluated
+ * together: by one renderer_eval_batch call when built with -DRENDERER_BATCH, else one
+ * renderer_eval per vector. */
+typedef struct {
+  char* id;
+  double vl[6];
+} Row;
+static Row rows[kMaxBatch];
+static int row_count = 0;
+static char* group_material = NULL;
+static char* group_options = NULL;
+
+static char* copy_text(const char* s) {
+  char* c = malloc(strlen(s) + 1);
+  if (!c) { fprintf(stderr, "out of memory\n"); exit(2); }
+  return strcpy(c, s);
+}
+
+/* Writes the group's results; 0 when the renderer failed on one (named on stderr). */
+static int flush_group(FILE* out, const char* path, long* written) {
+  static double f_cos[3 * kMaxBatch], pdf[kMaxBatch];
+  static int status[kMaxBatch];
+  for (int i = 0; i < row_count; ++i) pdf[i] = NAN;
+#ifdef RENDERER_BATCH
+  static double v[3 * kMaxBatch], l[3 * kMaxBatch];
+  for (int i = 0; i < row_count; ++i)
+    for (int k = 0; k < 3; ++k) v[3 * i + k] = rows[i].vl[k], l[3 * i + k] = rows[i].vl[3 + k];
+  const int batch = row_count > 0 ? renderer_eval_batch(group_material, group_options, row_count, v, l, f_cos, pdf)
+                                  : RENDERER_OK;
+  for (int i = 0; i < row_count; ++i) status[i] = batch;
+#else
+  for (int i = 0; i < row_count; ++i)
+    status[i] = renderer_eval(group_material, group_options, rows[i].vl, rows[i].vl + 3, f_cos + 3 * i, pdf + i);
+#endif
+  int ok = 1;
+  for (int i = 0; i < row_count; ++i) {
+    if (ok && status[i] != RENDERER_OK && status[i] != RENDERER_UNSUPPORTED) {
+      fprintf(stderr, "%s: id '%s': the renderer cannot evaluate this material\n", path, rows[i].id);
+      ok = 0;
+    }
+    if (ok && status[i] == RENDERER_OK) { /* RENDERER_UNSUPPORTED: no line, NOT SUPPLIED */
+      write_csv_field(out, rows[i].id);
+      fprintf(out, ",%.17g,%.17g,%.17g,", f_cos[3 * i], f_cos[3 * i + 1], f_cos[3 * i + 2]);
+      if (!isnan(pdf[i])) fprintf(out, "%.17g", pdf[i]); /* an empty field: not supplied */
+      fputc('\n', out);
+      ++*written;
+    }
+    free(rows[i].id);
+  }
+  row_count = 0;
+  return ok;
+}
+
 int main(int argc, char** argv) {
   if (argc != 3) {
     fprintf(stderr, "usage: %s VECTORS.csv RESULTS.csv\n", argv[0]);
@@ -94,23 +149,25 @@ int main(int argc, char** argv) {
       continue;
     }
     if (len == 0) continue;
-    double vl[6], f_cos[3], pdf = NAN;
-    if (split_csv(line, f) < 11 || !parse_numbers(f + 5, vl, 6)) {
+    Row r;
+    if (split_csv(line, f) < 11 || !parse_numbers(f + 5, r.vl, 6)) {
       fprintf(stderr, "%s: line %ld: malformed vector\n", argv[1], number);
       return 2;
     }
-    const int status = renderer_eval(f[3], f[4], vl, vl + 3, f_cos, &pdf);
-    if (status != RENDERER_OK && status != RENDERER_UNSUPPORTED) {
-      fprintf(stderr, "%s: line %ld (id '%s'): the renderer cannot evaluate this material\n", argv[1], number, f[0]);
-      return 2;
+    const int same = group_material && strcmp(group_material, f[3]) == 0 && strcmp(group_options, f[4]) == 0;
+    if (!same || row_count == kMaxBatch) {
+      if (!flush_group(out, argv[1], &written)) return 2;
+      free(group_material);
+      free(group_options);
+      group_material = copy_text(f[3]);
+      group_options = copy_text(f[4]);
     }
-    if (status == RENDERER_UNSUPPORTED) continue; /* no result: NOT SUPPLIED */
-    write_csv_field(out, f[0]);
-    fprintf(out, ",%.17g,%.17g,%.17g,", f_cos[0], f_cos[1], f_cos[2]);
-    if (!isnan(pdf)) fprintf(out, "%.17g", pdf); /* an empty field: not supplied */
-    fputc('\n', out);
-    ++written;
+    r.id = copy_text(f[0]);
+    rows[row_count++] = r;
   }
+  if (!flush_group(out, argv[1], &written)) return 2;
+  free(group_material);
+  free(group_options);
   fclose(in);
   if (fclose(out) != 0) { fprintf(stderr, "%s: cannot be written\n", argv[2]); return 2; }
   printf("%ld results -> %s\n", written, argv[2]);

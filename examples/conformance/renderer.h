@@ -17,6 +17,12 @@ enum { RENDERER_OK = 0, RENDERER_UNSUPPORTED = 1 };
 int renderer_eval(const char* material_json, const char* options_json, const double v[3], const double l[3],
                   double f_cos[3], double* pdf);
 
+/* The batched form (the harness built with -DRENDERER_BATCH): the n vectors of one material at
+ * once, v and l as 3 n numbers (x, y, z of each), f_cos as 3 n, pdf as n (NAN on entry: leave a
+ * pdf NAN when there is none). One status for the batch. */
+int renderer_eval_batch(const char* material_json, const char* options_json, int n, const double* v, const double* l,
+                        double* f_cos, double* pdf);
+
 #ifdef __cplusplus
 }
 #endif
