@@ -4,11 +4,13 @@
 // written; command-line numbers are decimal; a refused run leaves no folder behind. Every input
 // is built by the test.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -358,4 +360,36 @@ TEST(Untrusted, EmptyListsAreRefused) {
     EXPECT_NE(r.output.find(": must name at least one, got ''"), std::string::npos) << cmd << ": " << r.output;
   }
   EXPECT_TRUE(fs::is_empty(dir));
+}
+
+// Output that cannot be written is an error, not a success with nothing printed (found by this
+// stop's second fresh tester: on a full disk `eval`, `scene analyze --json`, `params list` and
+// `--help-all` exited 0 with an empty file). /dev/full fails every write with ENOSPC.
+TEST(Untrusted, AnUnwritableStdoutIsAnError) {
+  const fs::path dir = fresh("stdout");
+  for (const std::string args : {"eval --view 0,0,1 --light 0,0,1", "params list", "--help-all", "--version",
+                                 "conformance generate --help"}) {
+    const fs::path err = dir / "err.txt";
+    const std::string cmd = std::string("\"") + DSPBR_EXE + "\" " + args + " > /dev/full 2> '" + err.string() + "'";
+    const int status = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << args;
+    EXPECT_EQ(WEXITSTATUS(status), 1) << args;
+    EXPECT_EQ(read_all(err), "dspbr: error: cannot write the output to stdout: No space left on device\n") << args;
+  }
+}
+
+// The quad integrator's tolerance has a floor (found by this stop's second fresh tester: at
+// --target-error 1e-12 one cell of GGX_E_avg ran for hours, --samples bounding nothing).
+TEST(Untrusted, AQuadToleranceBelowItsFloorIsRefused) {
+  const fs::path dir = fresh("quad_floor");
+  const ToolRun r = run_dspbr("lut --quiet --formats json --tables GGX_E_avg --size GGX_E_avg=1 --target-error 1e-12 --out " +
+                              (dir / "o").string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(r.output, "dspbr: error: target error of the quad integrator must be 0 (its default) or at least 1e-10, got "
+                      "1e-12 (below it rounding keeps the error estimate from converging)\n");
+  EXPECT_TRUE(fs::is_empty(dir));
+  // qmc's target is a standard error bounded by --samples: no floor there.
+  const ToolRun q = run_dspbr("lut --quiet --formats json --tables GGX_E_avg --size GGX_E_avg=1 --integrator qmc "
+                              "--samples 64 --target-error 1e-12 --out " + (dir / "q").string());
+  EXPECT_EQ(q.status, 0) << q.output;
 }

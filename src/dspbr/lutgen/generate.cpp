@@ -117,6 +117,11 @@ void validate_lut_options(const LutOptions& opt) {
     throw std::invalid_argument("samples / randomizations must be at most 2^24");
   if (!std::isnan(opt.target_error) && !(opt.target_error >= 0 && opt.target_error <= 1))
     throw std::invalid_argument("target error must be in [0, 1]");
+  if ((!opt.integrator || *opt.integrator == Integrator::Quad) && opt.target_error > 0 &&
+      opt.target_error < kQuadMinTolerance)
+    throw std::invalid_argument("target error of the quad integrator must be 0 (its default) or at least " +
+                                fmt::format("{:g}", kQuadMinTolerance) + ", got " + fmt::format("{:g}", opt.target_error) +
+                                " (below it rounding keeps the error estimate from converging)");
   if (opt.threads < 0 || opt.threads > limits::kThreads)
     throw std::invalid_argument("threads must be from 0 (all cores) to " + std::to_string(limits::kThreads));
   // Endpoint grids need two samples per axis for the default sizes too (all defaults are >= 16).
