@@ -4404,10 +4404,16 @@ DSPBR_TABLE_END
 float dspbr_Glass_inv_E_avg_at(int r, int c) { return dspbr_Glass_inv_E_avg_table[r * 32 + c]; }
 #endif
 
+// x_F = 2 sqrt(F_0) = 2 (ior - 1) / (ior + 1) in [0, 1], ior clamped to [1, 3] first (the tables'
+// range, kGlassMaxIor: +-inf and -3 go to the nearer end, NaN to 1).
+float dspbr_lut_glass_x(float ior) {
+  float n = dspbr_lut_clampf(ior, 1.0f, 3.0f);
+  return 2.0f * (n - 1.0f) / (n + 1.0f);
+}
 // glass_ior warp: x = (x_F + ln(1 + x_F / (k mu^2)) / ln(1 + 1 / (k mu^2))) / 2, x_F = 2 sqrt(F_0),
 // mu clamped to 1e-6.
 float dspbr_lut_glass_ior_warp(float ior, float cos_theta, float k) {
-  float xf = dspbr_lut_clampf(2.0f * (ior - 1.0f) / (ior + 1.0f), 0.0f, 1.0f);
+  float xf = dspbr_lut_glass_x(ior);
   float m = dspbr_lut_clampf(cos_theta, 1e-6f, 1.0f);
   float km = k * m * m;
   return 0.5f * xf + 0.5f * log(1.0f + xf / km) / log(1.0f + 1.0f / km);
@@ -4535,8 +4541,7 @@ float dspbr_lut_interp_dspbr_Glass_inv_E_avg(float x0, float x1) {
 // Schlick F_0 of the interface, ((ior - 1) / (ior + 1))^2, ior clamped to [1, 3] as the
 // tables clamp it (kGlassMaxIor; NaN: 1).
 float dspbr_glass_f0(float ior) {
-  float n = dspbr_lut_clampf(ior, 1.0f, 3.0f);
-  float a = (n - 1.0f) / (n + 1.0f);
+  float a = 0.5f * dspbr_lut_glass_x(ior);
   return a * a;
 }
 // E_g(mu; r, ior): albedo of the rough dielectric interface (M_r F + M_t (1 - F), specular 1),
@@ -4549,7 +4554,7 @@ float dspbr_glass_E(float cos_theta, float roughness, float ior, int inside) {
 }
 // 2 Integral E_g mu dmu (the cosine average of dspbr_glass_E).
 float dspbr_glass_E_avg(float roughness, float ior, int inside) {
-  float xf = dspbr_lut_clampf(2.0f * (ior - 1.0f) / (ior + 1.0f), 0.0f, 1.0f);
+  float xf = dspbr_lut_glass_x(ior);
   return inside != 0 ? dspbr_lut_interp_dspbr_Glass_inv_E_avg(sqrt(dspbr_lut_clampf(xf, 0.0f, 1.0f)), dspbr_lut_clampf(roughness, 0.0f, 1.0f)) : dspbr_lut_interp_dspbr_Glass_E_avg(sqrt(dspbr_lut_clampf(xf, 0.0f, 1.0f)), dspbr_lut_clampf(roughness, 0.0f, 1.0f));
 }
 // Albedo of the white transparent core on one side: E_g + F_ms (1 - E_m) (the spec's M_r,ms F_ms).

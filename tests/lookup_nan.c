@@ -124,6 +124,26 @@ int main(void) {
       }
     }
   }
+  /* An ior outside [1, 3] is the nearer end's (found by a fresh tester: +inf gave ior 1's value
+   * and -3 ior 3's, through 2 (ior - 1) / (ior + 1) clamped after the division); NaN is ior 1's. */
+  {
+    const float iors[4] = {INFINITY, -3.0f, -INFINITY, NAN}, ends[4] = {3.0f, 1.0f, 1.0f, 1.0f};
+    for (int k = 0; k < 4; ++k)
+      for (int side = 0; side < 2; ++side) {
+        const float got[4] = {dspbr_glass_E(0.5f, 0.3f, iors[k], side), dspbr_glass_E_avg(0.3f, iors[k], side),
+                              dspbr_glass_core_E_avg(0.3f, iors[k], side), dspbr_glass_f0(iors[k])};
+        const float want[4] = {dspbr_glass_E(0.5f, 0.3f, ends[k], side), dspbr_glass_E_avg(0.3f, ends[k], side),
+                               dspbr_glass_core_E_avg(0.3f, ends[k], side), dspbr_glass_f0(ends[k])};
+        for (int q = 0; q < 4; ++q) {
+          ++calls;
+          if (!(got[q] == want[q])) {
+            ++failures;
+            printf("glass function %d at ior %g (side %d): %.9g, the end %g gives %.9g\n", q, iors[k], side, got[q], ends[k],
+                   want[q]);
+          }
+        }
+      }
+  }
   printf("%d calls, %d failures\n", calls, failures);
   return failures == 0 ? 0 : 1;
 }

@@ -138,6 +138,13 @@ TEST(LookupCode, GlassHeaderMatchesTheLibrary) {
       expect_float_close(dspbr_glass_E_avg(a.r, ior, in), L.E_glass_avg(a.r, ior, in != 0), "glass_E_avg", 1e-5);
     }
   }
+  // Outside [1, 3] both take the nearer end (the library's +inf read ior 1's value before).
+  for (int in : {0, 1})
+    for (const auto& [ior, end] : {std::pair{HUGE_VAL, 3.0}, std::pair{-3.0, 1.0}, std::pair{7.0, 3.0}}) {
+      EXPECT_EQ(L.E_glass(0.5, 0.3, ior, in != 0), L.E_glass(0.5, 0.3, end, in != 0)) << ior;
+      EXPECT_EQ(L.E_glass_avg(0.3, ior, in != 0), L.E_glass_avg(0.3, end, in != 0)) << ior;
+      expect_float_close(dspbr_glass_E(0.5f, 0.3f, float(ior), in), L.E_glass(0.5, 0.3, end, in != 0), "glass_E", 2e-5);
+    }
 }
 
 dspbr::Material white_glass(float r, float ior, bool thin) {

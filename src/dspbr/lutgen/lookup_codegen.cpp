@@ -250,10 +250,16 @@ const char* kHelpers =
 
 // The glass file's shared text: its ior warp (tables/warped_table.h GlassIor).
 const char* kGlassHelpers =
+    "// x_F = 2 sqrt(F_0) = 2 (ior - 1) / (ior + 1) in [0, 1], ior clamped to [1, 3] first (the tables'\n"
+    "// range, kGlassMaxIor: +-inf and -3 go to the nearer end, NaN to 1).\n"
+    "float dspbr_lut_glass_x(float ior) {\n"
+    "  float n = clamp(ior, 1.0f, 3.0f);\n"
+    "  return 2.0f * (n - 1.0f) / (n + 1.0f);\n"
+    "}\n"
     "// glass_ior warp: x = (x_F + ln(1 + x_F / (k mu^2)) / ln(1 + 1 / (k mu^2))) / 2, x_F = 2 sqrt(F_0),\n"
     "// mu clamped to 1e-6.\n"
     "float dspbr_lut_glass_ior_warp(float ior, float cos_theta, float k) {\n"
-    "  float xf = clamp(2.0f * (ior - 1.0f) / (ior + 1.0f), 0.0f, 1.0f);\n"
+    "  float xf = dspbr_lut_glass_x(ior);\n"
     "  float m = clamp(cos_theta, 1e-6f, 1.0f);\n"
     "  float km = k * m * m;\n"
     "  return 0.5f * xf + 0.5f * log(1.0f + xf / km) / log(1.0f + 1.0f / km);\n"
@@ -274,7 +280,7 @@ std::string glass_api_functions(const RendererLuts& L) {
   };
   o << "// Schlick F_0 of the interface, ((ior - 1) / (ior + 1))^2, ior clamped to [1, 3] as the\n"
     << "// tables clamp it (kGlassMaxIor; NaN: 1).\n"
-    << "float dspbr_glass_f0(float ior) {\n  float n = clamp(ior, 1.0f, 3.0f);\n  float a = (n - 1.0f) / (n + 1.0f);\n  return a * a;\n}\n"
+    << "float dspbr_glass_f0(float ior) {\n  float a = 0.5f * dspbr_lut_glass_x(ior);\n  return a * a;\n}\n"
     << "// E_g(mu; r, ior): albedo of the rough dielectric interface (M_r F + M_t (1 - F), specular 1),\n"
     << "// v outside (inside = 0) or inside (inside = 1, total internal reflection included).\n"
     << "float dspbr_glass_E(float cos_theta, float roughness, float ior, int inside) {\n"
@@ -284,7 +290,7 @@ std::string glass_api_functions(const RendererLuts& L) {
     << "                     : " << e_call("dspbr_Glass_E") << ";\n}\n"
     << "// 2 Integral E_g mu dmu (the cosine average of dspbr_glass_E).\n"
     << "float dspbr_glass_E_avg(float roughness, float ior, int inside) {\n"
-    << "  float xf = clamp(2.0f * (ior - 1.0f) / (ior + 1.0f), 0.0f, 1.0f);\n"
+    << "  float xf = dspbr_lut_glass_x(ior);\n"
     << "  return inside != 0 ? " << avg_call("dspbr_Glass_inv_E_avg") << " : " << avg_call("dspbr_Glass_E_avg")
     << ";\n}\n"
     << "// Albedo of the white transparent core on one side: E_g + F_ms (1 - E_m) (the spec's M_r,ms F_ms).\n"

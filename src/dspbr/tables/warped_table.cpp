@@ -12,7 +12,10 @@ double glass_ior_of_x(double x) {
   const double c = std::clamp(x, 0.0, 1.0);
   return (2.0 + c) / (2.0 - c);
 }
-double glass_x_of_ior(double ior) { return std::clamp(2.0 * (ior - 1.0) / (ior + 1.0), 0.0, 1.0); }
+double glass_x_of_ior(double ior) {
+  const double n = std::clamp(ior, 1.0, kGlassMaxIor);  // first: +-inf and -3 go to the nearer end
+  return 2.0 * (n - 1.0) / (n + 1.0);
+}
 
 namespace {
 
