@@ -275,7 +275,8 @@ TEST(Hostile, TableAxisWithAnEmptyRangeIsRefused) {
   expect_refused("0.5", "0.5", "lo must be below hi");
   // Found by this stop's fresh tester: lo -1e308, hi 1e308 was read, and validate failed only at the
   // end on a NaN error figure.
-  expect_refused("-1e308", "1e308", "hi - lo must be a finite number");
+  expect_refused("-1e308", "1e308", "hi - lo must be finite and at least 1e-9");
+  expect_refused("0", "5e-324", "hi - lo must be finite and at least 1e-9");  // the second fresh tester's
 }
 
 // Issue 45 (#1): the JSON readers build the document with nlohmann's plain SAX parser (linear in
@@ -423,6 +424,13 @@ TEST(Hostile, OutputsNeverReplaceAFifoOrADevice) {
   EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(to_file)));
   std::ifstream old(file);
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(old), {}), "old");
+  // A refused write leaves no folder it created (found by the second fresh tester: write_results
+  // to 'newdir/' or 'a/b/c/' left the empty folders): a path ending in a slash is refused before
+  // anything, a name too long for a file after the parents were made, which are removed again.
+  for (const fs::path& p : {dir / "newdir/", dir / "a" / "b" / std::string(300, 'x')}) {
+    EXPECT_THROW(dspbr::write_text_atomically(p.string(), "new"), std::runtime_error) << p;
+    EXPECT_FALSE(fs::exists(dir / "newdir") || fs::exists(dir / "a")) << p;
+  }
   // The CLI refuses it before any work, naming the option (exit 2).
   const ToolRun run = run_dspbr("conformance reference no-such-vectors.json --out " + fifo.string());
   EXPECT_EQ(run.status, 2) << run.output;

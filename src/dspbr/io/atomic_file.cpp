@@ -1,13 +1,16 @@
 #include "dspbr/io/atomic_file.h"
 
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <vector>
 
 namespace dspbr {
 
@@ -28,19 +31,37 @@ void require_replaceable(const std::string& path) {
 
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
   const fs::path target(path);
+  if (!target.has_filename()) throw std::runtime_error("cannot write '" + path + "': give a file name, not a folder");
   require_replaceable(path);
   const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
-  fs::create_directories(parent, ec);
-  if (ec) throw std::runtime_error("cannot create folder '" + parent.string() + "': " + ec.message());
+  // The missing parent folders, created one by one and removed again (when empty) on failure.
+  std::vector<fs::path> created;
+  for (fs::path p = parent; !p.empty() && !fs::exists(fs::symlink_status(p, ec)); p = p.parent_path()) created.push_back(p);
+  std::reverse(created.begin(), created.end());
+  auto remove_created = [&] {
+    for (auto it = created.rbegin(); it != created.rend(); ++it) ::rmdir(it->c_str());
+  };
+  for (std::size_t k = 0; k < created.size(); ++k)
+    if (::mkdir(created[k].c_str(), 0777) != 0) {
+      const int err = errno;
+      const std::string folder = created[k].string();
+      created.resize(k);
+      remove_created();
+      throw std::runtime_error("cannot create folder '" + folder + "': " + std::strerror(err));
+    }
   std::string folder = (parent / ".dspbr-tmp-XXXXXX").string();
-  if (::mkdtemp(folder.data()) == nullptr)
-    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  if (::mkdtemp(folder.data()) == nullptr) {
+    const int err = errno;
+    remove_created();
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(err));
+  }
   // Keep the file name (and its extension last: image writers pick the format from it).
   const fs::path tmp = fs::path(folder) / target.filename();
   auto clean = [&] {
     fs::remove(tmp, ec);
     ::rmdir(folder.c_str());
+    remove_created();
   };
   try {
     write(tmp.string());

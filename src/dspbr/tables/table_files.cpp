@@ -61,8 +61,10 @@ std::vector<Table> read_lut_json_value(const nlohmann::json& j, const std::strin
         a.lo = jf::number_member(axes[d], "lo", at);
         a.hi = jf::number_member(axes[d], "hi", at);
         if (!(a.lo < a.hi)) throw std::runtime_error(at + ": lo must be below hi");
-        // The lookups divide by hi - lo: a span beyond the largest double made every cell index NaN.
-        if (!std::isfinite(a.hi - a.lo)) throw std::runtime_error(at + ": hi - lo must be a finite number");
+        // The lookups divide by hi - lo: a span beyond the largest double made every cell index NaN,
+        // a denormal one (lo 0, hi 5e-324) every coordinate infinite. Real axes span 0.1 to 3.
+        if (!(std::isfinite(a.hi - a.lo) && a.hi - a.lo >= 1e-9))
+          throw std::runtime_error(at + ": hi - lo must be finite and at least 1e-9");
         cells *= size_t(a.size);
         if (cells > limits::kTableCells)
           throw std::runtime_error(where + ": more than " + std::to_string(limits::kTableCells) + " cells");
