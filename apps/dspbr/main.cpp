@@ -13,6 +13,7 @@
 #include <cstring>
 #include <cstdio>
 #include <exception>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -116,6 +117,17 @@ int run_full(char** argv) {
 }
 #endif
 
+// 0 when everything printed on stdout reached it; else 1 with the reason on stderr (a full disk, a
+// closed stdout: the result would be lost while the exit status says success).
+int standard_output_written() {
+  if (std::cout.good()) errno = 0;  // else it holds the reason of the write that failed (help, version)
+  std::cout.flush();
+  const bool flushed = std::fflush(stdout) == 0;
+  if (std::cout.good() && flushed && !std::ferror(stdout)) return 0;
+  std::fprintf(stderr, "dspbr: error: cannot write the output to stdout: %s\n", std::strerror(errno ? errno : EIO));
+  return 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -149,7 +161,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // help, version
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {  // help, version
+      errno = 0;
+      app.exit(e);
+      return standard_output_written();
+    }
     std::string unknown = unknown_subcommand(app, argc, argv);
     if (unknown.empty()) unknown = unknown_option(app, argc, argv);
     std::fprintf(stderr, "dspbr: error: %s\n", dspbr::one_line(unknown.empty() ? e.what() : unknown).c_str());
@@ -167,5 +183,5 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "dspbr: error: %s\n", dspbr::one_line(e.what()).c_str());
     return 1;
   }
-  return 0;
+  return standard_output_written();
 }
