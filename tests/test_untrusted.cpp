@@ -393,3 +393,18 @@ TEST(Untrusted, AQuadToleranceBelowItsFloorIsRefused) {
                               "--samples 64 --target-error 1e-12 --out " + (dir / "q").string());
   EXPECT_EQ(q.status, 0) << q.output;
 }
+
+// Found by this stop's second fresh tester: a trailing comma was accepted in a vector option, and
+// two options that need another were ignored without a word (after 26 s of table generation).
+TEST(Untrusted, TrailingCommasAndOptionsWithoutTheirPartnerAreRefused) {
+  const fs::path dir = fresh("partners");
+  for (const std::string& cmd :
+       {std::string("eval --view 0,0,1, --light 0,0,1"), std::string("sample --view 0,0,1 --u 0,0,0,"),
+        "lut --bench-csv " + (dir / "x.csv").string() + " --out " + (dir / "o").string(),
+        "lut --transmission-compensation --out " + (dir / "o").string()}) {
+    const ToolRun r = run_dspbr(cmd);
+    EXPECT_EQ(r.status, 2) << cmd << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << cmd << ": " << r.output;
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+}

@@ -69,8 +69,9 @@ std::vector<double> parse_numbers(const std::string& option, const std::string& 
                        quote_input(text) + "'");
     out.push_back(x.value);
   }
-  if (out.size() != count)
-    throw UsageError(option + " expects " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
+  // getline drops an empty last field: "0,0,1," has 4 fields, the last one empty
+  if (out.size() != count || (!text.empty() && text.back() == ','))
+    throw UsageError(option + " expects " + std::to_string(count) + " comma-separated numbers, got '" + quote_input(text) + "'");
   return out;
 }
 
@@ -80,10 +81,10 @@ std::vector<double> parse_numbers(const std::string& option, const std::string& 
 Vec3 parse_direction(const std::string& option, const std::string& text) {
   const auto x = parse_numbers(option, text, 3);
   const double scale = std::max({std::abs(x[0]), std::abs(x[1]), std::abs(x[2])});
-  if (!(scale > 0)) throw UsageError(option + " must be a non-zero vector, got '" + text + "'");
+  if (!(scale > 0)) throw UsageError(option + " must be a non-zero vector, got '" + quote_input(text) + "'");
   const Vec3 d = normalize(Vec3{x[0] / scale, x[1] / scale, x[2] / scale});
   if (!(std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z)))
-    throw UsageError(option + " must be a finite non-zero vector, got '" + text + "'");
+    throw UsageError(option + " must be a finite non-zero vector, got '" + quote_input(text) + "'");
   return d;
 }
 

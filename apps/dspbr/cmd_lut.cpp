@@ -267,9 +267,11 @@ void add_lut_command(CLI::App& app) {
   cmd->add_option("--out", args->out, "Output folder (created when missing)");
   auto* tables_opt = cmd->add_option(
       "--tables", args->tables, "Comma-separated tables: " + lut_names_list(kPublishedLayout) + " (default: all)");
-  cmd->add_option("--scene", args->scene, "Generate only the tables the materials of this scene (.gltf/.glb/.json) need");
+  auto* scene_opt =
+      cmd->add_option("--scene", args->scene, "Generate only the tables the materials of this scene (.gltf/.glb/.json) need");
   cmd->add_flag("--transmission-compensation", args->transmission_compensation,
-                "With --scene: also the tables of the rough-transmission compensation (beyond DSPBR 2025x)");
+                "With --scene: also the tables of the rough-transmission compensation (beyond DSPBR 2025x)")
+      ->needs(scene_opt);
   cmd->add_option("--size", args->sizes,
                   "Per-table resolution NAME=SIZE, slowest axis first, e.g. GGX_E=64x64, Base_E=16x32x32 (repeatable)");
   cmd->add_option("--grid", args->grid, "Axis sampling: cell (x_i = (i+0.5)/N, default) or endpoint (x_i = i/(N-1))");
@@ -318,6 +320,8 @@ void add_lut_command(CLI::App& app) {
   cmd->callback([args, tables_opt, layout_opt] {
     args->tables_given = tables_opt->count() > 0;
     args->layouts_given = layout_opt->count() > 0;
+    if (!args->bench_csv.empty() && !args->bench && !args->bench_integrators)
+      throw UsageError("--bench-csv writes the rows of --bench or --bench-integrators: give one of them");
     if (args->bench_lookups) run_lookup_bench(*args);
     else if (args->bench || args->bench_integrators) run_bench(*args);
     else run_generate(*args);
