@@ -28,8 +28,10 @@ std::string joined(const std::vector<std::string>& v) {
   return s.empty() ? "(none)" : s;
 }
 
-// The scene files SCENE names: the file, or a folder's .gltf and .glb files (sorted by name; an
-// empty folder is an error).
+// The scene files SCENE names: the file, or a folder's .gltf and .glb entries (sorted by name; an
+// empty folder is an error). Every entry so named is read, so that one that is not a regular
+// file (a FIFO, a folder, a looping link) is refused by the reader, as conformance generate --scenes
+// refuses it, instead of being skipped without a word.
 std::vector<std::string> scene_files(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -37,7 +39,7 @@ std::vector<std::string> scene_files(const std::string& path) {
   std::vector<std::string> out;
   for (const auto& e : fs::directory_iterator(path, ec)) {
     const std::string ext = e.path().extension().string();
-    if ((ext == ".gltf" || ext == ".glb") && e.is_regular_file(ec)) out.push_back(e.path().string());
+    if (ext == ".gltf" || ext == ".glb") out.push_back(e.path().string());
   }
   if (ec) throw UsageError(path + ": cannot list the folder: " + ec.message());
   std::sort(out.begin(), out.end());
