@@ -24,6 +24,8 @@
 #include "dspbr/conformance/vector_set.h"
 #include "dspbr/io/atomic_file.h"
 #include "dspbr/io/json_write.h"
+#include "dspbr/io/read_file.h"
+#include "dspbr/limits.h"
 #include "dspbr/tables/lut_set.h"
 #include "dspbr/validate/provenance.h"
 
@@ -99,7 +101,13 @@ void run_generate(const GenerateArgs& a) {
                      {"thin_film_relative", conformance::kThinFilmRelative},
                      {"albedo_agreement", conformance::kAlbedoAgreement}}},
       {"conventions", "docs/bsdf.md: local frame (normal +z), v and l away from the surface, f_cos = f(v, l) |l.z|"}};
-  write_text(out, "vectors.json", vectors_text(conformance::vectors_document(vectors, provenance)));
+  const std::string text = vectors_text(conformance::vectors_document(vectors, provenance));
+  // A set its own readers refuse is bad input, not a success (docs/limits.md: vector files are read
+  // up to limits::kDocumentBytes).
+  if (text.size() > limits::kDocumentBytes)
+    throw UsageError("the vector set would be " + bytes_text(text.size()) + ", larger than the limit of " +
+                     bytes_text(limits::kDocumentBytes) + " of the files that read it (docs/limits.md): use fewer --directions");
+  write_text(out, "vectors.json", text);
   write_text(out, "vectors.csv", conformance::vectors_csv(vectors));
   out.commit();
   std::size_t delta = 0, albedo = 0;
@@ -134,6 +142,9 @@ void run_check(const CheckArgs& a) {
 // do not depend on the tables are left out): the demonstrations' implementations.
 void run_reference(const ReferenceArgs& a) {
   check_output_file(a.out, "--out");
+  std::error_code ec;
+  if (std::filesystem::equivalent(a.out, a.vectors, ec))
+    throw UsageError("--out: '" + quote_input(a.out) + "' is the vector file itself; name another file");
   const conformance::DemoTables tables = parse_tables_option(a.tables);
   std::vector<conformance::Vector> vectors;
   try {

@@ -166,3 +166,17 @@ def test_the_report_writes_nothing_outside_its_folder(vectors, tmp_path):
     assert not (tmp_path / "nohome").exists()
     assert (tmp_path / "report" / "index.html").is_file()
     assert not (tmp_path / "report" / ".matplotlib").exists()
+
+
+def test_outputs_its_own_tools_would_refuse_are_refused(vectors, tmp_path):
+    # Found by this stop's third fresh tester: `reference --out` naming the vector file replaced it
+    # with results, and `generate --directions 200` wrote a 22.8 MB vectors.json that check, reference
+    # and load refuse (16 MB limit).
+    copy = tmp_path / "v.json"
+    copy.write_bytes(open(vectors, "rb").read())
+    code, _, err = run_cli("conformance", "reference", copy, "--out", copy)
+    assert code == 2 and "is the vector file itself" in err, err
+    assert copy.read_bytes() == open(vectors, "rb").read()
+    code, _, err = run_cli("conformance", "generate", "--directions", 200, "--no-albedo", "--out", tmp_path / "big")
+    assert code == 2 and "larger than the limit of 16.0 MB" in err, err
+    assert not (tmp_path / "big").exists()

@@ -29,6 +29,8 @@ const char* file_kind(mode_t mode) {
   return "not a plain file";
 }
 
+}  // namespace
+
 std::string bytes_text(std::uint64_t n) {
   char buf[32];
   if (n >= (std::uint64_t(1) << 30)) std::snprintf(buf, sizeof buf, "%.1f GB", double(n) / double(1 << 30));
@@ -36,8 +38,6 @@ std::string bytes_text(std::uint64_t n) {
   else std::snprintf(buf, sizeof buf, "%llu bytes", static_cast<unsigned long long>(n));
   return buf;
 }
-
-}  // namespace
 
 RegularFile::RegularFile(const std::string& path) : path_(path) {
   // A C path ends at a NUL byte: "a.json\0x" (possible from Python) would open "a.json".

@@ -36,6 +36,9 @@ class RegularFile {
 // limit of 16 MB for this kind of file (docs/limits.md)").
 std::string read_file(const std::string& path, std::uint64_t max_bytes);
 
+// A byte count as the messages write it: "22.8 MB", "16.0 MB", "512 bytes".
+std::string bytes_text(std::uint64_t n);
+
 // What `bytes` start like when they are a well-known non-JSON format ("a PNG image",
 // "a JPEG image", "a binary glTF (GLB)", "an OpenEXR image", "a ZIP archive", "a gzip file",
 // "a PDF document"), else "".
