@@ -4561,7 +4561,8 @@ static inline float dspbr_glass_transmission_share(float roughness, float ior_in
 // viewer's side, E_l on the light's (the other side for transmission = 1).
 static inline float dspbr_glass_compensation(float cos_v, float cos_l, float roughness, float ior, int inside,
                                int transmission) {
-  int side_l = transmission != 0 ? 1 - inside : inside;
+  int side_v = inside != 0 ? 1 : 0;  // any non-zero is inside, as in the other glass functions
+  int side_l = transmission != 0 ? 1 - side_v : side_v;
   float missing_avg = 1.0f - dspbr_glass_core_E_avg(roughness, ior, side_l);
   if (missing_avg <= 1e-9f) return 0.0f;
   float mv = dspbr_lut_clampf(1.0f - dspbr_glass_core_E(fabsf(cos_v), roughness, ior, inside), 0.0f, 1.0f);

@@ -8,6 +8,7 @@
 #include "../luts/dspbr_lookup.h"
 #include "../luts/dspbr_glass_lookup.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -143,6 +144,20 @@ int main(void) {
           }
         }
       }
+  }
+  /* Any non-zero `inside` is inside, in the compensation too (found by a fresh tester: 2 and 3
+   * took the light's side as inside as well, and INT_MIN overflowed 1 - inside). */
+  for (int k = 0; k < 3; ++k) {
+    const int insides[3] = {2, -1, INT_MIN};
+    for (int t = 0; t < 2; ++t) {
+      const float got = dspbr_glass_compensation(0.5f, 0.3f, 0.6f, 1.5f, insides[k], t);
+      const float want = dspbr_glass_compensation(0.5f, 0.3f, 0.6f, 1.5f, 1, t);
+      ++calls;
+      if (!(got == want)) {
+        ++failures;
+        printf("dspbr_glass_compensation with inside %d (transmission %d): %.9g, inside 1 gives %.9g\n", insides[k], t, got, want);
+      }
+    }
   }
   printf("%d calls, %d failures\n", calls, failures);
   return failures == 0 ? 0 : 1;
