@@ -75,7 +75,11 @@ TEST(Untrusted, UrisResolveOnlyInsideTheGltfsFolder) {
   fs::create_symlink("loop", scene / "loop");
   const std::string gltf = (scene / "s.gltf").string();
   const std::string canon = fs::canonical(scene).string();
-  auto resolved = [&](const std::string& uri) { return gltf::resolve_local_uri(gltf, uri); };
+  // One resolver for every URI, as a glTF's reader does (the folder is found once), and the
+  // one-URI function beside it.
+  gltf::LocalUriResolver resolver(gltf);
+  auto resolved = [&](const std::string& uri) { return resolver.resolve(uri); };
+  EXPECT_EQ(gltf::resolve_local_uri(gltf, "sub/a.bin"), canon + "/sub/a.bin");
   EXPECT_EQ(resolved("sub/a.bin"), canon + "/sub/a.bin");
   EXPECT_EQ(resolved("sub/../sub/./a.bin"), canon + "/sub/a.bin");
   EXPECT_EQ(resolved("s%75b/a.bin"), canon + "/sub/a.bin");  // %75 is 'u'
@@ -93,6 +97,9 @@ TEST(Untrusted, UrisResolveOnlyInsideTheGltfsFolder) {
       {"out/secret.bin", "leaves the glTF's folder"},
       {"out_abs.bin", "leaves the glTF's folder through a symbolic link"},
       {"loop", "more than 40 symbolic links"},
+      // Below a missing component nothing is looked up, until ".." climbs back out of it.
+      {"missing/../out_abs.bin", "leaves the glTF's folder through a symbolic link"},
+      {"missing/x/../../out/secret.bin", "leaves the glTF's folder"},
       {"a%zz.bin", "malformed percent-encoding"},
       {"a%2", "malformed percent-encoding"},
       {"a%00.bin", "encodes a NUL byte"},

@@ -83,9 +83,10 @@ bool is_lfs_pointer(const RegularFile& file, std::uint64_t& announced) {
 }
 
 // The file a local (non-data:) URI names, confined to the glTF's folder (gltf_uri.h).
-std::string local_file(const std::string& path, const std::string& where, const std::string& uri) {
+std::string local_file(LocalUriResolver& uris, const std::string& path, const std::string& where,
+                       const std::string& uri) {
   try {
-    return resolve_local_uri(path, uri);
+    return uris.resolve(uri);
   } catch (const std::invalid_argument& e) {
     fail(path, where + ": " + e.what());
   }
@@ -93,7 +94,7 @@ std::string local_file(const std::string& path, const std::string& where, const 
 
 std::uint64_t element_size(const Json& a, const std::string& path, const std::string& where);
 
-void check_buffers(GltfFile& f, std::uint64_t bin_chunk_size, bool has_bin) {
+void check_buffers(GltfFile& f, std::uint64_t bin_chunk_size, bool has_bin, LocalUriResolver& uris) {
   const std::string& path = f.path;
   const Json& j = f.json;
   auto array = [&](const char* key) -> const Json& {
@@ -141,7 +142,7 @@ void check_buffers(GltfFile& f, std::uint64_t bin_chunk_size, bool has_bin) {
         if (used[i]) fail(path, where + ": external URI '" + quote_input(uri) + "' is not a local file");
         continue;
       } else {
-        const std::string file = local_file(path, where, uri);
+        const std::string file = local_file(uris, path, where, uri);
         std::unique_ptr<RegularFile> opened;
         try {
           opened = std::make_unique<RegularFile>(file);
@@ -237,7 +238,7 @@ void each(const Json& obj, const char* key, const std::string& path, const std::
 
 // The references between top-level arrays (glTF 2.0 schema: indices within their arrays) and
 // the "extensions" members, which are objects of objects wherever they appear.
-void check_references(const Json& j, const std::string& path) {
+void check_references(const Json& j, const std::string& path, LocalUriResolver& uris) {
   each(j, "meshes", path, "", [&](const Json& mesh, const std::string& w) {
     each(mesh, "primitives", path, w, [&](const Json& prim, const std::string& wp) {
       if (!prim.is_object()) fail(path, wp + " must be an object");
@@ -274,38 +275,89 @@ void check_references(const Json& j, const std::string& path) {
     if (im.contains("uri")) {
       if (!im["uri"].is_string()) fail(path, w + ": \"uri\" must be a string");
       const std::string uri = im["uri"].get<std::string>();
-      if (uri.rfind("data:", 0) != 0 && uri.find("://") == std::string::npos) local_file(path, w, uri);
+      if (uri.rfind("data:", 0) != 0 && uri.find("://") == std::string::npos) local_file(uris, path, w, uri);
     }
   });
   // "extensions" (glTF 2.0, 3.12): an object whose members are objects, anywhere in the asset.
-  std::vector<std::pair<const Json*, std::string>> todo = {{&j, ""}};
-  while (!todo.empty()) {
-    const auto [v, w] = todo.back();
-    todo.pop_back();
-    if (v->is_object()) {
-      for (const auto& [key, member] : v->items()) {
-        const std::string wm = w.empty() ? key : w + "." + key;
-        if (key == "extensions") {
-          if (!member.is_object()) fail(path, quote_input(wm) + " must be an object, got " + json_fields::excerpt(member));
-          for (const auto& [name, ext] : member.items())
-            if (!ext.is_object()) fail(path, quote_input(wm + "." + name) + " must be an object, got " + json_fields::excerpt(ext));
-        }
-        if (key != "extras") todo.push_back({&member, wm});
-      }
-    } else if (v->is_array()) {
-      for (std::size_t i = 0; i < v->size(); ++i) todo.push_back({&(*v)[i], w + "[" + std::to_string(i) + "]"});
+  // Depth first with one frame per level (limits::kJsonDepth): a member's path is spelled only
+  // for a message, so millions of elements cost no memory beyond the parsed JSON.
+  struct Frame {
+    const Json* v;
+    Json::const_iterator it;  // the member being visited
+    std::size_t index;        // its position, for arrays
+  };
+  std::vector<Frame> stack;
+  auto where = [&](const std::string& last) {
+    std::string w;
+    for (const Frame& f : stack)
+      w += f.v->is_object() ? (w.empty() ? "" : ".") + f.it.key() : "[" + std::to_string(f.index) + "]";
+    return w + last;
+  };
+  if (j.is_structured()) stack.push_back({&j, j.cbegin(), 0});
+  while (!stack.empty()) {
+    Frame& f = stack.back();
+    if (f.it == f.v->cend()) {
+      stack.pop_back();
+      if (!stack.empty()) ++stack.back().it, ++stack.back().index;
+      continue;
     }
+    const Json& member = *f.it;
+    if (f.v->is_object() && f.it.key() == "extras") {
+      ++f.it, ++f.index;
+      continue;
+    }
+    if (f.v->is_object() && f.it.key() == "extensions") {
+      if (!member.is_object()) fail(path, quote_input(where("")) + " must be an object, got " + json_fields::excerpt(member));
+      for (const auto& [name, ext] : member.items())
+        if (!ext.is_object()) fail(path, quote_input(where("." + name)) + " must be an object, got " + json_fields::excerpt(ext));
+    }
+    if (member.is_structured() && !member.empty())
+      stack.push_back({&member, member.cbegin(), 0});
+    else
+      ++f.it, ++f.index;
   }
 }
 
 }  // namespace
 
+namespace {
+
+// The checks on a parsed document (the GLB's BIN chunk: `has_bin`, `bin_size` bytes).
+void check_gltf(GltfFile& f, std::uint64_t bin_size, bool has_bin) {
+  const std::string& path = f.path;
+  if (!f.json.is_object()) fail(path, "the glTF JSON must be an object");
+  if (!f.json.contains("asset") || !f.json["asset"].is_object() || !f.json["asset"].contains("version"))
+    fail(path, "not a glTF asset: missing \"asset\": {\"version\": \"2.0\"}");
+  const Json& version = f.json["asset"]["version"];
+  if (!version.is_string() || version.get<std::string>().rfind("2.", 0) != 0)
+    fail(path, "glTF asset version " + json_fields::quoted(version) + " is not supported (expected \"2.x\")");
+  LocalUriResolver uris(path);
+  check_buffers(f, bin_size, has_bin, uris);
+  check_references(f.json, path, uris);
+}
+
+std::uint32_t le32(const char* p) { return le32(reinterpret_cast<const std::uint8_t*>(p)); }
+
+}  // namespace
+
+GltfFile gltf_from_json(Json json, const std::string& path) {
+  GltfFile f;
+  f.path = path;
+  f.json = std::move(json);
+  check_gltf(f, 0, false);
+  return f;
+}
+
 GltfFile parse_gltf(const std::vector<std::uint8_t>& bytes, const std::string& path) {
+  return parse_gltf(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path);
+}
+
+GltfFile parse_gltf(std::string_view bytes, const std::string& path) {
   GltfFile f;
   f.path = path;
   std::uint64_t bin_size = 0;
   bool has_bin = false;
-  const char* json_begin = reinterpret_cast<const char*>(bytes.data());
+  const char* json_begin = bytes.data();
   std::size_t json_size = bytes.size();
   if (bytes.size() >= 4 && le32(bytes.data()) == kGlbMagic) {
     f.binary = true;
@@ -338,20 +390,12 @@ GltfFile parse_gltf(const std::vector<std::uint8_t>& bytes, const std::string& p
     if (chunk == 0) fail(path, "malformed GLB: no JSON chunk");
   }
   f.json = parse_json(std::string_view(json_begin, json_size), path, "glTF file");
-  if (!f.json.is_object()) fail(path, "the glTF JSON must be an object");
-  if (!f.json.contains("asset") || !f.json["asset"].is_object() || !f.json["asset"].contains("version"))
-    fail(path, "not a glTF asset: missing \"asset\": {\"version\": \"2.0\"}");
-  const Json& version = f.json["asset"]["version"];
-  if (!version.is_string() || version.get<std::string>().rfind("2.", 0) != 0)
-    fail(path, "glTF asset version " + json_fields::quoted(version) + " is not supported (expected \"2.x\")");
-  check_buffers(f, bin_size, has_bin);
-  check_references(f.json, path);
+  check_gltf(f, bin_size, has_bin);
   return f;
 }
 
 GltfFile read_gltf(const std::string& path) {
-  const std::string bytes = read_file(path, limits::kGltfBytes);
-  return parse_gltf({bytes.begin(), bytes.end()}, path);
+  return parse_gltf(std::string_view(read_file(path, limits::kGltfBytes)), path);
 }
 
 }  // namespace dspbr::gltf

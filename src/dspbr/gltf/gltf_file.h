@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace dspbr::gltf {
@@ -29,6 +30,11 @@ struct GltfFile {
 GltfFile read_gltf(const std::string& path);
 
 // Same from bytes in memory; `path` names the asset in messages and locates external buffers.
+GltfFile parse_gltf(std::string_view bytes, const std::string& path);
 GltfFile parse_gltf(const std::vector<std::uint8_t>& bytes, const std::string& path);
+
+// Same from the JSON of a .gltf file already parsed (read_file.h's parse_json), which is moved
+// in: a caller that looked at the document first does not hold two copies.
+GltfFile gltf_from_json(nlohmann::json json, const std::string& path);
 
 }  // namespace dspbr::gltf

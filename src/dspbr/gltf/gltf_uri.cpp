@@ -53,49 +53,61 @@ std::string percent_decode(const std::string& uri) {
 }
 
 std::string resolve_local_uri(const std::string& gltf_path, const std::string& uri) {
-  const std::string quoted = "URI '" + quote_input(uri) + "' ";
+  return LocalUriResolver(gltf_path).resolve(uri);
+}
+
+std::string LocalUriResolver::resolve(const std::string& uri) {
+  auto refuse = [&](const std::string& why) { return std::invalid_argument("URI '" + quote_input(uri) + "' " + why); };
   std::string decoded;
   try {
     decoded = percent_decode(uri);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(quoted + e.what());
+    throw refuse(e.what());
   }
-  if (decoded.empty()) throw std::invalid_argument(quoted + "is empty");
-  if (decoded[0] == '/' || decoded[0] == '\\')
-    throw std::invalid_argument(quoted + "is an absolute path; only files inside the glTF's folder are read");
-  std::error_code ec;
-  const fs::path folder = fs::path(gltf_path).parent_path();
-  const fs::path base = fs::canonical(folder.empty() ? fs::path(".") : folder, ec);
-  if (ec) throw std::invalid_argument(quoted + "cannot be resolved: the glTF's folder cannot be read");
+  if (decoded.empty()) throw refuse("is empty");
+  if (decoded[0] == '/' || decoded[0] == '\\') throw refuse("is an absolute path; only files inside the glTF's folder are read");
+  if (base_.empty()) {
+    std::error_code ec;
+    const fs::path folder = fs::path(gltf_path_).parent_path();
+    base_ = fs::canonical(folder.empty() ? fs::path(".") : folder, ec).string();
+    if (ec || base_.empty()) {
+      base_.clear();
+      throw refuse("cannot be resolved: the glTF's folder cannot be read");
+    }
+  }
+  const fs::path base(base_);
   std::deque<fs::path> todo;
   for (const fs::path& part : fs::path(decoded)) todo.push_back(part);
   fs::path current = base;
   int links = 0;
+  bool missing = false;  // a component did not exist: nothing below it can exist (no lstat until "..")
   while (!todo.empty()) {
     const fs::path part = todo.front();
     todo.pop_front();
     if (part.empty() || part == ".") continue;
     if (part == "..") {
-      if (current == base) throw std::invalid_argument(quoted + "leaves the glTF's folder");
+      if (current == base) throw refuse("leaves the glTF's folder");
       current = current.parent_path();
+      missing = false;  // back in a folder that exists (or that is checked again below)
       continue;
     }
     const fs::path next = current / part;
     struct stat st {};
-    if (::lstat(next.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) {
+    if (missing || ::lstat(next.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) {
+      missing = missing || st.st_mode == 0;
       current = next;  // a file, a folder, or nothing (the reader then says it does not exist)
       continue;
     }
-    if (++links > kMaxLinks) throw std::invalid_argument(quoted + "passes through more than 40 symbolic links");
+    if (++links > kMaxLinks) throw refuse("passes through more than 40 symbolic links");
     std::string target(4096, '\0');
     const ssize_t n = ::readlink(next.c_str(), target.data(), target.size());
-    if (n < 0 || std::size_t(n) >= target.size()) throw std::invalid_argument(quoted + "has an unreadable symbolic link");
+    if (n < 0 || std::size_t(n) >= target.size()) throw refuse("has an unreadable symbolic link");
     target.resize(std::size_t(n));
     fs::path t(target);
     if (t.is_absolute()) {
       t = t.lexically_normal();
       if (!inside(t, base))
-        throw std::invalid_argument(quoted + "leaves the glTF's folder through a symbolic link");
+        throw refuse("leaves the glTF's folder through a symbolic link");
       current = base;
       t = t.lexically_relative(base);
     }

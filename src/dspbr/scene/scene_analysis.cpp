@@ -38,14 +38,17 @@ void finish(MaterialAnalysis& a, SceneAnalysis& s, bool compensation) {
 }  // namespace
 
 SceneAnalysis analyze_scene(const std::string& path, bool transmission_compensation) {
-  const std::string bytes = read_file(path, limits::kGltfBytes);
+  std::string bytes = read_file(path, limits::kGltfBytes);
   SceneAnalysis s;
   s.path = path;
   s.transmission_compensation = transmission_compensation;
   const bool glb = bytes.rfind("glTF", 0) == 0;
   const bool json_name = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
   Json doc;
-  if (!glb) doc = parse_json(bytes, path, json_name ? "material instance or glTF file" : "glTF file");
+  if (!glb) {
+    doc = parse_json(bytes, path, json_name ? "material instance or glTF file" : "glTF file");
+    std::string().swap(bytes);  // the document holds it all now
+  }
   if (!glb && doc.is_object() && doc.contains("material") && !doc.contains("asset")) {
     // A material instance file.
     const ParamDefs defs = default_param_defs();
@@ -59,7 +62,8 @@ SceneAnalysis analyze_scene(const std::string& path, bool transmission_compensat
     finish(a, s, transmission_compensation);
     s.materials.push_back(std::move(a));
   } else {
-    const gltf::GltfFile file = gltf::parse_gltf({bytes.begin(), bytes.end()}, path);
+    // The document parsed above is handed over, not parsed again (memory: docs/limits.md).
+    const gltf::GltfFile file = glb ? gltf::parse_gltf(std::string_view(bytes), path) : gltf::gltf_from_json(std::move(doc), path);
     s.warnings = file.warnings;
     for (auto& g : gltf::map_materials(file)) {
       MaterialAnalysis a;
