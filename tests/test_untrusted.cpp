@@ -370,6 +370,31 @@ TEST(Untrusted, EmptyListsAreRefused) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
+// A stray comma in a list option is refused, whole value quoted (found by the third fresh tester's
+// pass: eval/shader --components, fit --only and check --groups/--components took "a," as "a").
+TEST(Untrusted, StrayCommasInListsAreRefused) {
+  const fs::path dir = fresh("stray_commas");
+  write(dir / "v.json", "{}");
+  const std::string check = "conformance check " + (dir / "v.json").string() + " " + (dir / "v.json").string() +
+                            " --out " + (dir / "r").string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"fit --quick --only albedo, --out " + (dir / "f").string(), "--only: has an empty item (a stray comma) in 'albedo,'"},
+      {"eval --view 0,0,1 --light 0,0,1 --components ,metallic", "--components: has an empty item (a stray comma) in ',metallic'"},
+      {"shader --components metallic,,sheen --out " + (dir / "s").string(),
+       "--components: has an empty item (a stray comma) in 'metallic,,sheen'"},
+      {check + " --groups sheen,", "--groups: has an empty item (a stray comma) in 'sheen,'"},
+      {check + " --components sheen,", "--components: has an empty item (a stray comma) in 'sheen,'"},
+      {"conformance run --glsl " + (dir / "v.json").string() + " --out " + (dir / "r").string() + " --groups ,sheen",
+       "--groups: has an empty item (a stray comma) in ',sheen'"}};
+  for (const auto& [cmd, message] : cases) {
+    const ToolRun r = run_dspbr(cmd);
+    EXPECT_EQ(r.status, 2) << cmd << ": " << r.output;
+    EXPECT_EQ(r.output, "dspbr: error: " + message + "\n") << cmd;
+  }
+  fs::remove(dir / "v.json");
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
 // Output that cannot be written is an error, not a success with nothing printed (found by this
 // stop's second fresh tester: on a full disk `eval`, `scene analyze --json`, `params list` and
 // `--help-all` exited 0 with an empty file). /dev/full fails every write with ENOSPC.

@@ -205,14 +205,12 @@ void add_conformance_command(CLI::App& app) {
   chk->add_option("--out", c->out, "Report folder")->required();
   chk->add_option("--python", c->python, "Python interpreter with numpy, matplotlib and jinja2")->capture_default_str();
   chk->add_flag("--no-html", [c](int64_t) { c->html = false; }, "Write only report.json");
-  chk->add_option("--groups", c->selection.groups,
+  add_list_option(chk, "--groups", c->selection.groups,
                   "Judge only the vectors of these groups (comma-separated: plain_metal, sheen, ...; the report "
-                  "lists them)")
-      ->delimiter(',');
-  chk->add_option("--components", c->selection.components,
+                  "lists them)");
+  add_list_option(chk, "--components", c->selection.components,
                   "Judge only the vectors whose material has one of these components (comma-separated: "
-                  "clearcoat, sheen, ...)")
-      ->delimiter(',');
+                  "clearcoat, sheen, ...)");
   add_representation_options(chk, c->representation);
   chk->add_flag("--require-all", c->require_all,
                 "Every vector needs a result (by default a vector without one, or a quantity left out or null, "

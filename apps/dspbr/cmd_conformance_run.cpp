@@ -237,11 +237,9 @@ void add_conformance_run_command(CLI::App& conformance) {
       ->capture_default_str();
   run->add_option("--python", r->python, "Python interpreter with numpy, matplotlib and jinja2")->capture_default_str();
   run->add_flag("--no-html", [r](int64_t) { r->html = false; }, "Write only results.json and report.json");
-  run->add_option("--groups", r->selection.groups, "Run and judge only the vectors of these groups (comma-separated)")
-      ->delimiter(',');
-  run->add_option("--components", r->selection.components,
-                  "Run and judge only the vectors whose material has one of these components (comma-separated)")
-      ->delimiter(',');
+  add_list_option(run, "--groups", r->selection.groups, "Run and judge only the vectors of these groups (comma-separated)");
+  add_list_option(run, "--components", r->selection.components,
+                  "Run and judge only the vectors whose material has one of these components (comma-separated)");
   add_representation_options(run, r->representation);
   run->callback([r] { run_shader(*r); });
 }

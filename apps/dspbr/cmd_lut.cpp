@@ -58,25 +58,11 @@ struct LutArgs {
   int renderer_scale = 1;
 };
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (char c : s) {
-    if (c == sep) {
-      out.push_back(cur);
-      cur.clear();
-    } else if (c != ' ') {
-      cur += c;
-    }
-  }
-  out.push_back(cur);
-  return out;
-}
 
 // "64x32" -> {64, 32}.
 std::vector<int> parse_dims(const std::string& s, const std::string& what) {
   std::vector<int> dims;
-  for (const std::string& p : split(s, 'x')) {
+  for (const std::string& p : split_list(s, 'x')) {
     if (p.empty() || p.find_first_not_of("0123456789") != std::string::npos || p.size() > 6)
       throw UsageError(what + ": '" + s + "' is not a size like 32 or 16x16 or 16x16x16");
     dims.push_back(std::stoi(p));
@@ -95,7 +81,7 @@ LutOptions to_options(const LutArgs& a) {
     }
   } else if (a.tables_given) {
     opt.tables.clear();
-    for (const std::string& t : split(a.tables, ',')) {
+    for (const std::string& t : split_list(a.tables)) {
       if (!is_lut_table_name(t))
         throw UsageError("--tables: unknown table '" + t + "'" + did_you_mean(t, lut_names(kPublishedLayout)) +
                          " (choose from " + lut_names_list(kPublishedLayout) + ")");
@@ -139,7 +125,7 @@ LutOptions to_options(const LutArgs& a) {
 LutFormats to_formats(const LutArgs& a) {
   LutFormats f;
   f.exr = f.hpp = f.json = f.png = false;
-  for (const std::string& s : split(a.formats, ',')) {
+  for (const std::string& s : split_list(a.formats)) {
     if (s == "exr") f.exr = true;
     else if (s == "hpp") f.hpp = true;
     else if (s == "json") f.json = true;
@@ -201,7 +187,7 @@ void run_generate(const LutArgs& a) {
   // selecting published tables (--tables, --scene, --size) means the published layout only,
   // unless --layout says otherwise.
   const bool selection = a.tables_given || !a.scene.empty() || !a.sizes.empty();
-  for (const std::string& l : split(a.layouts_given || !selection ? a.layouts : "published", ',')) {
+  for (const std::string& l : split_list(a.layouts_given || !selection ? a.layouts : "published")) {
     if (l == "published") published = true;
     else if (l == "renderer") renderer = true;
     else throw UsageError("--layout: unknown layout '" + l + "' (choose from published, renderer)");

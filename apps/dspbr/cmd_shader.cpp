@@ -85,7 +85,8 @@ void add_shader_command(CLI::App& app) {
   auto* comps = cmd->add_option("--components", args->components,
                                 "Comma-separated components instead of a scene (metallic, opaque_dielectric, "
                                 "thin_transparent, volumetric_transparent, translucency, thin_film, sheen, flakes, "
-                                "clearcoat, emission, dispersion)");
+                                "clearcoat, emission, dispersion)")
+                   ->check(non_empty_list());
   scene->excludes(comps);
   comps->excludes(scene);
   cmd->add_option("--out", args->out, "Output folder for dspbr_specialization.h")->required();

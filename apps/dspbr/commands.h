@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "dspbr/io/atomic_file.h"
 #include "dspbr/limits.h"
@@ -60,11 +61,43 @@ inline CLI::Validator decimal_number() {
       "NUMBER");
 }
 
-// A list option (--only, --components) given an empty value: refused, as the other list options
-// refuse it (an empty value would silently mean the default, "all").
+// A comma-separated list option (--only, --components, --groups): an empty value is refused (it
+// would silently mean the default, "all"), and so is an empty item ("a,", ",a", "a,,b": a stray
+// comma), as the vector options refuse them. Options split by CLI11 (->delimiter) see each item.
 inline CLI::Validator non_empty_list() {
-  return CLI::Validator([](std::string& s) -> std::string { return s.empty() ? "must name at least one, got ''" : ""; },
-                        "LIST");
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        if (s.empty()) return "must name at least one, got ''";
+        if (s.front() == ',' || s.back() == ',' || s.find(",,") != std::string::npos)
+          return "has an empty item (a stray comma) in '" + quote_input(s) + "'";
+        return "";
+      },
+      "LIST");
+}
+
+// The items of a list value separated by `sep` (a comma, or 'x' in 64x32), spaces dropped; empty
+// items are kept for the caller's check (non_empty_list refuses them on the command line).
+inline std::vector<std::string> split_list(const std::string& s, char sep = ',') {
+  std::vector<std::string> out(1);
+  for (char c : s) {
+    if (c == sep)
+      out.emplace_back();
+    else if (c != ' ')
+      out.back() += c;
+  }
+  return out;
+}
+
+// A comma-separated list option filling `items` (given more than once, the lists add up); each
+// value is checked whole before it is split.
+inline CLI::Option* add_list_option(CLI::App* cmd, const std::string& name, std::vector<std::string>& items,
+                                    const std::string& description) {
+  auto take = [&items](const std::vector<std::string>& values) {
+    items.clear();
+    for (const std::string& v : values)
+      for (std::string& item : split_list(v)) items.push_back(std::move(item));
+  };
+  return cmd->add_option_function<std::vector<std::string>>(name, take, description)->check(non_empty_list());
 }
 
 // An output file option (--out FILE), checked before the work: its folder exists (a command that
