@@ -395,6 +395,32 @@ TEST(Untrusted, StrayCommasInListsAreRefused) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
+// Options a layout would ignore are refused (found by the third fresh tester's pass: `lut --layout
+// renderer` wrote its fixed set whatever --tables/--size/--grid/--scene said, --renderer-scale
+// without the renderer layout and --half with --formats json changed nothing).
+TEST(Untrusted, LutOptionsALayoutWouldIgnoreAreRefused) {
+  const fs::path dir = fresh("lut_ignored");
+  const std::string out = " --out " + (dir / "o").string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"lut --layout renderer --tables GGX_E", "--tables applies to the published tables only"},
+      {"lut --layout published,renderer --size GGX_E=8x8", "--size applies to the published tables only"},
+      {"lut --layout renderer --grid endpoint", "--grid applies to the published tables only"},
+      {"lut --tables GGX_E --renderer-scale 2", "--renderer-scale sets the renderer layout's resolution"},
+      {"lut --formats json --half", "--half writes EXRs as 16-bit floats"}};
+  for (const auto& [cmd, message] : cases) {
+    const ToolRun r = run_dspbr(cmd + out);
+    EXPECT_EQ(r.status, 2) << cmd << ": " << r.output;
+    EXPECT_EQ(r.output.rfind("dspbr: error: " + message, 0), 0u) << cmd << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << cmd << ": " << r.output;
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+  // --grid alone selects the published layout, as --tables does (the renderer set is not written).
+  const ToolRun g = run_dspbr("lut --quiet --grid endpoint --tables GGX_E_avg --size GGX_E_avg=3 --formats json" + out);
+  EXPECT_EQ(g.status, 0) << g.output;
+  EXPECT_TRUE(fs::exists(dir / "o" / "dspbr_luts.json"));
+  EXPECT_FALSE(fs::exists(dir / "o" / "dspbr_renderer_luts.json"));
+}
+
 // Output that cannot be written is an error, not a success with nothing printed (found by this
 // stop's second fresh tester: on a full disk `eval`, `scene analyze --json`, `params list` and
 // `--help-all` exited 0 with an empty file). /dev/full fails every write with ENOSPC.

@@ -37,6 +37,7 @@ struct LutArgs {
   bool tables_given = false;
   std::vector<std::string> sizes;
   std::string grid = "cell";
+  bool grid_given = false;
   std::string formats = "exr,png,hpp,json";
   std::string integrator;  // empty: each table's default (lut_default_integrator)
   int samples = 0;
@@ -56,6 +57,7 @@ struct LutArgs {
   std::string layouts = "published,renderer";
   bool layouts_given = false;
   int renderer_scale = 1;
+  bool renderer_scale_given = false;
 };
 
 
@@ -184,14 +186,23 @@ void run_generate(const LutArgs& a) {
   }
   bool published = false, renderer = false;
   // The renderer layout is one set (Base_E and the averages derive from GGX_E and GGX_beta):
-  // selecting published tables (--tables, --scene, --size) means the published layout only,
-  // unless --layout says otherwise.
-  const bool selection = a.tables_given || !a.scene.empty() || !a.sizes.empty();
+  // selecting published tables (--tables, --scene, --size) or their sampling (--grid) means the
+  // published layout only, unless --layout says otherwise.
+  const bool selection = a.tables_given || !a.scene.empty() || !a.sizes.empty() || a.grid_given;
   for (const std::string& l : split_list(a.layouts_given || !selection ? a.layouts : "published")) {
     if (l == "published") published = true;
     else if (l == "renderer") renderer = true;
     else throw UsageError("--layout: unknown layout '" + l + "' (choose from published, renderer)");
   }
+  // Options that would be ignored are refused: the renderer layout is one fixed set (its
+  // resolution is --renderer-scale), and --half changes only EXRs.
+  if (renderer && (a.tables_given || !a.scene.empty() || !a.sizes.empty() || a.grid_given))
+    throw UsageError(std::string(a.tables_given ? "--tables" : !a.scene.empty() ? "--scene" : !a.sizes.empty() ? "--size" : "--grid") +
+                     " applies to the published tables only; the renderer layout is one fixed set (its "
+                     "resolution: --renderer-scale). Give --layout published, or leave the option out");
+  if (a.renderer_scale_given && !renderer)
+    throw UsageError("--renderer-scale sets the renderer layout's resolution: give --layout renderer (or leave it out)");
+  if (a.half && !formats.exr) throw UsageError("--half writes EXRs as 16-bit floats: give exr in --formats (or leave --half out)");
   // Every file is written into a private staging folder inside --out and moved into place once
   // the whole set is complete (io/output_folder.h); SIGINT/SIGTERM discard the staging folder.
   InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
@@ -260,7 +271,7 @@ void add_lut_command(CLI::App& app) {
       ->needs(scene_opt);
   cmd->add_option("--size", args->sizes,
                   "Per-table resolution NAME=SIZE, slowest axis first, e.g. GGX_E=64x64, Base_E=16x32x32 (repeatable)");
-  cmd->add_option("--grid", args->grid, "Axis sampling: cell (x_i = (i+0.5)/N, default) or endpoint (x_i = i/(N-1))");
+  auto* grid_opt = cmd->add_option("--grid", args->grid, "Axis sampling: cell (x_i = (i+0.5)/N, default) or endpoint (x_i = i/(N-1))");
   cmd->add_option("--formats", args->formats, "Comma-separated output formats: exr, png (16-bit), hpp (headers, lookup code), json (default: all)");
   cmd->add_option("--integrator", args->integrator,
                   "quad (adaptive Gauss-Kronrod over the microfacet normal, deterministic; the default), qmc "
@@ -281,8 +292,8 @@ void add_lut_command(CLI::App& app) {
   auto* layout_opt = cmd->add_option("--layout", args->layouts,
                   "Comma-separated layouts: published (the published grids: EXR, pbrlut.hpp, dspbr_luts.json) and "
                   "renderer (warped grids, Catmull-Rom lookups: dspbr_renderer_luts.json, renderer/*.exr|png, "
-                  "dspbr_lookup.h|glsl|hlsl); default: both, or published alone with --tables/--scene/--size");
-  cmd->add_option("--renderer-scale", args->renderer_scale,
+                  "dspbr_lookup.h|glsl|hlsl); default: both, or published alone with --tables/--scene/--size/--grid");
+  auto* scale_opt = cmd->add_option("--renderer-scale", args->renderer_scale,
                   "Renderer layout: (N - 1) * scale + 1 samples per axis of the default N (default: 1)")
       ->transform(decimal_integer(1, 16, "a scale"));
   cmd->add_flag("--half", args->half, "Write EXRs as 16-bit half floats (default: 32-bit float)");
@@ -303,8 +314,10 @@ void add_lut_command(CLI::App& app) {
   cmd->add_option("--bench-csv", args->bench_csv,
                   "With --bench/--bench-integrators: also write the integrators' rows to this CSV file (the input "
                   "of scripts/plot_integrator_study.py)");
-  cmd->callback([args, tables_opt, layout_opt] {
+  cmd->callback([args, tables_opt, layout_opt, grid_opt, scale_opt] {
     args->tables_given = tables_opt->count() > 0;
+    args->grid_given = grid_opt->count() > 0;
+    args->renderer_scale_given = scale_opt->count() > 0;
     args->layouts_given = layout_opt->count() > 0;
     if (!args->bench_csv.empty() && !args->bench && !args->bench_integrators)
       throw UsageError("--bench-csv writes the rows of --bench or --bench-integrators: give one of them");
