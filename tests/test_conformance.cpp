@@ -329,6 +329,22 @@ TEST(Conformance, SubsetsAreNotSuppliedAndSelectionsKeepWhatTheyName) {
   EXPECT_TRUE(csv[0].f_cos && !csv[0].pdf);
   EXPECT_TRUE(!csv[1].f_cos && csv[1].pdf);
   EXPECT_THROW(parse_results("id,f_cos_r,f_cos_g,f_cos_b\na,1,,3\n", "r.csv"), std::runtime_error);
+  // A misspelt top-level member and a delta lobe without a direction are refused (the third
+  // fresh tester's pass found both accepted).
+  const auto message = [](const char* text) {
+    try {
+      parse_results(text, "r.json");
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(message(R"({"results": [], "resutls": []})"),
+            "r.json: unknown member 'resutls' (a results file holds only \"results\")");
+  EXPECT_EQ(message(R"({"results": [{"id": "a", "delta": [{"l": [0, 0, 0], "value": [1, 1, 1]}]}]})"),
+            "r.json: results[0] (id 'a').delta[0].l must be a unit vector (length 1 within 1e-3), got length 0.0");
+  EXPECT_EQ(message(R"({"results": [{"id": "a", "delta": [{"l": [0, 0, 1.0005], "value": [1, 1, 1]}]}]})"),
+            "(accepted)");  // a float direction
 
   // --groups / --components.
   std::vector<Vector> sel_v = vs;
@@ -527,8 +543,17 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
   const ToolRun bad_ref = run_dspbr("conformance reference '" + (dir / "badv.json").string() + "' --out '" +
                                     (dir / "never.json").string() + "'");
   EXPECT_EQ(bad_ref.status, 2) << bad_ref.output;
-  EXPECT_NE(bad_ref.output.find("badv.json: vector 'a': parameter 'roughness'"), std::string::npos) << bad_ref.output;
+  EXPECT_NE(bad_ref.output.find("badv.json: vectors[0] (id 'a').material: parameter 'roughness'"), std::string::npos)
+      << bad_ref.output;
   EXPECT_FALSE(fs::exists(dir / "never.json"));
+  // `check` reads the same file the same way, whatever its options (the third fresh tester's pass:
+  // the material was validated only with --tables or --min-roughness).
+  const ToolRun bad_check_v = run_dspbr("conformance check '" + (dir / "badv.json").string() + "' '" +
+                                        (dir / "badv.json").string() + "' --no-html --out '" + (dir / "never").string() + "'");
+  EXPECT_EQ(bad_check_v.status, 2) << bad_check_v.output;
+  EXPECT_NE(bad_check_v.output.find("badv.json: vectors[0] (id 'a').material: parameter 'roughness'"), std::string::npos)
+      << bad_check_v.output;
+  EXPECT_FALSE(fs::exists(dir / "never"));
   // `reference --out` is checked before the work (issue 45, poor list: a missing folder was created
   // after the work): a folder that does not exist is a usage error, and nothing is created.
   const ToolRun no_folder = run_dspbr("conformance reference '" + vectors + "' --out '" +

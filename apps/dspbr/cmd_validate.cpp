@@ -149,8 +149,8 @@ void run_validate(const ValidateArgs& a) {
                   w["spec"].get<std::string>().c_str(), w["reason"].get<std::string>().c_str());
   for (const std::string& f : r.failures) std::printf("  FAILED %s\n", f.c_str());
   if (r.failed_checks > 0 && !a.allow_failures)
-    throw std::runtime_error(fmt::format("{} validation check(s) failed (listed above; details in {}/index.html)",
-                                         r.failed_checks, a.out));
+    throw std::runtime_error(fmt::format("{} validation check(s) failed (listed above; details in {}/{})", r.failed_checks,
+                                         a.out, a.html ? "index.html" : "data/report.json"));
 }
 
 }  // namespace

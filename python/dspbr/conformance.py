@@ -38,7 +38,10 @@ def _number(x, what, vid):
     import numbers
     if isinstance(x, bool) or not isinstance(x, numbers.Real) or isinstance(x, (str, bytes)):
         raise ValueError(f"vector {vid!r}: {what} must be a number, got {x!r}")
-    value = float(x)
+    try:
+        value = float(x)
+    except OverflowError:  # an int beyond a double's range
+        raise ValueError(f"vector {vid!r}: {what} must be a finite number, got an integer of {int(x).bit_length()} bits") from None
     if not math.isfinite(value):
         raise ValueError(f"vector {vid!r}: {what} must be a finite number, got {x!r}")
     return value
@@ -66,8 +69,12 @@ def run(vectors, my_eval):
     elif isinstance(vectors, dict):
         vectors = vectors["vectors"]
     results = []
+    seen = set()
     for v in vectors:
         vid = v["id"]
+        if vid in seen:  # the checker would refuse the results file
+            raise ValueError(f"vector {vid!r} appears twice in the vectors")
+        seen.add(vid)
         out = my_eval(v)
         r = {"id": vid}
         if isinstance(out, dict):
@@ -132,7 +139,11 @@ def run_batched(vectors, my_eval_batch):
                 raise ValueError(f"vector {batch[0]['id']!r}: delta lobes are not batched (run() takes them per vector)")
             shape = (len(batch),) if name == "pdf" else (len(batch), 3)
             if name in _KEYS:
-                value = np.asarray(value, dtype=np.float64)
+                value = np.asarray(value)
+                if value.dtype.kind not in "iuf":  # numbers; not booleans, strings or objects
+                    raise ValueError(f"vector {batch[0]['id']!r}: {name} of a batch must be an array of numbers, "
+                                     f"got dtype {value.dtype}")
+                value = value.astype(np.float64)
                 if value.shape != shape:
                     raise ValueError(f"vector {batch[0]['id']!r}: {name} of a batch of {len(batch)} must have shape "
                                      f"{shape}, got {value.shape}")
@@ -148,9 +159,17 @@ def run_batched(vectors, my_eval_batch):
 
 def write_results(results, path):
     """Writes the results of run() as JSON (the format `dspbr conformance check` reads), atomically:
-    the text is made first (ValueError on a non-finite number, nothing written), then written to a
+    the text is made first (ValueError on a document that is not {"results": [{"id": ..., ...}]} or
+    on a non-finite number, nothing written), then written to a
     temporary file next to `path` and renamed over it, so an old file stays whole on any failure."""
     from ._dspbr import write_text_atomically  # the compiled module
+    if not isinstance(results, dict) or set(results) != {"results"} or not isinstance(results["results"], list):
+        raise ValueError(f"{path}: results must be run()'s {{\"results\": [...]}}, got {type(results).__name__}"
+                         + (f" with members {sorted(results)}" if isinstance(results, dict) else ""))
+    for k, r in enumerate(results["results"]):
+        if not isinstance(r, dict) or not isinstance(r.get("id"), str) or not set(r) <= {"id", *_KEYS}:
+            raise ValueError(f"{path}: results[{k}] must be {{\"id\": str, \"f_cos\": ..., ...}} with keys among "
+                             f"id, {', '.join(_KEYS)}; got {r!r:.200}")
     text = json.dumps(results, allow_nan=False) + "\n"
     write_text_atomically(path, text)
 

@@ -100,3 +100,30 @@ def test_run_takes_numbers_of_any_real_kind():
     assert results[1]["f_cos"] == [1.0, 2.0, 3.0]
     assert results[2] == {"id": "a", "f_cos": [0.0, 0.0, 0.0], "pdf": 2.0,
                           "delta": [{"l": [0.0, 0.0, 1.0], "value": [1.0, 1.0, 1.0]}]}
+
+
+# Found by the third fresh tester's pass: run() took duplicate ids (the checker then refuses the
+# file) and an integer beyond a double's range raised OverflowError naming no vector;
+# run_batched() took arrays of strings or booleans as numbers; write_results() wrote any document.
+def test_run_refuses_duplicate_ids_and_huge_integers():
+    with pytest.raises(ValueError, match="vector 'a' appears twice"):
+        dc.run([{"id": "a"}, {"id": "a"}], lambda v: [0, 0, 0])
+    with pytest.raises(ValueError, match=r"vector 'a': f_cos\[0\] must be a finite number, got an integer of 1101 bits"):
+        dc.run([{"id": "a"}], lambda v: [2 ** 1100, 0, 0])
+
+
+@pytest.mark.parametrize("value", [[["1", "2", "3"]], [[True, False, True]], [[None, 1, 2]]])
+def test_run_batched_refuses_arrays_that_are_not_numbers(value):
+    pytest.importorskip("numpy")
+    vectors = [{"id": "a", "material": {"material": "generic"}, "v": [0, 0, 1], "l": [0, 0, 1]}]
+    with pytest.raises(ValueError, match="vector 'a': f_cos of a batch must be an array of numbers, got dtype"):
+        dc.run_batched(vectors, lambda m, o, v, l: value)
+
+
+@pytest.mark.parametrize("doc", [[], {"results": {}}, {"results": [], "x": 1}, {"results": [{"f_cos": [0, 0, 0]}]},
+                                 {"results": [{"id": "a", "pfd": 1}]}])
+def test_write_results_refuses_what_run_does_not_make(tmp_path, doc):
+    p = tmp_path / "results.json"
+    with pytest.raises(ValueError, match="results"):
+        dc.write_results(doc, p)
+    assert os.listdir(tmp_path) == []

@@ -28,6 +28,9 @@ std::vector<Result> parse_json_results(std::string_view bytes, const std::string
   std::vector<Result> out;
   try {
     const Json& arr = jf::array_member(doc, "results", "");
+    for (const auto& [key, value] : doc.items())  // a misspelt member would be silently dropped
+      if (key != "results")
+        throw std::runtime_error("unknown member " + in_quotes(key) + " (a results file holds only \"results\")");
     for (std::size_t i = 0; i < arr.size(); ++i) {
       const std::string where = jf::index_path("results", i);
       Result r;
@@ -49,6 +52,11 @@ std::vector<Result> parse_json_results(std::string_view bytes, const std::string
         for (std::size_t k = 0; k < d.size(); ++k) {
           const std::string wk = jf::index_path(jf::member_path(w, "delta"), k);
           const Rgb l = read_rgb(d[k], "l", wk);
+          // A direction computed in float: unit within 1e-3 (the lobes are matched by direction).
+          const double length = std::sqrt(l.r * l.r + l.g * l.g + l.b * l.b);
+          if (!(std::abs(length - 1) <= 1e-3))
+            throw std::runtime_error(jf::member_path(wk, "l") + " must be a unit vector (length 1 within 1e-3), got length " +
+                                     jf::excerpt(Json(length)));
           lobes.push_back({Vec3{l.r, l.g, l.b}, read_rgb(d[k], "value", wk)});
         }
         r.delta = std::move(lobes);

@@ -86,6 +86,11 @@ Vector read_vector(const Json& j, const std::string& where) {
     throw std::runtime_error(jf::member_path(w, "components") + ": " + e.what());
   }
   v.material = OJson(jf::object_member(j, "material", w));
+  try {
+    vector_material(v);  // a valid instance of a built-in material, whatever the checker's options
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(jf::member_path(w, "material") + ": " + e.what());
+  }
   if (j.contains("gltf_material")) v.gltf_material = OJson(jf::object_member(j, "gltf_material", w));
   if (j.contains("options")) {
     v.options = OJson(jf::object_member(j, "options", w));
