@@ -421,6 +421,38 @@ TEST(Untrusted, LutOptionsALayoutWouldIgnoreAreRefused) {
   EXPECT_FALSE(fs::exists(dir / "o" / "dspbr_renderer_luts.json"));
 }
 
+// Messages that said something else than what happened (the third fresh tester's pass): a folder
+// given to validate --luts ("File is actually a directory"), an empty file name ("' does not
+// exist"), a folder reference cannot write in (exit 1 after the work), a stdout that failed
+// during the command ("Input/output error" for a full disk).
+TEST(Untrusted, MessagesSayWhatHappened) {
+  const fs::path dir = fresh("messages");
+  fs::create_directory(dir / "tables.json");
+  const ToolRun luts = run_dspbr("validate --quick --luts " + (dir / "tables.json").string() + " --out " + (dir / "r").string());
+  EXPECT_EQ(luts.status, 2);
+  EXPECT_EQ(luts.output, "dspbr: error: --luts: " + (dir / "tables.json").string() + " is a directory\n");
+  const ToolRun empty = run_dspbr("params check ''");
+  EXPECT_NE(empty.output.find("'': an empty file name names no file"), std::string::npos) << empty.output;
+  // sysfs refuses new files even to root (access() says yes): refused before the work, exit 2.
+  if (fs::is_directory("/sys/kernel")) {
+    const ToolRun sys = run_dspbr("conformance reference " + (dir / "v.json").string() + " --out /sys/kernel/r.json");
+    EXPECT_EQ(sys.status, 2) << sys.output;
+    EXPECT_EQ(sys.output.rfind("dspbr: error: --out: cannot write in the folder '/sys/kernel' (", 0), 0u) << sys.output;
+  }
+  const std::string cmd = std::string("\"") + DSPBR_EXE + "\" lut --bench-lookups --bench-points 10 > /dev/full 2> '" +
+                          (dir / "err.txt").string() + "'";
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  const std::string err = read_all(dir / "err.txt");
+  EXPECT_TRUE(err == "dspbr: error: cannot write the output to stdout: No space left on device\n" ||
+              err == "dspbr: error: cannot write the output to stdout (a write failed; the output is incomplete)\n")
+      << err;
+  fs::remove(dir / "err.txt");
+  fs::remove(dir / "tables.json");
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
 // Output that cannot be written is an error, not a success with nothing printed (found by this
 // stop's second fresh tester: on a full disk `eval`, `scene analyze --json`, `params list` and
 // `--help-all` exited 0 with an empty file). /dev/full fails every write with ENOSPC.

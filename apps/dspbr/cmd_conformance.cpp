@@ -132,9 +132,10 @@ void run_check(const CheckArgs& a) {
   OJson provenance = output_provenance();
   provenance["vectors"] = a.vectors;
   provenance["results"] = a.results;
+  // The output folder before the work of --tables/--min-roughness: an unwritable one is refused first.
+  InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
   expect_with(a.representation, vectors, provenance, a.vectors);
   Judgement j{a.vectors, a.results, a.out, a.python, script, a.selection};
-  InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
   judge_results(j, cleanup.out(), vectors, results, provenance);
 }
 

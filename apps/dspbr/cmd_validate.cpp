@@ -169,8 +169,7 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "Seed of every random stream (same seed -> same report)")
       ->capture_default_str()
       ->transform(non_negative_integer());
-  cmd->add_option("--luts", args->luts, "Table file (dspbr_luts.json or dspbr_renderer_luts.json) the BSDF cases read instead of the built-in set of --tables; every table the cases read is checked against the reference quadrature")
-      ->check(CLI::ExistingFile);
+  cmd->add_option("--luts", args->luts, "Table file (dspbr_luts.json or dspbr_renderer_luts.json) the BSDF cases read instead of the built-in set of --tables; every table the cases read is checked against the reference quadrature");
   cmd->add_option("--tables", args->tables,
                   "Energy tables of the BSDF cases: renderer (default) or published (shows the published layout's "
                   "artefacts, e.g. energy gains at grazing angles)")

@@ -3,6 +3,10 @@
 // by throwing std::exception (exit 1); main() prints "dspbr: error: <message>".
 #pragma once
 #include <CLI/CLI.hpp>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstring>
 #include <algorithm>
 #include <cerrno>
 #include <climits>
@@ -111,6 +115,20 @@ inline void check_output_file(const std::string& path, const std::string& option
   if (!fs::is_directory(folder, ec))
     throw UsageError(option + ": the folder '" + quote_input(folder.string()) + "' does not exist (create it first)");
   if (fs::is_directory(p, ec)) throw UsageError(option + ": '" + quote_input(path) + "' is a folder");
+  // Can a file be made there? Asked of the filesystem itself, which sees what access() does not
+  // (a read-only mount; sysfs, even for root): an unnamed file (O_TMPFILE) leaves nothing behind;
+  // where the filesystem has none, a named probe this run creates and removes.
+  int probe = ::open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+  if (probe < 0 && (errno == EOPNOTSUPP || errno == EISDIR)) {
+    std::string name = (folder / ".dspbr-probe-XXXXXX").string();
+    probe = ::mkstemp(name.data());
+    if (probe >= 0) ::unlink(name.c_str());
+  }
+  if (probe >= 0)
+    ::close(probe);
+  else if (errno == EACCES || errno == EPERM || errno == EROFS || errno == ENOSPC || errno == EDQUOT)
+    throw UsageError(option + ": cannot write in the folder '" + quote_input(folder.string()) + "' (" +
+                     std::strerror(errno) + ")");
   try {
     require_replaceable(path);
   } catch (const std::runtime_error& e) {

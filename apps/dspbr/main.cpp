@@ -124,7 +124,12 @@ int standard_output_written() {
   std::cout.flush();
   const bool flushed = std::fflush(stdout) == 0;
   if (std::cout.good() && flushed && !std::ferror(stdout)) return 0;
-  std::fprintf(stderr, "dspbr: error: cannot write the output to stdout: %s\n", std::strerror(errno ? errno : EIO));
+  // errno holds the reason when the last write failed; a write that failed earlier (a command's own
+  // fflush) left only the stream's error flag, and no reason is made up for it.
+  if (errno)
+    std::fprintf(stderr, "dspbr: error: cannot write the output to stdout: %s\n", std::strerror(errno));
+  else
+    std::fprintf(stderr, "dspbr: error: cannot write the output to stdout (a write failed; the output is incomplete)\n");
   return 1;
 }
 

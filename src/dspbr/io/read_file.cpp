@@ -42,6 +42,7 @@ std::string bytes_text(std::uint64_t n) {
 RegularFile::RegularFile(const std::string& path) : path_(path) {
   // A C path ends at a NUL byte: "a.json\0x" (possible from Python) would open "a.json".
   if (path.find('\0') != std::string::npos) fail(quote_input(path), ": a file name cannot hold a NUL byte");
+  if (path.empty()) fail("''", ": an empty file name names no file");
   // O_NONBLOCK: opening a FIFO without a writer would block; it is refused after fstat instead.
   fd_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
   if (fd_ < 0) {
