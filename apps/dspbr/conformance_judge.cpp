@@ -1,9 +1,6 @@
 #include "conformance_judge.h"
 
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
 
 #include "commands.h"
 #include "report_script.h"
@@ -13,16 +10,7 @@
 namespace dspbr::cli {
 
 void write_text(const OutputFolder& out, const std::string& name, const std::string& text) {
-  errno = 0;
-  std::ofstream f(out.staging() + "/" + name, std::ios::binary);
-  f << text;
-  f.flush();
-  const int write_error = errno;
-  f.close();
-  // The message names the file as it would have been (the staging folder is gone when it is read)
-  // and the system's reason (a full disk: "No space left on device").
-  if (!f) throw std::runtime_error("cannot write '" + out.dir() + "/" + name + "': " +
-                                   std::strerror(write_error ? write_error : errno ? errno : EIO));
+  write_text_file(out.staging() + "/" + name, text, out.dir() + "/" + name);
 }
 
 void add_representation_options(CLI::App* cmd, RepresentationOptions& o) {

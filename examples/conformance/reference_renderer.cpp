@@ -10,22 +10,10 @@
 
 extern "C" int renderer_eval(const char* material_json, const char* options_json, const double v[3],
                              const double l[3], double f_cos[3], double* pdf) {
-  try {
-    dspbr::conformance::Vector x;
-    x.material = nlohmann::ordered_json::parse(material_json);
-    if (options_json[0] != '\0') x.options = nlohmann::ordered_json::parse(options_json);
-    x.v = {v[0], v[1], v[2]};
-    x.l = {l[0], l[1], l[2]};
-    const dspbr::conformance::Evaluation e = dspbr::conformance::evaluate(x, dspbr::LutSet::builtin());
-    f_cos[0] = e.f_cos.r, f_cos[1] = e.f_cos.g, f_cos[2] = e.f_cos.b;
-    *pdf = e.pdf;
-    return 0;
-  } catch (const std::exception&) {
-    return 1;
-  }
+  return renderer_eval_batch(material_json, options_json, 1, v, l, f_cos, pdf);  // a batch of one
 }
 
-// The batched form: the material parsed once, then every direction pair.
+// The batched form: the material parsed and its BSDF built once, then every direction pair.
 extern "C" int renderer_eval_batch(const char* material_json, const char* options_json, int n, const double* v,
                                    const double* l, double* f_cos, double* pdf) {
   try {

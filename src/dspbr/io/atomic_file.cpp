@@ -83,19 +83,20 @@ void write_atomically(const std::string& path, const std::function<void(const st
   ::rmdir(folder.c_str());
 }
 
+void write_text_file(const std::string& file, const std::string& text, const std::string& named_as) {
+  errno = 0;
+  std::ofstream out(file, std::ios::binary);
+  if (!out) throw std::runtime_error("cannot write '" + named_as + "': " + std::strerror(errno ? errno : EIO));
+  out << text;
+  out.flush();
+  const int write_error = errno;
+  out.close();
+  if (!out)
+    throw std::runtime_error("cannot write '" + named_as + "': " + std::strerror(write_error ? write_error : errno ? errno : EIO));
+}
+
 void write_text_atomically(const std::string& path, const std::string& text) {
-  // Messages name the target and the system's reason (a full disk: "No space left on device"),
-  // never the temporary file, which is gone by the time they are read.
-  write_atomically(path, [&](const std::string& tmp) {
-    errno = 0;
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno ? errno : EIO));
-    out << text;
-    out.flush();
-    const int write_error = errno;
-    out.close();
-    if (!out) throw std::runtime_error("cannot write '" + path + "': " + std::strerror(write_error ? write_error : errno ? errno : EIO));
-  });
+  write_atomically(path, [&](const std::string& tmp) { write_text_file(tmp, text, path); });
 }
 
 }  // namespace dspbr

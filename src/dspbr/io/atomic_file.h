@@ -23,4 +23,9 @@ void require_replaceable(const std::string& path);
 // Writes a text file atomically.
 void write_text_atomically(const std::string& path, const std::string& text);
 
+// Writes `text` to `file` (not atomically: a file in a staging folder, or write_atomically's
+// temporary). Throws std::runtime_error "cannot write '<named_as>': <system's reason>", naming the
+// file as the user will know it (the temporary is gone when the message is read).
+void write_text_file(const std::string& file, const std::string& text, const std::string& named_as);
+
 }  // namespace dspbr
