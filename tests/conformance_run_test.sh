@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `dspbr conformance run --glsl/--hlsl` on the Vulkan device (CTest conformance_run_glsl,
 # conformance_run_hlsl): the kit's reference shader (examples/conformance/shader_reference.glsl)
-# passes every vector; a broken one (tests/data/conformance/shader_broken.glsl: clearcoat 5 % too
+# passes every vector; the glTF one (examples/conformance/shader_gltf.glsl) every vector with a glTF
+# material; a broken one (tests/data/conformance/shader_broken.glsl: clearcoat 5 % too
 # bright, sheen not supported, no pdf) exits 1 with clearcoat FAIL, sheen NOT SUPPLIED, the other
 # components PASS and the pdf not judged; a shader that does not compile exits 2 naming its file and
 # line and leaves nothing. Exit 77 (skipped) without a Vulkan device.
@@ -19,6 +20,23 @@ cat "$work/reference.log"
 [ $rc -eq 0 ] || fail "the reference shader: exit $rc"
 grep -q "on .*: [0-9]* vectors" "$work/reference.log" || fail "the device is not named"
 [ -f "$work/reference/results.json" ] || fail "no results.json"
+
+# The glTF factors reach the shader: a renderer mapping x.gltf (examples/conformance/shader_gltf.glsl)
+# passes every vector that carries a glTF material, and judges exactly those (glTF's defaults in
+# place of the factors would fail them).
+"$dspbr" conformance run "$vectors" --"$lang" "$src/examples/conformance/shader_gltf.glsl" \
+  --no-html --out "$work/gltf" > "$work/gltf.log" 2>&1
+rc=$?
+cat "$work/gltf.log"
+[ $rc -eq 0 ] || fail "the glTF shader: exit $rc"
+/usr/bin/python3 - "$vectors" "$work/gltf/report.json" <<'PY' || fail "the glTF shader's report"
+import json, sys
+vectors = json.load(open(sys.argv[1]))["vectors"]
+r = json.load(open(sys.argv[2]))
+with_gltf = sum(1 for v in vectors if "gltf_material" in v)
+judged = r["summary"]["vectors"] - r["summary"]["not_supplied"]
+assert with_gltf > len(vectors) // 2 and judged == with_gltf, (with_gltf, judged, r["summary"])
+PY
 
 "$dspbr" conformance run "$vectors" --"$lang" "$src/tests/data/conformance/shader_broken.glsl" \
   --no-html --out "$work/broken" > "$work/broken.log" 2>&1

@@ -28,6 +28,7 @@
 #include "dspbr/conformance/results.h"
 #include "dspbr/conformance/vector_file.h"
 #include "dspbr/conformance/vector_set.h"
+#include "dspbr/shader/gltf_factors.h"
 #include "dspbr/io/json_write.h"
 #include "dspbr/io/read_file.h"
 #include "dspbr/shader/material_mapping.h"
@@ -127,9 +128,19 @@ std::vector<uint32_t> compile_kernel(const RunArgs& a, const OutputFolder& out) 
   return words;
 }
 
-// Vector x as the driver reads it (kit_driver.glsl): the material, the options, v and l.
+// kit.glsl's DSPBR_CONFORMANCE_RECORD_FLOATS: the shader inputs, has_gltf and the glTF factors.
+constexpr std::size_t kRecordFloats = shader::kShaderInputFloats + 1 + std::size_t(dspbr_shader::DSPBR_GLTF_FLOATS);
+
+// Vector x as the driver reads it (kit_driver.glsl): the material, the options, v and l, then
+// whether it has a glTF material and that material's factors (glTF's defaults without one).
 void pack(const conformance::Vector& x, float* out) {
   shader::pack_shader_inputs(conformance::vector_material(x), conformance::vector_options(x), x.v, x.l, out);
+  std::size_t k = shader::kShaderInputFloats;
+  const bool has_gltf = !x.gltf_material.is_null();
+  out[k] = has_gltf ? 1.0f : 0.0f;
+  const dspbr_shader::DspbrGltf g =
+      has_gltf ? shader::gltf_factors(nlohmann::json(x.gltf_material)) : dspbr_shader::dspbr_default_gltf();
+  DSPBR_GLTF_PACK(g, out, k + 1);
 }
 
 // A value the shader wrote: as it is when finite, else 1e300 (fails wherever it is judged; a
@@ -182,7 +193,7 @@ void run_shader(const RunArgs& a) {
       vk_compute::read_lookup_textures(shared_path("luts", "; the tables are installed with dspbr"), false);
 
   // kit.glsl's DSPBR_CONFORMANCE_RECORD_FLOATS and DSPBR_CONFORMANCE_RESULT_FLOATS
-  const std::size_t rec = shader::kShaderInputFloats, res = 14;
+  const std::size_t rec = kRecordFloats, res = 14;
   std::vector<conformance::Result> results(vectors.size());
   for (std::size_t first = 0; first < vectors.size(); first += kBatch) {
     const std::size_t n = std::min(kBatch, vectors.size() - first);

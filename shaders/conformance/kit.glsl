@@ -11,6 +11,11 @@ struct DspbrConformanceInput {
   DspbrOptions options;    // sheen model, object area, position, object normal (bsdf.glsl)
   vec3 v;                  // towards the viewer, local frame: normal +z, tangent +x (docs/bsdf.md)
   vec3 l;                  // towards the light; both away from the surface
+  // The vector's glTF material object as the factors a glTF loader reads (gltf.glsl), when it has
+  // one (docs/conformance.md, "Schema": gltf_material); else has_gltf is false and gltf holds
+  // dspbr_default_gltf(). A renderer that starts from glTF maps it with dspbr_material_from_gltf.
+  bool has_gltf;
+  DspbrGltf gltf;
 };
 
 // What the user's function supplies: f cos always (unless the material is not supported), the rest
@@ -26,6 +31,7 @@ struct DspbrConformanceResult {
   vec3 emission;
 };
 
-// Floats per vector record (material, options, v, l) and per result (kit_driver.glsl's order).
-DSPBR_CONST uint DSPBR_CONFORMANCE_RECORD_FLOATS = DSPBR_MATERIAL_FLOATS + 14u;
+// Floats per vector record (material, options, v, l, has_gltf, glTF factors) and per result
+// (kit_driver.glsl's order).
+DSPBR_CONST uint DSPBR_CONFORMANCE_RECORD_FLOATS = DSPBR_MATERIAL_FLOATS + 15u + DSPBR_GLTF_FLOATS;
 DSPBR_CONST uint DSPBR_CONFORMANCE_RESULT_FLOATS = 14u;

@@ -1,6 +1,6 @@
 // The conformance kit's driver (kit.glsl says what it is for): vector i's record from `rec`
 // (DSPBR_MATERIAL_PACK's material, then the options' sheen model, object area, position and
-// object normal, then v and l), the user's conformance_eval, and its result into `res`
+// object normal, then v and l, then has_gltf and DSPBR_GLTF_PACK's factors), the user's conformance_eval, and its result into `res`
 // (DSPBR_CONFORMANCE_RESULT_FLOATS floats: supported, f cos, has_pdf, pdf, has_albedo, albedo,
 // has_emission, emission; booleans as 0 or 1). The entries (run.comp, run.hlsl) declare rec and res.
 
@@ -18,6 +18,8 @@ DSPBR_FN void dspbr_conformance_run(uint i) {
   x.options.object_normal = dspbr_conformance_vec3(k + 5u);
   x.v = dspbr_conformance_vec3(k + 8u);
   x.l = dspbr_conformance_vec3(k + 11u);
+  x.has_gltf = rec[k + 14u] > 0.5f;
+  DSPBR_GLTF_UNPACK(x.gltf, rec, k + 15u);
   DspbrConformanceResult y;
   y.supported = true;
   y.f_cos = vec3(0.0f, 0.0f, 0.0f);

@@ -101,6 +101,94 @@ DSPBR_FN DspbrGltf dspbr_default_gltf() {
   return g;
 }
 
+// The factors as DSPBR_GLTF_FLOATS consecutive floats in the struct's order (an int as its value,
+// a boolean as 0 or 1), as DSPBR_MATERIAL_PACK / UNPACK do for the material (material.glsl): a
+// renderer uploads glTF factors per material with DSPBR_GLTF_PACK(g, rec, k) and reads them back
+// with DSPBR_GLTF_UNPACK(g, rec, k).
+DSPBR_CONST uint DSPBR_GLTF_FLOATS = 54u;
+#define DSPBR_GLTF_UNPACK(g, rec, k) \
+  (g).baseColorFactor = vec3((rec)[(k) + 0u], (rec)[(k) + 1u], (rec)[(k) + 2u]); \
+  (g).baseColorAlpha = (rec)[(k) + 3u]; \
+  (g).metallicFactor = (rec)[(k) + 4u]; \
+  (g).roughnessFactor = (rec)[(k) + 5u]; \
+  (g).alphaMode = int((rec)[(k) + 6u]); \
+  (g).alphaCutoff = (rec)[(k) + 7u]; \
+  (g).emissiveFactor = vec3((rec)[(k) + 8u], (rec)[(k) + 9u], (rec)[(k) + 10u]); \
+  (g).emissiveStrength = (rec)[(k) + 11u]; \
+  (g).has_3ds_emission = (rec)[(k) + 12u] > 0.5f; \
+  (g).emissionValue = (rec)[(k) + 13u]; \
+  (g).emissionMode = int((rec)[(k) + 14u]); \
+  (g).emissionEnergyNormalization = (rec)[(k) + 15u] > 0.5f; \
+  (g).specularFactor = (rec)[(k) + 16u]; \
+  (g).specularColorFactor = vec3((rec)[(k) + 17u], (rec)[(k) + 18u], (rec)[(k) + 19u]); \
+  (g).ior = (rec)[(k) + 20u]; \
+  (g).transmissionFactor = (rec)[(k) + 21u]; \
+  (g).has_volume = (rec)[(k) + 22u] > 0.5f; \
+  (g).thicknessFactor = (rec)[(k) + 23u]; \
+  (g).attenuationDistance = (rec)[(k) + 24u]; \
+  (g).attenuationColor = vec3((rec)[(k) + 25u], (rec)[(k) + 26u], (rec)[(k) + 27u]); \
+  (g).dispersion = (rec)[(k) + 28u]; \
+  (g).diffuseTransmissionFactor = (rec)[(k) + 29u]; \
+  (g).diffuseTransmissionColorFactor = vec3((rec)[(k) + 30u], (rec)[(k) + 31u], (rec)[(k) + 32u]); \
+  (g).has_3ds_translucency = (rec)[(k) + 33u] > 0.5f; \
+  (g).translucencyFactor = (rec)[(k) + 34u]; \
+  (g).subsurfaceColor = vec3((rec)[(k) + 35u], (rec)[(k) + 36u], (rec)[(k) + 37u]); \
+  (g).subsurfaceAsymmetry = (rec)[(k) + 38u]; \
+  (g).iridescenceFactor = (rec)[(k) + 39u]; \
+  (g).iridescenceIor = (rec)[(k) + 40u]; \
+  (g).iridescenceThicknessMaximum = (rec)[(k) + 41u]; \
+  (g).has_sheen = (rec)[(k) + 42u] > 0.5f; \
+  (g).sheenColorFactor = vec3((rec)[(k) + 43u], (rec)[(k) + 44u], (rec)[(k) + 45u]); \
+  (g).sheenRoughnessFactor = (rec)[(k) + 46u]; \
+  (g).clearcoatFactor = (rec)[(k) + 47u]; \
+  (g).clearcoatRoughnessFactor = (rec)[(k) + 48u]; \
+  (g).anisotropyStrength = (rec)[(k) + 49u]; \
+  (g).anisotropyRotation = (rec)[(k) + 50u]; \
+  (g).has_3ds_anisotropy = (rec)[(k) + 51u] > 0.5f; \
+  (g).anisotropyFactor = (rec)[(k) + 52u]; \
+  (g).anisotropyRotationFactor = (rec)[(k) + 53u];
+#define DSPBR_GLTF_PACK(g, rec, k) \
+  (rec)[(k) + 0u] = (g).baseColorFactor.x; (rec)[(k) + 1u] = (g).baseColorFactor.y; (rec)[(k) + 2u] = (g).baseColorFactor.z; \
+  (rec)[(k) + 3u] = (g).baseColorAlpha; \
+  (rec)[(k) + 4u] = (g).metallicFactor; \
+  (rec)[(k) + 5u] = (g).roughnessFactor; \
+  (rec)[(k) + 6u] = float((g).alphaMode); \
+  (rec)[(k) + 7u] = (g).alphaCutoff; \
+  (rec)[(k) + 8u] = (g).emissiveFactor.x; (rec)[(k) + 9u] = (g).emissiveFactor.y; (rec)[(k) + 10u] = (g).emissiveFactor.z; \
+  (rec)[(k) + 11u] = (g).emissiveStrength; \
+  (rec)[(k) + 12u] = ((g).has_3ds_emission ? 1.0f : 0.0f); \
+  (rec)[(k) + 13u] = (g).emissionValue; \
+  (rec)[(k) + 14u] = float((g).emissionMode); \
+  (rec)[(k) + 15u] = ((g).emissionEnergyNormalization ? 1.0f : 0.0f); \
+  (rec)[(k) + 16u] = (g).specularFactor; \
+  (rec)[(k) + 17u] = (g).specularColorFactor.x; (rec)[(k) + 18u] = (g).specularColorFactor.y; (rec)[(k) + 19u] = (g).specularColorFactor.z; \
+  (rec)[(k) + 20u] = (g).ior; \
+  (rec)[(k) + 21u] = (g).transmissionFactor; \
+  (rec)[(k) + 22u] = ((g).has_volume ? 1.0f : 0.0f); \
+  (rec)[(k) + 23u] = (g).thicknessFactor; \
+  (rec)[(k) + 24u] = (g).attenuationDistance; \
+  (rec)[(k) + 25u] = (g).attenuationColor.x; (rec)[(k) + 26u] = (g).attenuationColor.y; (rec)[(k) + 27u] = (g).attenuationColor.z; \
+  (rec)[(k) + 28u] = (g).dispersion; \
+  (rec)[(k) + 29u] = (g).diffuseTransmissionFactor; \
+  (rec)[(k) + 30u] = (g).diffuseTransmissionColorFactor.x; (rec)[(k) + 31u] = (g).diffuseTransmissionColorFactor.y; (rec)[(k) + 32u] = (g).diffuseTransmissionColorFactor.z; \
+  (rec)[(k) + 33u] = ((g).has_3ds_translucency ? 1.0f : 0.0f); \
+  (rec)[(k) + 34u] = (g).translucencyFactor; \
+  (rec)[(k) + 35u] = (g).subsurfaceColor.x; (rec)[(k) + 36u] = (g).subsurfaceColor.y; (rec)[(k) + 37u] = (g).subsurfaceColor.z; \
+  (rec)[(k) + 38u] = (g).subsurfaceAsymmetry; \
+  (rec)[(k) + 39u] = (g).iridescenceFactor; \
+  (rec)[(k) + 40u] = (g).iridescenceIor; \
+  (rec)[(k) + 41u] = (g).iridescenceThicknessMaximum; \
+  (rec)[(k) + 42u] = ((g).has_sheen ? 1.0f : 0.0f); \
+  (rec)[(k) + 43u] = (g).sheenColorFactor.x; (rec)[(k) + 44u] = (g).sheenColorFactor.y; (rec)[(k) + 45u] = (g).sheenColorFactor.z; \
+  (rec)[(k) + 46u] = (g).sheenRoughnessFactor; \
+  (rec)[(k) + 47u] = (g).clearcoatFactor; \
+  (rec)[(k) + 48u] = (g).clearcoatRoughnessFactor; \
+  (rec)[(k) + 49u] = (g).anisotropyStrength; \
+  (rec)[(k) + 50u] = (g).anisotropyRotation; \
+  (rec)[(k) + 51u] = ((g).has_3ds_anisotropy ? 1.0f : 0.0f); \
+  (rec)[(k) + 52u] = (g).anisotropyFactor; \
+  (rec)[(k) + 53u] = (g).anisotropyRotationFactor;
+
 // KHR_materials_anisotropy turns the anisotropy direction counter-clockwise (tangent towards
 // bitangent); DSPBR turns the tangent clockwise (t' cos beta - (n x t') sin beta, spec "Tangent
 // Space"): rotation = -theta / 2 pi, wrapped into [0, 1).
