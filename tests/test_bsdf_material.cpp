@@ -417,8 +417,11 @@ TEST(BsdfMaterial, ComponentFactory) {
 
 TEST(BsdfMaterial, CornersOfTheParameterSpaceStayFinite) {
   const std::vector<double> roughness{0, 1e-4, 1}, iors{1, 1 + 1e-6, 4, 1e3};
+  // Directions next to the horizon down to a subnormal cos (the fourth fresh tester's pass: NaN
+  // at 1e-156, values wrong by orders of magnitude from 1e-17 down; kHorizonCos).
   const std::vector<Vec3> dirs{{0, 0, 1}, normalize(Vec3{1, 0, 1e-7}), {1, 0, 0}, normalize(Vec3{0.3, -0.2, -1}),
-                               normalize(Vec3{1, 1, -1e-7}), {0, 0, -1}, dir_from_angles(60, 45)};
+                               normalize(Vec3{1, 1, -1e-7}), {0, 0, -1}, dir_from_angles(60, 45), {1, 0, 1e-17},
+                               {0, 1, 1e-156}, {1, 0, -1e-200}, {0.6, 0.8, 4.9e-324}};
   Pcg32 rng(9, 0);
   int count = 0;
   for (double r : roughness)

@@ -2,7 +2,7 @@
 // (spec "Sheen"; Conty Estevez & Kulla 2017; [NP13]), as in the reference (src/dspbr/sheen.h).
 
 // Smallest alpha_b (D_b is undefined at 0; the reference's kMinAlphaB).
-DSPBR_CONST float dspbr_min_alpha_b = 1e-3f;
+DSPBR_CONST float dspbr_min_alpha_b = 0.00390625f;  // 1/256
 
 // D_b(h) = (2 + 1/alpha_b) sin^(1/alpha_b)(theta_h) / (2 pi) (spec "Sheen"), h a unit vector.
 // sin^2 = h.x^2 + h.y^2, not 1 - cos^2: near h = n the difference loses the digits (in float,

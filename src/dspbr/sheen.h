@@ -12,8 +12,10 @@ namespace dspbr {
 // visibility of [NP13] (Ash).
 enum class SheenModel { Main, Ash };
 // Smallest alpha_b the BSDF and the tables use; smaller values are clamped up to it (D_b is
-// undefined at 0).
-constexpr double kMinAlphaB = 1e-3;
+// undefined at 0): 1/256, sheen roughness 1/16, where the renderer layout's sheen tables start, so
+// that the lobe and the E_b of its layering agree (with 1e-3 the lobe narrowed below 1/256 while
+// the tables did not, and a white furnace lost up to 14 %: the fourth fresh tester's pass).
+constexpr double kMinAlphaB = 1.0 / 256.0;
 
 // Charlie distribution D_b(h) = (2 + 1/alpha_b) sin^(1/alpha_b)(theta_h) / (2 pi), zero below
 // the surface. Requires alpha_b > 0.

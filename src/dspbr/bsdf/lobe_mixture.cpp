@@ -40,6 +40,12 @@ void LobeMixture::add(std::unique_ptr<Lobe> lobe, Layer layer) {
   entries_[size_t(n_++)] = {std::move(lobe), layer, kind, delta};
 }
 
+namespace {
+
+bool on_horizon(const Vec3& w) { return !(std::abs(w.z) >= kHorizonCos); }  // NaN included
+
+}  // namespace
+
 Rgb LobeMixture::eval_lobe(const Entry& e, const Vec3& v, const Vec3& l, LobeCache& cache) {
   switch (e.kind) {
     case Kind::Reflection: return static_cast<const MicrofacetReflection&>(*e.lobe).eval(v, l);
@@ -110,6 +116,7 @@ void LobeMixture::selection_weights(const Vec3& v, double s, double* w) const {
 Rgb LobeMixture::eval(const Vec3& v, const Vec3& l, double s) const {
   Rgb sum(0);
   const Vec3 v_core = to_core(v), l_core = to_core(l);
+  if (on_horizon(v_core) || on_horizon(l_core)) return sum;
   std::optional<Factors> f;  // computed at the first lobe with a non-zero value
   LobeCache cache;
   for (int k = 0; k < n_; ++k) {
@@ -120,7 +127,9 @@ Rgb LobeMixture::eval(const Vec3& v, const Vec3& l, double s) const {
       // The coat reflects: nothing towards the other side of the surface (its own normal n_c may
       // differ from n; without this check f(v, l) != f(l, v) where the two planes disagree).
       if (!(l_core.z > 0)) continue;
-      fk = eval_lobe(e, layering_.coat.to_local(v), layering_.coat.to_local(l), cache);
+      const Vec3 v_coat = layering_.coat.to_local(v), l_coat = layering_.coat.to_local(l);
+      if (on_horizon(v_coat) || on_horizon(l_coat)) continue;
+      fk = eval_lobe(e, v_coat, l_coat, cache);
     } else {
       fk = eval_lobe(e, v_core, l_core, cache);
     }
@@ -137,11 +146,16 @@ Rgb LobeMixture::eval(const Vec3& v, const Vec3& l, double s) const {
 double LobeMixture::pdf(const Vec3& v, const Vec3& l, const double* probs) const {
   double p = 0;
   const Vec3 v_core = to_core(v), l_core = to_core(l);
+  if (on_horizon(v_core) || on_horizon(l_core)) return p;
   for (int k = 0; k < n_; ++k) {
     const Entry& e = entries_[size_t(k)];
     if (e.delta || probs[k] == 0) continue;
-    p += probs[k] * (e.layer == Layer::Coat ? pdf_lobe(e, layering_.coat.to_local(v), layering_.coat.to_local(l))
-                                            : pdf_lobe(e, v_core, l_core));
+    if (e.layer == Layer::Coat) {
+      const Vec3 v_coat = layering_.coat.to_local(v), l_coat = layering_.coat.to_local(l);
+      if (!on_horizon(v_coat) && !on_horizon(l_coat)) p += probs[k] * pdf_lobe(e, v_coat, l_coat);
+    } else {
+      p += probs[k] * pdf_lobe(e, v_core, l_core);
+    }
   }
   return p;
 }
@@ -150,7 +164,9 @@ BsdfSample LobeMixture::sample_lobe(int k, const Vec3& v, const Vec3& u, double 
   BsdfSample out;
   const Entry& e = entries_[size_t(k)];
   const Frame& fr = frame(e.layer);
-  const BsdfSample ls = e.lobe->sample(fr.to_local(v), u);
+  const Vec3 v_local = fr.to_local(v);
+  if (on_horizon(v_local) || on_horizon(to_core(v))) return out;
+  const BsdfSample ls = e.lobe->sample(v_local, u);
   if (!ls.valid) return out;
   const Vec3 l = normalize(fr.to_world(ls.l));
   if (ls.flags & kLobeDelta) {

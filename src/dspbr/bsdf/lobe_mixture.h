@@ -25,6 +25,12 @@
 
 namespace dspbr {
 
+// A direction closer to the horizon of a lobe's frame than this (|cos| < 1e-9) is on it: the lobe's
+// value and density there are 0 and it samples nothing from there. Below it the lobes' powers of
+// cos underflow (found by the fourth fresh tester's pass: NaN at cos 1e-156, values wrong by
+// orders of magnitude from cos 1e-17 down); f cos is below 1e-9 f there anyway.
+constexpr double kHorizonCos = 1e-9;
+
 // Each present lobe gets at least this fraction of the largest selection weight, so that no lobe
 // with a non-zero value is left unsampled when its albedo estimate is poor.
 constexpr double kMinSelectionFraction = 1e-3;
