@@ -364,6 +364,55 @@ TEST(Conformance, SubsetsAreNotSuppliedAndSelectionsKeepWhatTheyName) {
   EXPECT_THROW(select_vectors({{"nope"}, {}}, sel_v, sel_r), std::invalid_argument);
 }
 
+// Found by the fourth fresh tester's pass: a negative f cos or pdf within the absolute tolerance
+// of an expected 0 passed; an albedo supplied where the vector has none vanished from the counts;
+// --require-all took results whose f_cos is null.
+TEST(Conformance, NegativeValuesFailAndUnexpectedOnesAreCounted) {
+  const auto& vs = small_set();
+  std::size_t zero = vs.size();  // a vector whose expected f cos is 0 in every channel
+  for (std::size_t i = 0; i < vs.size() && zero == vs.size(); ++i)
+    if (vs[i].f_cos.max_component() == 0 && vs[i].pdf == 0) zero = i;
+  ASSERT_LT(zero, vs.size());
+  std::vector<Result> rs = reference_results(vs);
+  rs[zero].f_cos = Rgb(-0.5 * vs[zero].tolerance.abs);  // within the tolerance, below 0
+  std::vector<Result> pdf_rs = reference_results(vs);
+  pdf_rs[zero].pdf = -0.5 * vs[zero].pdf_tolerance.abs;
+  for (const auto& r : {rs, pdf_rs}) {
+    const Check c = check_results(vs, r);
+    EXPECT_EQ(c.failed, 1u);
+    EXPECT_EQ(c.verdicts[zero].worst_ratio, kNegativeRatio);
+  }
+  std::vector<Result> extra = reference_results(vs);
+  std::size_t without_albedo = 0;
+  for (std::size_t i = 0; i < vs.size(); ++i)
+    if (!vs[i].albedo) extra[i].albedo = Rgb(0.5), ++without_albedo;
+  ASSERT_GT(without_albedo, 0u);
+  const Check c = check_results(vs, extra);
+  EXPECT_EQ(c.failed, 0u);
+  const auto report = check_report(vs, extra, c, {});
+  EXPECT_EQ(report["quantities"]["albedo"]["ignored"].get<std::size_t>(), without_albedo);
+  std::vector<Result> null_fcos = reference_results(vs);
+  null_fcos[0].f_cos.reset();
+  const std::string e = [&] {
+    try {
+      match_results(vs, null_fcos, "r.json", "v.json", true);
+    } catch (const std::runtime_error& x) {
+      return std::string(x.what());
+    }
+    return std::string("(accepted)");
+  }();
+  EXPECT_EQ(e.rfind("r.json: no result with an f_cos for vector '" + vs[0].id + "'", 0), 0u) << e;
+  EXPECT_NO_THROW(match_results(vs, null_fcos, "r.json", "v.json", false));
+  // A JSON results file whose top level is an array is read as JSON (and refused as such), not as CSV.
+  try {
+    parse_results(R"([{"id": "a", "f_cos": [0, 0, 0]}])", "arr.json");
+    ADD_FAILURE() << "accepted";
+  } catch (const std::runtime_error& x) {
+    EXPECT_EQ(std::string(x.what()).find("CSV"), std::string::npos) << x.what();
+    EXPECT_EQ(std::string(x.what()).rfind("arr.json: ", 0), 0u) << x.what();
+  }
+}
+
 TEST(Conformance, DeltaLobesOfSmoothGlassAreFresnel) {
   // Smooth volumetric glass, ior 1.5, normal incidence from outside: R = ((1.5 - 1) / 2.5)^2 = 0.04
   // along +z and T = 1 - R along -z (the BTDF keeps the flux, docs/bsdf.md).
@@ -408,6 +457,16 @@ TEST(Conformance, DeltaLobesAndEmissionAreJudgedWhenSupplied) {
     std::vector<Result> missing = rs;
     missing[i].delta->pop_back();
     EXPECT_FALSE(check_results(vs, missing).passed()) << vs[i].id;
+    // Lobes towards one direction are summed (the fourth fresh tester's pass: every lobe listed
+    // ten times passed, and one lobe split in two halves failed).
+    std::vector<Result> repeated = rs, halves = rs;
+    repeated[i].delta->clear(), halves[i].delta->clear();
+    for (int k = 0; k < 10; ++k)
+      for (const DeltaExpectation& d : vs[i].delta) repeated[i].delta->push_back(d);
+    for (int k = 0; k < 2; ++k)
+      for (const DeltaExpectation& d : vs[i].delta) halves[i].delta->push_back({d.l, d.value * 0.5});
+    EXPECT_EQ(check_results(vs, repeated).failed, 1u) << vs[i].id;
+    EXPECT_TRUE(check_results(vs, halves).passed()) << vs[i].id;
     break;
   }
   for (std::size_t i = 0; i < vs.size(); ++i) {
@@ -589,7 +648,7 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
   const std::vector<Case> cases = {
       {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,nan,0\n", "line 2 (id '" + first + "'): f_cos_g is not a finite decimal number"},
       {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,0\n", "line 2 (id '" + first + "'): 3 fields"},
-      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,0,0\n", "no result for vector '" + second + "'", "--require-all"},
+      {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,0,0\n", "no result with an f_cos for vector '" + second + "'", "--require-all"},
       {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",,,\n", "no result for any of the " + std::to_string(vs.size()) + " vectors"},
       {"id,f_cos_r,f_cos_g,f_cos_b\n" + first + ",1,,0\n", "line 2 (id '" + first + "'): f_cos_g is not a finite decimal number"},
       {"{\"results\": [{\"id\": \"" + first + "\", \"f_cos\": [1, 2]}]}", "results[0] (id '" + first + "')"},
@@ -607,6 +666,26 @@ TEST(Conformance, CliChecksAndMalformedResultsExitTwo) {
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
     EXPECT_NE(r.output.find(cases[k].needle), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(dir / "never")) << k;
+  }
+  // --require-all asks for the selected vectors' results only (the fourth fresh tester's pass: a
+  // file with every sheen result was refused with --groups sheen).
+  {
+    const std::string group = vs[0].group;
+    std::string csv = "id,f_cos_r,f_cos_g,f_cos_b\n";
+    const auto rs_all = reference_results(vs);
+    for (std::size_t i = 0; i < vs.size(); ++i)
+      if (vs[i].group == group) {
+        const Rgb& f = *rs_all[i].f_cos;
+        csv += vs[i].id + "," + nlohmann::json(f.r).dump() + "," + nlohmann::json(f.g).dump() + "," + nlohmann::json(f.b).dump() + "\n";
+      }
+    const fs::path f = dir / "one_group.csv";
+    write(f, csv);
+    const std::string cmd = "conformance check '" + vectors + "' '" + f.string() + "' --no-html --require-all --out '";
+    const ToolRun selected = run_dspbr(cmd + (dir / "sel").string() + "' --groups " + group);
+    EXPECT_EQ(selected.status, 0) << selected.output;
+    const ToolRun all = run_dspbr(cmd + (dir / "never").string() + "'");
+    EXPECT_EQ(all.status, 2) << all.output;
+    EXPECT_NE(all.output.find("no result with an f_cos for vector"), std::string::npos) << all.output;
   }
   fs::remove_all(dir.parent_path());
 }

@@ -123,9 +123,12 @@ void run_check(const CheckArgs& a) {
   std::vector<conformance::Result> results;
   try {
     vectors = conformance::read_vectors(a.vectors);
-    results = conformance::match_results(vectors, conformance::read_results(a.results), a.results, a.vectors,
-                                         a.require_all);
+    results = conformance::match_results(vectors, conformance::read_results(a.results), a.results, a.vectors);
     conformance::select_vectors(a.selection, vectors, results);
+    // --require-all: every vector judged, i.e. of the selection (--groups/--components), has its f cos.
+    const bool selected = !a.selection.groups.empty() || !a.selection.components.empty();
+    if (a.require_all)
+      conformance::match_results(vectors, results, a.results, selected ? "the selection of " + a.vectors : a.vectors, true);
   } catch (const std::exception& e) {
     throw UsageError(e.what());
   }
@@ -180,7 +183,9 @@ void add_conformance_command(CLI::App& app) {
   gen->add_option("--seed", g->settings.seed, "Seed of the directions (same seed -> same bytes)")
       ->capture_default_str()
       ->transform(non_negative_integer());
-  gen->add_option("--directions", g->settings.directions, "Pairs of directions per material")
+  gen->add_option("--directions", g->settings.directions,
+                  "Pairs of directions per material (a set beyond 16 MB, the size its readers take, is refused: "
+                  "the default set is 2.7 MB)")
       ->capture_default_str()
       ->transform(decimal_integer(1, 1000, "a number of direction pairs"));
   gen->add_option("--scenes", g->scenes,

@@ -60,7 +60,10 @@ void judge_results(const Judgement& j, OutputFolder& out, const std::vector<conf
                      j.vectors);
   const nlohmann::ordered_json report = conformance::check_report(vectors, results, check, provenance);
   write_text(out, "report.json", json_text(report, 1, "report.json"));
-  if (!j.script.empty()) run_report_script(j.python, j.script, out.staging(), j.out);
+  if (!j.script.empty())
+    run_report_script(j.python, j.script, out.staging(), j.out);
+  else
+    replace_earlier_pages(out, {"index.html"}, "report.json", check.passed() ? "PASS" : "FAIL");
   out.commit();
 
   std::printf("conformance: %s, %zu of %zu judged vectors pass", check.passed() ? "PASS" : "FAIL",
@@ -73,10 +76,14 @@ void judge_results(const Judgement& j, OutputFolder& out, const std::vector<conf
     std::printf("  %-28s %12s %6d %6d %6d %12.3g  %s\n", one_line(g["name"].get<std::string>()).c_str(),
                 g["verdict"].get<std::string>().c_str(), g["passed"].get<int>(), g["failed"].get<int>(),
                 g["not_supplied"].get<int>(), g["worst_ratio"].get<double>(), one_line(g["worst_id"].get<std::string>()).c_str());
-  for (const auto& [name, q] : report["quantities"].items())
+  for (const auto& [name, q] : report["quantities"].items()) {
     if (q["not_judged"].get<int>() > 0)
       std::printf("  NOT JUDGED: %s of %d vectors (not in %s)\n", name.c_str(), q["not_judged"].get<int>(),
                   one_line(j.results).c_str());
+    if (q["ignored"].get<int>() > 0)
+      std::printf("  IGNORED: %s of %d results (their vectors have no %s expectation)\n", name.c_str(),
+                  q["ignored"].get<int>(), name.c_str());
+  }
   if (!check.passed())
     throw std::runtime_error(std::to_string(check.failed) + " of " + std::to_string(check.judged()) +
                              " judged conformance vectors fail (details in " + j.out + ")");

@@ -23,25 +23,34 @@ double rgb_ratio(const Tolerance& t, const Rgb& got, const Rgb& expected) {
 // Directions of delta lobes match within this distance (unit vectors).
 constexpr double kDeltaDirection = 1e-6;
 
-// Every expected delta lobe against the supplied lobe towards its direction (a missing one counts
-// as 0); a supplied lobe towards no expected direction is judged against 0.
+// Every expected delta lobe against the sum of the supplied lobes towards its direction (none
+// counts as 0: an implementation may split one direction's energy, never repeat it); the
+// supplied lobes towards no expected direction are judged, summed per direction, against 0.
 double delta_ratio(const Tolerance& t, const std::vector<DeltaExpectation>& got, const std::vector<DeltaExpectation>& expected) {
   double worst = 0;
   std::vector<bool> used(got.size(), false);
   for (const DeltaExpectation& e : expected) {
     Rgb value{0, 0, 0};
     for (std::size_t i = 0; i < got.size(); ++i)
-      if (!used[i] && length(got[i].l - e.l) < kDeltaDirection) value = got[i].value, used[i] = true;
+      if (!used[i] && length(got[i].l - e.l) < kDeltaDirection) value += got[i].value, used[i] = true;
     worst = std::max(worst, rgb_ratio(t, value, e.value));
   }
-  for (std::size_t i = 0; i < got.size(); ++i)
-    if (!used[i]) worst = std::max(worst, rgb_ratio(t, got[i].value, Rgb{0, 0, 0}));
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    if (used[i]) continue;
+    Rgb value = got[i].value;
+    for (std::size_t k = i + 1; k < got.size(); ++k)
+      if (!used[k] && length(got[k].l - got[i].l) < kDeltaDirection) value += got[k].value, used[k] = true;
+    worst = std::max(worst, rgb_ratio(t, value, Rgb{0, 0, 0}));
+  }
   return worst;
 }
 
-OJson counts_json(std::size_t judged, std::size_t passed, std::size_t not_judged) {
-  return OJson{{"judged", judged}, {"passed", passed}, {"failed", judged - passed}, {"not_judged", not_judged}};
+OJson counts_json(std::size_t judged, std::size_t passed, std::size_t not_judged, std::size_t ignored) {
+  return OJson{{"judged", judged}, {"passed", passed}, {"failed", judged - passed}, {"not_judged", not_judged},
+               {"ignored", ignored}};
 }
+
+bool negative(const Rgb& c) { return c.r < 0 || c.g < 0 || c.b < 0; }
 
 OJson ratio_json(const std::optional<double>& r) { return r ? OJson(std::min(*r, 1e300)) : OJson(nullptr); }
 
@@ -70,6 +79,14 @@ Check check_results(const std::vector<Vector>& vectors, const std::vector<Result
     if (r.emission && v.emission)
       x.ratio[int(Quantity::Emission)] = rgb_ratio(v.emission_tolerance, *r.emission, *v.emission);
     if (r.delta) x.ratio[int(Quantity::Delta)] = delta_ratio(v.delta_tolerance, *r.delta, v.delta);
+    // A negative value is never legal (f cos, pdf, albedo, emission, a delta lobe): it fails
+    // whatever its tolerance, with the ratio of a non-finite value (kNegativeRatio).
+    bool below_zero[kQuantities] = {r.f_cos && negative(*r.f_cos), r.pdf && *r.pdf < 0, r.albedo && negative(*r.albedo),
+                                    r.emission && negative(*r.emission), false};
+    if (r.delta)
+      for (const DeltaExpectation& d : *r.delta) below_zero[int(Quantity::Delta)] |= negative(d.value);
+    for (int q = 0; q < kQuantities; ++q)
+      if (x.ratio[q] && below_zero[q]) x.ratio[q] = kNegativeRatio;
     for (const auto& q : x.ratio)
       if (q) x.worst_ratio = std::max(x.worst_ratio, *q), x.supplied = true;
     x.passed = x.supplied && x.worst_ratio <= 1;
@@ -96,19 +113,22 @@ OJson check_report(const std::vector<Vector>& vectors, const std::vector<Result>
   // judged where a vector with a result lacks it.
   OJson quantities = OJson::object();
   for (int q = 0; q < kQuantities; ++q) {
-    std::size_t judged = 0, passed = 0, not_judged = 0;
+    // Ignored: supplied for a vector without that expectation (an albedo where the set has none).
+    std::size_t judged = 0, passed = 0, not_judged = 0, ignored = 0;
     for (std::size_t i = 0; i < vectors.size(); ++i) {
       const auto& r = check.verdicts[i].ratio[q];
+      const Vector& v = vectors[i];
+      const Result& res = results[i];
       if (r) ++judged, passed += *r <= 1 ? 1 : 0;
+      else if ((q == int(Quantity::Albedo) && res.albedo) || (q == int(Quantity::Emission) && res.emission)) ++ignored;
       else if (check.verdicts[i].supplied) {  // (a vector not supplied at all is counted as such)
-        const Vector& v = vectors[i];
         const bool expected = q == int(Quantity::FCos) || q == int(Quantity::Pdf) ||
                               (q == int(Quantity::Albedo) && v.albedo) || (q == int(Quantity::Emission) && v.emission) ||
                               (q == int(Quantity::Delta) && !v.delta.empty());
         not_judged += expected ? 1 : 0;
       }
     }
-    quantities[quantity_name(Quantity(q))] = counts_json(judged, passed, not_judged);
+    quantities[quantity_name(Quantity(q))] = counts_json(judged, passed, not_judged, ignored);
   }
   rep["quantities"] = quantities;
 

@@ -20,6 +20,10 @@ enum class Quantity { FCos, Pdf, Albedo, Emission, Delta };
 inline constexpr int kQuantities = 5;
 const char* quantity_name(Quantity q);  // "f_cos", "pdf", "albedo", "emission", "delta"
 
+// The ratio of a negative value (f cos, pdf, albedo, emission or a delta lobe below 0): it fails
+// whatever its tolerance, as a non-finite value from `conformance run` does (1e300).
+inline constexpr double kNegativeRatio = 1e300;
+
 struct VectorVerdict {
   // Per quantity: the worst channel's error over its tolerance (<= 1 passes); nullopt when the
   // vector has no such expectation or the results do not supply it (NOT JUDGED).

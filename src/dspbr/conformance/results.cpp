@@ -212,7 +212,7 @@ std::vector<Result> parse_results(std::string_view bytes, const std::string& pat
   if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
   const std::size_t first = bytes.find_first_not_of(" \t\r\n");
   if (first == std::string_view::npos) fail(path, "the results file is empty");
-  std::vector<Result> out = bytes[first] == '{' ? parse_json_results(bytes, path) : parse_csv_results(bytes, path);
+  std::vector<Result> out = bytes[first] == '{' || bytes[first] == '[' ? parse_json_results(bytes, path) : parse_csv_results(bytes, path);
   if (out.empty()) fail(path, "no results");
   return out;
 }
@@ -259,16 +259,17 @@ std::vector<Result> match_results(const std::vector<Vector>& vectors, std::vecto
   std::size_t missing = 0;
   std::string first_missing;
   for (std::size_t i = 0; i < vectors.size(); ++i) {
-    if (!slot[i]) {
+    // --require-all: a result with its f cos (the one quantity every vector judges); a result
+    // whose f cos is left out or null counts as missing.
+    if (!slot[i] || !slot[i]->f_cos)
       if (missing++ == 0) first_missing = vectors[i].id;
-      slot[i] = Result{vectors[i].id, std::nullopt, std::nullopt, std::nullopt, std::nullopt, std::nullopt};
-    }
+    if (!slot[i]) slot[i] = Result{vectors[i].id, std::nullopt, std::nullopt, std::nullopt, std::nullopt, std::nullopt};
     out.push_back(std::move(*slot[i]));
   }
   if (missing > 0 && require_all)
-    fail(path, "no result for vector " + in_quotes(first_missing) +
+    fail(path, "no result with an f_cos for vector " + in_quotes(first_missing) +
                    (missing > 1 ? " (and " + std::to_string(missing - 1) + " more)" : std::string()) +
-                   ": every vector of " + vectors_path + " needs a result (--require-all)");
+                   ": every vector of " + vectors_path + " needs one (--require-all)");
   return out;
 }
 

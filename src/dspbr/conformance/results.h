@@ -2,7 +2,7 @@
 //   JSON {"results": [{"id": str, "f_cos": [r,g,b], "pdf": number, "albedo": [r,g,b],
 //        "emission": [r,g,b], "delta": [{"l": [x,y,z], "value": [r,g,b]}]}]}
 //   or CSV with the header id,f_cos_r,f_cos_g,f_cos_b[,pdf][,albedo_r,albedo_g,albedo_b]
-// told apart by the first non-blank byte ('{' is JSON). Every quantity may be not supplied: a JSON
+// told apart by the first non-blank byte ('{' or '[' is JSON). Every quantity may be not supplied: a JSON
 // member left out or null, CSV fields left empty (all three of a colour); a vector may have no
 // result at all. What is not supplied is not judged (checker.h). Every problem is a std::runtime_error with
 // one line naming the file and the record: "<path>: results[3] (id 'x'): f_cos[1] must be a finite

@@ -486,13 +486,24 @@ std::vector<Case> scene_cases(const std::string& dir) {
       if (!fresh)
         throw std::runtime_error(it->second + " and " + source + " both give the vector ids scenes/" + c.name +
                                  "/NN: rename one of the files");
+      // A factor outside the model's range, or beyond a float's (the vectors' materials are rounded
+      // to float, as the implementations judged read them): the file and material.
+      std::string problem;
       try {
         validate_material(c.m);
-      } catch (const std::exception& e) {  // a factor outside the model's range: the file and material
+      } catch (const std::exception& e) {
+        problem = e.what();
+      }
+      if (problem.empty()) try {
+          validate_material(float_rounded(c.m));
+        } catch (const std::exception& e) {
+          problem = std::string("beyond the range of a float (the vectors' materials are rounded to float): ") + e.what();
+        }
+      if (!problem.empty()) {
         const OJson name = c.gltf.is_object() && c.gltf.contains("name") ? c.gltf["name"] : OJson();
         throw std::runtime_error(f.string() + ": materials[" + std::to_string(gm.index) + "]" +
                                  (name.is_string() ? " '" + quote_input(name.get<std::string>()) + "'" : std::string()) + ": " +
-                                 e.what());
+                                 problem);
       }
       out.push_back(std::move(c));
     }
