@@ -307,6 +307,26 @@ TEST(Gltf, LfsPointerBufferIsAWarning) {
 // by -theta about the normal: f_theta(v, l) = f_0(R(-theta) v, R(-theta) l). The material turned
 // through 3DS_materials_anisotropy (DSPBR's own rotation) by the same direction agrees; the opposite
 // turn must not (the check's power).
+// Values outside an extension's own range get a note (found by the fourth fresh tester's pass: a
+// negative dispersion became "no dispersion" and attenuationDistance 0 was kept, without a word).
+TEST(Gltf, ValuesOutsideAnExtensionsRangeAreNoted) {
+  const Json doc = {{"asset", {{"version", "2.0"}}},
+                    {"materials",
+                     {{{"name", "m"},
+                       {"extensions",
+                        {{"KHR_materials_dispersion", {{"dispersion", -1}}},
+                         {"KHR_materials_volume", {{"thicknessFactor", 1}, {"attenuationDistance", 0}}},
+                         {"KHR_materials_transmission", {{"transmissionFactor", 1}}}}}}}}};
+  const std::string text = doc.dump();
+  const auto ms = map_materials(parse_gltf(std::vector<std::uint8_t>(text.begin(), text.end()), "m.gltf"));
+  std::string notes;
+  for (const auto& n : ms.at(0).notes) notes += n + "\n";
+  EXPECT_NE(notes.find("KHR_materials_dispersion.dispersion -1.0 must be at least 0; mapped to no dispersion"),
+            std::string::npos) << notes;
+  EXPECT_NE(notes.find("KHR_materials_volume.attenuationDistance 0.0 must be above 0"), std::string::npos) << notes;
+  EXPECT_EQ(ms.at(0).material.abbeNumber, 0.0);
+}
+
 TEST(Gltf, KhrRotationTurnsCounterClockwise) {
   const double theta = 0.6;
   auto material_of = [](const Json& ext) {

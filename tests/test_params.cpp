@@ -284,8 +284,20 @@ TEST(ParamsCli, ListShowCheck) {
   EXPECT_EQ(run_dspbr("params check " + kData + "glass_ok.json " + kData + "generic_ok.json").status, 0);
   const auto bad = run_dspbr("params check " + kData + "bad_values.json");
   EXPECT_EQ(bad.status, 2);
-  EXPECT_EQ(count_lines_with(bad.output, "bad_values.json: parameter"), 6) << bad.output;
-  EXPECT_EQ(count_lines_with(bad.output, "bad_values.json: unknown parameter"), 1) << bad.output;
+  // One file: its problems on the one error line (the fourth fresh tester's pass: a line per problem
+  // and a count, the first lines without "dspbr: error:").
+  const auto occurrences = [&](const std::string& needle) {
+    std::size_t n = 0;
+    for (std::size_t at = bad.output.find(needle); at != std::string::npos; at = bad.output.find(needle, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count_lines_with(bad.output, "dspbr: error: "), 1) << bad.output;
+  EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;
+  EXPECT_EQ(occurrences("bad_values.json: parameter"), 6u) << bad.output;
+  EXPECT_EQ(occurrences("bad_values.json: unknown parameter"), 1u) << bad.output;
+  const auto two = run_dspbr("params check " + kData + "bad_values.json " + kData + "generic_ok.json");
+  EXPECT_EQ(two.status, 2);
+  EXPECT_EQ(count_lines_with(two.output, "dspbr: error: "), 8) << two.output;  // 7 problems and the count
   EXPECT_EQ(run_dspbr("params check " + kData + "glass_ok.json --params " + kData + "cycle.json").status, 2);
   for (const char* f : {"unknown_material.json", "malformed_instance.json", "glass_ior_hidden.json"}) {
     const auto r = run_dspbr("params check " + kData + f);

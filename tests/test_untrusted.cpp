@@ -453,6 +453,50 @@ TEST(Untrusted, MessagesSayWhatHappened) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
+// A run without HTML into a folder with an earlier run's pages replaces each page by one that gives
+// this run's verdict (found by the fourth fresh tester's pass: check --no-html left an earlier
+// PASS page beside a FAIL report.json; validate --no-html likewise index.html and report.html).
+TEST(Untrusted, ARunWithoutHtmlLeavesNoEarlierVerdict) {
+  const fs::path dir = fresh("earlier_pages");
+  const fs::path v = dir / "v", rep = dir / "rep";
+  ASSERT_EQ(run_dspbr("conformance generate --no-albedo --no-scenes --directions 1 --out " + v.string()).status, 0);
+  write(dir / "zero.csv", "id,f_cos_r,f_cos_g,f_cos_b\nplain_metal/gold-r10/00,1,1,1\n");
+  write(rep / "index.html", "<p>DSPBR conformance: PASS</p>");
+  write(rep / "plots" / "old.png", "png");
+  const ToolRun r = run_dspbr("conformance check " + (v / "vectors.json").string() + " " + (dir / "zero.csv").string() +
+                              " --no-html --out " + rep.string());
+  EXPECT_EQ(r.status, 1) << r.output;
+  const std::string page = read_all(rep / "index.html");
+  EXPECT_NE(page.find("its verdict is <b>FAIL</b>"), std::string::npos) << page;
+  EXPECT_EQ(page.find("PASS"), std::string::npos) << page;
+  EXPECT_TRUE(fs::exists(rep / "plots" / "old.png"));  // an earlier run's file: not deleted
+  // A folder without pages gets none.
+  const ToolRun fresh_run = run_dspbr("conformance check " + (v / "vectors.json").string() + " " +
+                                      (dir / "zero.csv").string() + " --no-html --out " + (dir / "new").string());
+  EXPECT_EQ(fresh_run.status, 1) << fresh_run.output;
+  EXPECT_FALSE(fs::exists(dir / "new" / "index.html"));
+}
+
+// A lut run into a folder with an earlier table set it would not wholly replace is refused, and
+// the folder keeps the earlier set (found by the fourth fresh tester's pass: a 4x4 json-only run
+// left the 16x16 EXR and pbrlut.hpp beside its dspbr_luts.json).
+TEST(Untrusted, ALutRunDoesNotMixTwoTableSets) {
+  const fs::path dir = fresh("lut_mix");
+  const std::string out = " --quiet --out " + (dir / "lc").string();
+  ASSERT_EQ(run_dspbr("lut --tables GGX_E_avg --size GGX_E_avg=4 --formats json,hpp" + out).status, 0);
+  const std::string json = read_all(dir / "lc" / "dspbr_luts.json"), hpp = read_all(dir / "lc" / "pbrlut.hpp");
+  const ToolRun r = run_dspbr("lut --tables GGX_E_avg --size GGX_E_avg=3 --formats json" + out);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("holds files of an earlier table set that this run does not replace (pbrlut.hpp)"),
+            std::string::npos) << r.output;
+  EXPECT_EQ(read_all(dir / "lc" / "dspbr_luts.json"), json);
+  EXPECT_EQ(read_all(dir / "lc" / "pbrlut.hpp"), hpp);
+  EXPECT_EQ(listing(dir / "lc"), (std::set<std::string>{"dspbr_luts.json", "pbrlut.hpp"}));
+  // The same set again replaces it.
+  EXPECT_EQ(run_dspbr("lut --tables GGX_E_avg --size GGX_E_avg=3 --formats json,hpp" + out).status, 0);
+  EXPECT_NE(read_all(dir / "lc" / "dspbr_luts.json"), json);
+}
+
 // Output that cannot be written is an error, not a success with nothing printed (found by this
 // stop's second fresh tester: on a full disk `eval`, `scene analyze --json`, `params list` and
 // `--help-all` exited 0 with an empty file). /dev/full fails every write with ENOSPC.

@@ -145,8 +145,11 @@ BsdfOptions build_options(const EvalArgs& a) {
   const auto p = parse_numbers("--position", a.position, 3);
   o.position = {p[0], p[1], p[2]};
   o.object_normal = parse_direction("--object-normal", a.object_normal);
-  if (!std::isfinite(a.wavelength) || a.wavelength < 0)
-    throw UsageError("--wavelength expects a wavelength in nm (0: no dispersion)");
+  // 0, or 1 nm to 1 mm: beyond, the dispersion formula's 1/lambda^2 leaves the doubles' range
+  // (1e-300 nm made "ior" infinite; the fourth fresh tester's pass).
+  if (!std::isfinite(a.wavelength) || a.wavelength < 0 || (a.wavelength > 0 && (a.wavelength < 1 || a.wavelength > 1e6)))
+    throw UsageError("--wavelength expects a wavelength in nm from 1 to 1000000 (0: no dispersion), got " +
+                     nlohmann::json(a.wavelength).dump());
   o.wavelength_nm = a.wavelength;
   if (!std::isfinite(a.area) || !(a.area > 0)) throw UsageError("--area expects a positive area in m^2");
   o.object_area_m2 = a.area;

@@ -176,6 +176,45 @@ void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& for
               luts.glass_stored_values(), t_gen);
 }
 
+// A file `dspbr lut` writes (either layout, any format): an earlier run's file of these kinds
+// that this run does not replace would be left beside the new set.
+bool table_output(const std::string& name) {
+  const auto ends = [&](const char* suffix) {
+    const std::string x(suffix);
+    return name.size() >= x.size() && name.compare(name.size() - x.size(), x.size(), x) == 0;
+  };
+  return ends(".exr") || ends(".png") || name == "pbrlut.hpp" || name == "dspbr_luts.json" ||
+         name == "dspbr_renderer_luts.json" || name.rfind("dspbr_lookup.", 0) == 0 ||
+         name.rfind("dspbr_glass_lookup.", 0) == 0;
+}
+
+// Before the commit: the folder must not keep files of an earlier table set that this set does not
+// replace (different --tables, --formats or --layout), or it would mix two sets (the fourth fresh
+// tester's pass: GGX_E.exr and pbrlut.hpp of 16x16 beside a dspbr_luts.json of 4x4). Nothing of
+// the earlier set is deleted; the run is refused and commits nothing.
+void refuse_mixed_set(const OutputFolder& out) {
+  std::vector<std::string> stale;
+  for (const char* sub : {"", "renderer"}) {
+    std::error_code ec;
+    const fs::path dir = fs::path(out.dir()) / sub;
+    if (!fs::is_directory(fs::symlink_status(dir, ec))) continue;
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+      const std::string rel = (std::string(sub).empty() ? "" : std::string(sub) + "/") + e.path().filename().string();
+      std::error_code ec2;
+      if (!fs::is_regular_file(e.symlink_status(ec2)) || !table_output(e.path().filename().string())) continue;
+      if (!fs::exists(fs::path(out.staging()) / rel, ec2)) stale.push_back(rel);
+    }
+  }
+  if (stale.empty()) return;
+  std::sort(stale.begin(), stale.end());
+  std::string list;
+  for (std::size_t i = 0; i < stale.size() && i < 3; ++i) list += (i ? ", " : "") + quote_input(stale[i]);
+  if (stale.size() > 3) list += ", ... (" + std::to_string(stale.size()) + " in all)";
+  throw UsageError("--out: '" + quote_input(out.dir()) + "' holds files of an earlier table set that this run does not "
+                   "replace (" + list + "): the folder would mix two sets. Give an empty folder, or the earlier run's "
+                   "--tables, --formats and --layout");
+}
+
 void run_generate(const LutArgs& a) {
   if (a.out.empty()) throw UsageError("--out DIR is required (the folder the tables are written to)");
   const LutOptions opt = to_options(a);
@@ -209,6 +248,7 @@ void run_generate(const LutArgs& a) {
   OutputFolder& out = cleanup.out();
   if (renderer) run_renderer(a, opt, formats, out.staging());
   if (!published) {
+    refuse_mixed_set(out);
     out.commit();
     return;
   }
@@ -216,6 +256,7 @@ void run_generate(const LutArgs& a) {
   const std::vector<Table> tables = generate_luts(opt);
   const double t_gen = seconds_since(t0);
   const std::vector<double> rounding = write_luts(tables, opt, out.staging(), formats);
+  refuse_mixed_set(out);
   out.commit();
   for (size_t i = 0; i < tables.size(); ++i) {
     const Table& t = tables[i];

@@ -133,13 +133,21 @@ void add_params_command(CLI::App& app) {
   check->callback([opt] {
     const ParamDefs defs = load_defs(opt->params);
     int bad = 0;
+    // One file: its problems as the one error line; several: a line per problem, then the count.
+    std::vector<std::string> errors;
+    const auto report = [&](const std::string& line) {
+      if (opt->instances.size() == 1)
+        errors.push_back(line);
+      else
+        std::fprintf(stderr, "dspbr: error: %s\n", one_line(line).c_str());
+    };
     for (const auto& path : opt->instances) {
       nlohmann::json doc;
       try {
         doc = read_json_file(path, "material instance file", limits::kDocumentBytes);
       } catch (const std::exception& e) {
         ++bad;
-        std::fprintf(stderr, "%s\n", one_line(e.what()).c_str());  // names the file
+        report(e.what());  // names the file
         continue;
       }
       std::vector<std::string> problems;
@@ -157,8 +165,13 @@ void add_params_command(CLI::App& app) {
         std::printf("%s\n", one_line(path + ": ok (material '" + type + "')").c_str());
       } else {
         ++bad;
-        for (const auto& p : problems) std::fprintf(stderr, "%s\n", one_line(path + ": " + p).c_str());
+        for (const auto& p : problems) report(path + ": " + p);
       }
+    }
+    if (!errors.empty()) {
+      std::string all = errors[0];
+      for (std::size_t i = 1; i < errors.size(); ++i) all += "; " + errors[i];
+      throw UsageError(all);
     }
     if (bad) throw UsageError(std::to_string(bad) + " of " + std::to_string(opt->instances.size()) +
                               " instance file(s) invalid against " + defs.source());

@@ -1,5 +1,7 @@
 #include "report_script.h"
 
+#include "dspbr/io/atomic_file.h"
+
 #include "child_process.h"
 #include "commands.h"
 
@@ -77,6 +79,20 @@ void check_report_python(const std::string& python) {
     throw UsageError("--python: " + shell_quote(python) + " cannot import numpy, matplotlib and jinja2 (exit status " +
                      std::to_string(r.status) +
                      "): give a Python that can (Debian: python3-numpy python3-matplotlib python3-jinja2), or --no-html");
+}
+
+void replace_earlier_pages(const OutputFolder& out, const std::vector<std::string>& pages, const std::string& data,
+                           const std::string& verdict) {
+  for (const std::string& page : pages) {
+    std::error_code ec;
+    if (!std::filesystem::exists(std::filesystem::path(out.dir()) / page, ec)) continue;
+    const std::string html =
+        "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>dspbr report: " + verdict +
+        "</title></head>\n<body><p>The last run into this folder wrote no HTML (<code>--no-html</code>): its verdict is <b>" +
+        verdict + "</b>, its data <a href=\"" + data + "\">" + data +
+        "</a>. The plots beside this page are an earlier run's and do not describe it.</p></body></html>\n";
+    write_text_file(out.staging() + "/" + page, html, out.dir() + "/" + page);
+  }
 }
 
 }  // namespace dspbr::cli

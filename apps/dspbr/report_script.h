@@ -4,6 +4,9 @@
 // and the validation scenes (share/dspbr/scenes) of `dspbr conformance generate`.
 #pragma once
 #include <string>
+#include <vector>
+
+#include "dspbr/io/output_folder.h"
 
 namespace dspbr::cli {
 
@@ -30,5 +33,13 @@ void run_report_script(const std::string& python, const std::string& script, con
 // Before any work: python imports numpy and jinja2 and finds matplotlib (not imported: that would
 // write its caches under $HOME), else UsageError naming --python and what to install (about 0.3 s).
 void check_report_python(const std::string& python);
+
+// A run without HTML (--no-html) into a folder that holds an earlier run's pages: each of `pages`
+// (index.html, ...) that exists there is replaced, in the new set, by a page that says this run
+// wrote only `data` (relative path) with `verdict`, so the folder never shows an earlier run's
+// verdict beside this run's data. The earlier plots stay (nothing of an earlier run is deleted),
+// no longer referenced.
+void replace_earlier_pages(const OutputFolder& out, const std::vector<std::string>& pages, const std::string& data,
+                           const std::string& verdict);
 
 }  // namespace dspbr::cli

@@ -17,7 +17,7 @@ def test_every_reader_within_the_memory_bound(tmp_path):
                         dspbr_exe(), "--scale", "0.0625", "--json", str(out)], capture_output=True, text=True)
     assert p.returncode in (0, 1), p.stderr  # 1: a time ratio or a bound exceeded, judged below
     doc = json.loads(out.read_text())
-    assert len(doc["readers"]) == 10
+    assert len(doc["readers"]) == 11
     for row in doc["readers"]:
         for run in row["runs"]:
             assert run["exit"] in (0, 1, 2), (row["reader"], run)

@@ -172,13 +172,21 @@ class Mapper {
       const std::string p = "KHR_materials_volume.";
       m.thinWalled = !(number(*e, "thicknessFactor", 0.0, p) > 0);
       texture(*e, "thicknessTexture", p, {""}, false);  // thickness: geometry in DSPBR, no parameter
-      if (e->contains("attenuationDistance")) m.attenuationDistance = number(*e, "attenuationDistance", 0.0, p);
+      if (e->contains("attenuationDistance")) {
+        m.attenuationDistance = number(*e, "attenuationDistance", 0.0, p);
+        if (!(m.attenuationDistance > 0))  // the extension's schema: exclusiveMinimum 0
+          out_.notes.push_back("outside the glTF range, kept: KHR_materials_volume.attenuationDistance " +
+                               json_fields::excerpt(Json(m.attenuationDistance)) + " must be above 0");
+      }
       m.attenuationColor = rgb(numbers<3>(*e, "attenuationColor", {1, 1, 1}, p));
     }
     if (const Json* e = ext("KHR_materials_dispersion")) {
       // KHR_materials_dispersion: dispersion = 20 / V_d; DSPBR abbeNumber 0 means no dispersion.
       const double d = number(*e, "dispersion", 0.0, "KHR_materials_dispersion.");
       m.abbeNumber = d > 0 ? 20.0 / d : 0.0;
+      if (d < 0)  // the extension's schema: minimum 0
+        out_.notes.push_back("outside the glTF range: KHR_materials_dispersion.dispersion " + json_fields::excerpt(Json(d)) +
+                             " must be at least 0; mapped to no dispersion");
     }
     if (const Json* e = ext("KHR_materials_diffuse_transmission")) {
       const std::string p = "KHR_materials_diffuse_transmission.";
