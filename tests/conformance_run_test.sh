@@ -55,6 +55,22 @@ assert r["quantities"]["pdf"]["judged"] == 0 and r["quantities"]["pdf"]["not_jud
 assert r["summary"]["not_supplied"] > 0
 PY
 
+# The user's own #include lines (read by the kit, inside the file's folder): the reference shader
+# included from another file passes; a syntax error in the included file is named by its file and line.
+mkdir -p "$work/inc"
+cp "$src/examples/conformance/shader_reference.glsl" "$work/inc/body.glsl"
+printf '// my renderer\n#include "body.glsl"\n' > "$work/inc/main.glsl"
+"$dspbr" conformance run "$vectors" --"$lang" "$work/inc/main.glsl" --no-html --groups clearcoat --out "$work/inc/r" \
+  > "$work/inc.log" 2>&1 || { cat "$work/inc.log"; fail "a shader that includes the reference: exit $?"; }
+printf '// my renderer\nvoid conformance_eval(DspbrConformanceInput x, inout DspbrConformanceResult y) {\n  y.f_cos = x.v +;\n}\n' \
+  > "$work/inc/bad_body.glsl"
+printf '// my renderer\n#include "bad_body.glsl"\n' > "$work/inc/bad.glsl"
+"$dspbr" conformance run "$vectors" --"$lang" "$work/inc/bad.glsl" --no-html --out "$work/inc/never" > "$work/inc_bad.log" 2>&1
+rc=$?
+cat "$work/inc_bad.log"
+[ $rc -eq 2 ] || fail "an included file that does not compile: exit $rc, expected 2"
+grep -q "bad_body.glsl:3" "$work/inc_bad.log" || fail "the message does not name the included file's line"
+
 printf 'void conformance_eval(DspbrConformanceInput x, inout DspbrConformanceResult y) {\n  y.f_cos = x.v +;\n}\n' \
   > "$work/typo.glsl"
 "$dspbr" conformance run "$vectors" --"$lang" "$work/typo.glsl" --no-html --out "$work/never" > "$work/typo.log" 2>&1

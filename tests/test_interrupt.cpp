@@ -98,8 +98,9 @@ int interrupt(const LutRun& r, const fs::path& out, int sig) {
 
 }  // namespace
 
+// SIGHUP, SIGUSR1 and SIGPIPE too (the fifth fresh tester's pass: each left the staging folder).
 TEST(Interrupt, LutRemovesTheFolderItCreated) {
-  for (int sig : {SIGINT, SIGTERM}) {
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGUSR1, SIGPIPE}) {
     const fs::path out = fs::path(::testing::TempDir()) / ("interrupt_new_" + std::to_string(sig));
     fs::remove_all(out);
     const LutRun r = start(out.string(), out.string() + ".log");
@@ -107,7 +108,7 @@ TEST(Interrupt, LutRemovesTheFolderItCreated) {
     EXPECT_EQ(status, 128 + sig) << read_all(r.log);
     EXPECT_FALSE(fs::exists(out)) << "left behind: " << out;
     const std::string log = read_all(r.log);
-    EXPECT_NE(log.find(std::string("dspbr: interrupted (") + (sig == SIGINT ? "SIGINT" : "SIGTERM") +
+    EXPECT_NE(log.find(std::string("dspbr: interrupted (SIG") + sigabbrev_np(sig) +
                        "): nothing was written; removed the 1 folder(s) it created ('" + out.string() + "')"),
               std::string::npos)
         << log;

@@ -497,6 +497,34 @@ TEST(Untrusted, ALutRunDoesNotMixTwoTableSets) {
   EXPECT_NE(read_all(dir / "lc" / "dspbr_luts.json"), json);
 }
 
+// A shader's own #include lines are read by the kit: regular files inside the shader's folder only
+// (found by the fifth fresh tester's pass: the compiler opened an included FIFO and hung, and
+// "../" reached any file). Refused in one line before anything is compiled or written.
+TEST(Untrusted, ShaderIncludesStayInsideTheShadersFolder) {
+  const fs::path dir = fresh("shader_includes");
+  ASSERT_EQ(run_dspbr("conformance generate --no-albedo --no-scenes --directions 1 --out " + (dir / "v").string()).status, 0);
+  const std::string body = "void conformance_eval(DspbrConformanceInput x, inout DspbrConformanceResult y) { }\n";
+  fs::create_directories(dir / "sh");
+  ASSERT_EQ(::mkfifo((dir / "sh" / "fifo").c_str(), 0600), 0);
+  write(dir / "secret.glsl", body);
+  write(dir / "sh" / "fifo.glsl", "#include \"fifo\"\n" + body);
+  write(dir / "sh" / "up.glsl", "// a comment\n#include \"../secret.glsl\"\n");
+  write(dir / "sh" / "cycle.glsl", "#include \"cycle.glsl\"\n");
+  const std::pair<std::string, std::string> cases[] = {
+      {"fifo.glsl", "fifo.glsl:1: #include: " + (dir / "sh" / "fifo").string() + " is not a regular file (a FIFO)"},
+      {"up.glsl", "up.glsl:2: #include \"../secret.glsl\" leaves the folder of --glsl's file"},
+      {"cycle.glsl", "nested more than 16 levels deep"}};
+  for (const auto& [file, message] : cases) {
+    const ToolRun r = run_dspbr("conformance run " + (dir / "v" / "vectors.json").string() + " --glsl " +
+                                (dir / "sh" / file).string() + " --no-html --out " + (dir / "r").string());
+    if (r.output.find("built without Vulkan") != std::string::npos) GTEST_SKIP() << r.output;
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "r")) << file;
+  }
+}
+
 // Output that cannot be written is an error, not a success with nothing printed (found by this
 // stop's second fresh tester: on a full disk `eval`, `scene analyze --json`, `params list` and
 // `--help-all` exited 0 with an empty file). /dev/full fails every write with ENOSPC.

@@ -15,6 +15,7 @@
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -85,6 +86,55 @@ std::string compiler_errors(const std::string& log, std::size_t count) {
 }
 
 #ifdef DSPBR_HAVE_VULKAN
+// The user's file with its own #include "..." lines replaced by the files they name, read by the
+// kit (only regular files, inside the folder of the user's file, at most kShaderBytes in all, 16
+// levels deep), each between #line directives that keep the compiler's messages naming the file
+// and line. A name the folder does not hold is left to the compiler, which looks in the kit's
+// folders (the shader library). The compiler itself then reads nothing of the user's folder (the
+// fifth fresh tester's pass: an #include of a FIFO hung the run, and ../ reached any file).
+std::string expand_includes(const std::string& text, const fs::path& file, const fs::path& top, int depth,
+                            std::uint64_t& total, const char* option) {
+  static const std::regex include_line(R"re(^\s*#\s*include\s*"([^"]*)"\s*(//.*)?\r?$)re");
+  const auto refuse = [&](std::size_t line, const std::string& why) {
+    return UsageError(std::string(option) + ": " + quote_input(file.string()) + ":" + std::to_string(line) + ": " + why);
+  };
+  if (depth > 16) throw refuse(1, "#include nested more than 16 levels deep (an include cycle?)");
+  std::istringstream in(text);
+  std::string line, out;
+  std::size_t n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    std::smatch m;
+    if (!std::regex_match(line, m, include_line)) {
+      out += line + "\n";
+      continue;
+    }
+    const fs::path named = file.parent_path() / m[1].str();
+    std::error_code ec;
+    if (m[1].str().empty() || fs::path(m[1].str()).is_absolute()) throw refuse(n, "#include names no file of its folder");
+    const fs::path resolved = fs::weakly_canonical(named, ec);
+    const std::string inside = top.string() + "/";
+    if (ec || resolved.string().rfind(inside, 0) != 0)
+      throw refuse(n, "#include \"" + quote_input(m[1].str()) + "\" leaves the folder of " + option + "'s file");
+    if (!fs::exists(fs::symlink_status(named, ec))) {  // the kit's (the shader library's)
+      out += line + "\n";
+      continue;
+    }
+    std::string included;
+    try {
+      included = read_file(named.string(), kShaderBytes);
+    } catch (const std::exception& e) {
+      throw refuse(n, std::string("#include: ") + e.what());
+    }
+    total += included.size();
+    if (total > kShaderBytes) throw refuse(n, "#include: the files included exceed " + bytes_text(kShaderBytes) + " in all");
+    out += "#line 1 \"" + line_name(named.string()) + "\"\n" +
+           expand_includes(included, named, top, depth + 1, total, option) + "#line " + std::to_string(n + 1) + " \"" +
+           line_name(file.string()) + "\"\n";
+  }
+  return out;
+}
+
 // The kernel compiled (SPIR-V words) from the user's file: written into the staging folder's
 // .kernel/ as "dspbr_conformance_user" after a #line naming it, and included by the kit's entry.
 std::vector<uint32_t> compile_kernel(const RunArgs& a, const OutputFolder& out) {
@@ -99,15 +149,17 @@ std::vector<uint32_t> compile_kernel(const RunArgs& a, const OutputFolder& out) 
     throw UsageError(std::string(option) + ": " + e.what());
   }
   const std::string shaders = shared_path("shaders", "; the shader library is installed with dspbr");
+  std::error_code ec;
+  const fs::path top = fs::canonical(fs::absolute(user).parent_path(), ec);
+  std::uint64_t total = text.size();
+  text = expand_includes(text, fs::absolute(user), top, 0, total, option);
   write_text(out, ".kernel/dspbr_conformance_user", "#line 1 \"" + line_name(user) + "\"\n" + text + "\n");
   const std::string spv = work + "/kernel.spv", log = work + "/compiler.txt";
   std::vector<std::string> argv = {a.glslang, "-V", "-S", "comp"};
   if (hlsl) argv.insert(argv.end(), {"-D", "-e", "main", "--shift-texture-binding", "2"});
-  std::string user_dir = fs::path(user).parent_path().string();
-  if (user_dir.empty()) user_dir = ".";
-  // Includes: the kit's copy of the user's file, then the user's own folder (its includes), then
-  // the shader library with the lookups.
-  argv.insert(argv.end(), {"-I" + work, "-I" + user_dir, "-I" + shaders, "-o", spv,
+  // Includes: the kit's copy of the user's file (its own includes expanded above), then the shader
+  // library with the lookups.
+  argv.insert(argv.end(), {"-I" + work, "-I" + shaders, "-o", spv,
                            shaders + (hlsl ? "/conformance/run.hlsl" : "/conformance/run.comp")});
   const ChildExit r = run_child(argv, log);
   if (!r.started)
@@ -119,9 +171,15 @@ std::vector<uint32_t> compile_kernel(const RunArgs& a, const OutputFolder& out) 
       messages = read_file(log, kShaderBytes);
     } catch (const std::exception&) {
     }
+    const std::string errors = compiler_errors(messages, 3);
     throw UsageError(user + ": does not compile as the kit's " + (hlsl ? "HLSL" : "GLSL") + " kernel (" + a.glslang +
-                     "): " + compiler_errors(messages, 3));
+                     "): " + (errors.find_first_not_of(" \t\r\n") == std::string::npos
+                                  ? "it exited with status " + std::to_string(r.status) + " and printed nothing"
+                                  : errors));
   }
+  std::error_code spv_ec;
+  if (!fs::is_regular_file(spv, spv_ec))  // a "compiler" that succeeds without output (--glslang /bin/true)
+    throw UsageError("--glslang: '" + quote_input(a.glslang) + "' exited 0 but wrote no SPIR-V (is it glslangValidator?)");
   std::vector<uint32_t> words = vk_compute::read_spirv(spv);
   for (const std::string& f : {spv, log, work + "/dspbr_conformance_user"}) fs::remove(f);
   fs::remove(work);

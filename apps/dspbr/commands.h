@@ -67,7 +67,7 @@ inline CLI::Validator decimal_number() {
 
 // A comma-separated list option (--only, --components, --groups): an empty value is refused (it
 // would silently mean the default, "all"), and so is an empty item ("a,", ",a", "a,,b": a stray
-// comma), as the vector options refuse them. Options split by CLI11 (->delimiter) see each item.
+// comma), as the vector options refuse them (add_list_option checks each value before splitting).
 inline CLI::Validator non_empty_list() {
   return CLI::Validator(
       [](std::string& s) -> std::string {

@@ -26,6 +26,12 @@ namespace {
 int g_pipe_write = -1;
 std::atomic<pid_t> g_child{0};  // watch_child
 
+// The signals that end a run with the cleanup: the interrupts and every other signal whose default
+// action terminates the process without a core dump that a user or a pipe sends (the fifth fresh
+// tester's pass: SIGHUP, SIGUSR1 and SIGPIPE, from `dspbr lut ... | head`, left the staging folder).
+constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE};
+constexpr std::size_t kSignalCount = sizeof kSignals / sizeof kSignals[0];
+
 extern "C" void on_signal(int sig) {
   const unsigned char byte = static_cast<unsigned char>(sig);
   if (g_pipe_write >= 0) {
@@ -60,7 +66,7 @@ struct InterruptCleanup::State {
   std::mutex opening;                 // held while the folder is being created
   std::optional<OutputFolder> out;    // empty until created (or when creating it failed: nothing left)
   int pipe_read = -1, pipe_write = -1;
-  struct sigaction old_int {}, old_term {};
+  struct sigaction old_actions[kSignalCount] {};
   sigset_t old_mask{};
   std::thread watcher;
 
@@ -73,7 +79,8 @@ struct InterruptCleanup::State {
     if (const pid_t child = g_child.load(); child > 0) stop_child_group(child, sig);  // it may write into the staging folder
     const std::lock_guard<std::mutex> lock(opening);  // wait for a folder being created
     const std::string what = out ? out->discard() : "nothing was written";
-    std::fprintf(stderr, "dspbr: interrupted (%s): %s\n", sig == SIGINT ? "SIGINT" : "SIGTERM", what.c_str());
+    const char* abbrev = sigabbrev_np(sig);
+    std::fprintf(stderr, "dspbr: interrupted (SIG%s): %s\n", abbrev ? abbrev : "?", what.c_str());
     std::fflush(stderr);
     ::_exit(128 + sig);
   }
@@ -93,15 +100,15 @@ InterruptCleanup::InterruptCleanup(const std::string& dir, const std::string& op
   sa.sa_handler = on_signal;
   sigemptyset(&sa.sa_mask);
   sa.sa_flags = SA_RESTART;
-  sigaction(SIGINT, &sa, &s.old_int);
-  sigaction(SIGTERM, &sa, &s.old_term);
+  sigset_t all;
+  sigemptyset(&all);
+  for (std::size_t i = 0; i < kSignalCount; ++i) {
+    sigaction(kSignals[i], &sa, &s.old_actions[i]);
+    sigaddset(&all, kSignals[i]);
+  }
   // A signal that arrived before (blocked by the parent, pending) is handled now, before anything
   // is created.
-  sigset_t both;
-  sigemptyset(&both);
-  sigaddset(&both, SIGINT);
-  sigaddset(&both, SIGTERM);
-  pthread_sigmask(SIG_UNBLOCK, &both, &s.old_mask);
+  pthread_sigmask(SIG_UNBLOCK, &all, &s.old_mask);
   try {
     const std::lock_guard<std::mutex> lock(s.opening);
     try {
@@ -125,8 +132,7 @@ void InterruptCleanup::stop() {
   State& s = *state_;
   if (s.pipe_write < 0) return;
   pthread_sigmask(SIG_SETMASK, &s.old_mask, nullptr);
-  sigaction(SIGINT, &s.old_int, nullptr);
-  sigaction(SIGTERM, &s.old_term, nullptr);
+  for (std::size_t i = 0; i < kSignalCount; ++i) sigaction(kSignals[i], &s.old_actions[i], nullptr);
   const unsigned char stop = 0;
   if (::write(s.pipe_write, &stop, 1) != 1) s.watcher.detach();  // cannot wake it: let it end with the process
   if (s.watcher.joinable()) s.watcher.join();

@@ -1,8 +1,9 @@
 // An interrupted run removes what it created and says so: while an InterruptCleanup lives,
-// SIGINT and SIGTERM discard the run's OutputFolder (io/output_folder.h: its staging folder and
-// the folders it created, nothing else), print "dspbr: interrupted (SIGINT): <what was removed>"
-// on stderr and exit with status 128 + the signal number (130 for SIGINT, 143 for SIGTERM). An
-// interrupt while the outputs are being moved into place waits until they all are.
+// SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM and SIGPIPE discard the run's
+// OutputFolder (io/output_folder.h: its staging folder and the folders it created, nothing else),
+// print "dspbr: interrupted (SIGINT): <what was removed>" on stderr and exit with status 128 + the
+// signal number (130 for SIGINT, 143 for SIGTERM). An interrupt while the outputs are being moved
+// into place waits until they all are. (SIGKILL cannot be caught: docs/limits.md.)
 #pragma once
 #include <sys/types.h>
 
