@@ -5,6 +5,9 @@
 // is built by the test.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+
+#include <chrono>
+#include <thread>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -523,6 +526,23 @@ TEST(Untrusted, ShaderIncludesStayInsideTheShadersFolder) {
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
     EXPECT_FALSE(fs::exists(dir / "r")) << file;
   }
+}
+
+// Same command, same seed: the same image bytes (found by the fifth fresh tester's pass: OpenImageIO
+// stamped each EXR with the time of writing).
+TEST(Untrusted, ValidateImagesAreTheSameBytes) {
+  const fs::path dir = fresh("validate_bytes");
+  for (const char* run : {"a", "b"}) {
+    const ToolRun r = run_dspbr("validate --quick --no-html --threads 1 --out " + (dir / run).string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1100));  // another second on the clock
+  }
+  std::size_t images = 0;
+  for (const auto& e : fs::directory_iterator(dir / "a" / "images")) {
+    EXPECT_EQ(read_all(e.path()), read_all(dir / "b" / "images" / e.path().filename())) << e.path().filename();
+    ++images;
+  }
+  EXPECT_GT(images, 0u);
 }
 
 // Output that cannot be written is an error, not a success with nothing printed (found by this

@@ -162,7 +162,11 @@ def write_results(results, path):
     the text is made first (ValueError on a document that is not {"results": [{"id": ..., ...}]} or
     on a non-finite number, nothing written), then written to a
     temporary file next to `path` and renamed over it, so an old file stays whole on any failure."""
+    import os
     from ._dspbr import write_text_atomically  # the compiled module
+    folder = os.path.dirname(os.fspath(path)) or "."
+    if not os.path.isdir(folder):  # as `conformance reference --out`: no folders made on the way
+        raise ValueError(f"{path}: the folder '{folder}' does not exist (create it first)")
     if not isinstance(results, dict) or set(results) != {"results"} or not isinstance(results["results"], list):
         raise ValueError(f"{path}: results must be run()'s {{\"results\": [...]}}, got {type(results).__name__}"
                          + (f" with members {sorted(results)}" if isinstance(results, dict) else ""))

@@ -201,6 +201,16 @@ def test_bad_arrays_raise():
         bsdf.eval([0, 0, 1], [[0, 0, 1], [0, 0, 0]])
     with pytest.raises(ValueError, match=r"u\[0\] expects three numbers in \[0, 1\)"):
         bsdf.sample([0, 0, 1], [[0.5, 1.0, 0.5]])
+    # Found by the fifth fresh tester's pass: strings were "shape (0,)", 1j lost its imaginary part,
+    # a subnormal area gave an infinite emission, a wavelength of 1e-300 nm an infinite ior.
+    with pytest.raises(ValueError, match="v must be an array of real numbers, got dtype <U1"):
+        bsdf.eval(["a", "b", "c"], [0, 0, 1])
+    with pytest.raises(ValueError, match="l must be an array of real numbers, got dtype complex128"):
+        bsdf.eval([0, 0, 1], np.array([1j, 0, 1]))
+    with pytest.raises(ValueError, match='the result "emission" is not finite'):
+        dspbr.Bsdf({"emissionValue": 1, "emissionMode": "LUMINOUS_POWER"}, area=1e-320).emission([0, 0, 1])
+    with pytest.raises(ValueError, match="wavelength expects a wavelength in nm from 1 to 1000000"):
+        dspbr.Bsdf({}, wavelength=1e-300)
     with pytest.raises(ValueError):
         dspbr.Bsdf("/nonexistent/material.json")
     msg = cli_error("eval", "--material", "/nonexistent/material.json", "--view", "0,0,1", "--light", "0,0,1")

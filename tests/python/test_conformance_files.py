@@ -127,3 +127,12 @@ def test_write_results_refuses_what_run_does_not_make(tmp_path, doc):
     with pytest.raises(ValueError, match="results"):
         dc.write_results(doc, p)
     assert os.listdir(tmp_path) == []
+
+
+# Found by the fifth fresh tester's pass: write_results made every missing folder of a mistyped
+# path (the CLI refuses it).
+def test_write_results_makes_no_folders(tmp_path):
+    p = tmp_path / "a" / "b" / "results.json"
+    with pytest.raises(ValueError, match="the folder .* does not exist"):
+        dc.write_results({"results": [{"id": "a", "f_cos": [0, 0, 0]}]}, p)
+    assert os.listdir(tmp_path) == []
