@@ -261,9 +261,13 @@ std::vector<Vec3> directions(const Triples& t, const char* name, size_t n) {
   {
     py::gil_scoped_release release;
     for (size_t i = 0; i < rows && bad == rows; ++i) {
-      const Vec3 v = t.at(i);
+      // Scaled by its largest component first: the length of (1e308, 1e308, 1e308) or of
+      // (0, 0, 1e-320) is not a double, the direction is (the sixth fresh tester's pass).
+      const Vec3 raw = t.at(i);
+      const double big = std::max({std::abs(raw.x), std::abs(raw.y), std::abs(raw.z)});
+      const Vec3 v = big > 0 && std::isfinite(big) ? Vec3{raw.x / big, raw.y / big, raw.z / big} : raw;
       const double len = length(v);
-      if (!(len > 0) || !std::isfinite(len)) bad = i;
+      if (!(len > 0) || !std::isfinite(len) || !std::isfinite(big)) bad = i;
       else out[i] = v * (1.0 / len);
     }
   }
@@ -467,6 +471,21 @@ class PyBsdf {
   std::string tables_;
   std::unique_ptr<MaterialBsdf> bsdf_;
 };
+
+// A method of a Bsdf that first checks the instance was initialised: Bsdf.__new__(Bsdf) makes
+// one without running the constructor, and a bound member function would then run on storage that
+// holds no PyBsdf (the sixth fresh tester's pass: the interpreter died). A TypeError instead.
+template <class R, class... A>
+auto on_bsdf(R (PyBsdf::*f)(A...) const) {
+  return [f](const py::object& self, A... a) -> R {
+    auto* inst = reinterpret_cast<py::detail::instance*>(self.ptr());
+    py::detail::value_and_holder vh =
+        inst->get_value_and_holder(py::detail::get_type_info(typeid(PyBsdf)), false);
+    if (!vh || !vh.holder_constructed())
+      throw py::type_error("this Bsdf was never initialised: make one with dspbr.Bsdf(material, ...)");
+    return (static_cast<const PyBsdf*>(vh.value_ptr())->*f)(std::forward<A>(a)...);
+  };
+}
 
 // ---- dspbr.lut -------------------------------------------------------------------------------
 
@@ -686,6 +705,7 @@ namespace dspbr::python {
 void bind_lookup(pybind11::module_& m);  // lookup_bindings.cpp
 }
 
+
 PYBIND11_MODULE(_dspbr, m) {
   using namespace dspbr;
   using namespace dspbr::python;
@@ -736,29 +756,29 @@ ones have the same shape, and the results have that leading shape: (..., 3) or (
            "sheen: str = 'main', tables: str = 'renderer', position: numpy.typing.ArrayLike = (0, 0, 0), "
            "object_normal: numpy.typing.ArrayLike = (0, 0, 1), wavelength: float = 0.0, area: float = 1.0, "
            "transmission_compensation: bool = False) -> None\n\nSee the class.")
-      .def("eval", &PyBsdf::eval, py::arg("v"), py::arg("l"),
+      .def("eval", on_bsdf(&PyBsdf::eval), py::arg("v"), py::arg("l"),
            "eval(self, v: numpy.typing.ArrayLike, l: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]\n\n"
            "f(v, l) without the cosine [1/sr]: (N, 3) RGB for (N, 3) directions, (3,) for (3,).")
-      .def("pdf", &PyBsdf::pdf, py::arg("v"), py::arg("l"),
+      .def("pdf", on_bsdf(&PyBsdf::pdf), py::arg("v"), py::arg("l"),
            "pdf(self, v: numpy.typing.ArrayLike, l: numpy.typing.ArrayLike) -> typing.Union[numpy.typing.NDArray[numpy.float64], float]\n\n"
            "Solid-angle density [1/sr] with which sample(v, .) gives l: (N,) (a float for (3,) arguments).")
-      .def("sample", &PyBsdf::sample, py::arg("v"), py::arg("u"),
+      .def("sample", on_bsdf(&PyBsdf::sample), py::arg("v"), py::arg("u"),
            "sample(self, v: numpy.typing.ArrayLike, u: numpy.typing.ArrayLike) -> dict[str, typing.Any]\n\n"
            "Samples l for v with uniform numbers u in [0, 1)^3 per row: dict of arrays l, weight (= f |cos| / pdf; "
            "for a delta lobe reflectance / probability), pdf, flags (REFLECTION | TRANSMISSION | DELTA | GLOSSY | "
            "DIFFUSE), valid; failed samples have valid False and zeros. For (3,) arguments: l and weight (3,), pdf, "
            "flags and valid scalars.")
-      .def("emission", &PyBsdf::emission, py::arg("v"), "emission(self, v: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]\n\n"
+      .def("emission", on_bsdf(&PyBsdf::emission), py::arg("v"), "emission(self, v: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]\n\n"
            "Emitted radiance L_e(v) [W/(sr m^2), the material's units], (N, 3) or (3,).")
-      .def("delta_probability", &PyBsdf::delta_probability, py::arg("v"),
+      .def("delta_probability", on_bsdf(&PyBsdf::delta_probability), py::arg("v"),
            "delta_probability(self, v: numpy.typing.ArrayLike) -> typing.Union[numpy.typing.NDArray[numpy.float64], float]\n\n"
            "Total probability of the delta lobes for v, (N,) or a float.")
-      .def_property_readonly("components", &PyBsdf::components, "(self) -> list[str]\n\nThe components included (names).")
-      .def_property_readonly("ior", &PyBsdf::ior, "(self) -> float\n\nThe IOR used (ior, or eta(wavelength) with dispersion).")
-      .def_property_readonly("flags", &PyBsdf::flags, "(self) -> int\n\nUnion of the lobe flags the BSDF can produce.")
-      .def_property_readonly("material", &PyBsdf::material,
+      .def_property_readonly("components", on_bsdf(&PyBsdf::components), "(self) -> list[str]\n\nThe components included (names).")
+      .def_property_readonly("ior", on_bsdf(&PyBsdf::ior), "(self) -> float\n\nThe IOR used (ior, or eta(wavelength) with dispersion).")
+      .def_property_readonly("flags", on_bsdf(&PyBsdf::flags), "(self) -> int\n\nUnion of the lobe flags the BSDF can produce.")
+      .def_property_readonly("material", on_bsdf(&PyBsdf::material),
                              "(self) -> dict[str, typing.Any]\n\nEvery parameter of the material as validated, {id: value} (JSON spelling).")
-      .def("__repr__", &PyBsdf::repr, "__repr__(self) -> str");
+      .def("__repr__", on_bsdf(&PyBsdf::repr), "__repr__(self) -> str");
 
   auto lut = m.def_submodule("lut", "Energy-compensation tables (docs/luts.md)");
   bind_lut_table(lut);

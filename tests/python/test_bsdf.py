@@ -211,6 +211,14 @@ def test_bad_arrays_raise():
         dspbr.Bsdf({"emissionValue": 1, "emissionMode": "LUMINOUS_POWER"}, area=1e-320).emission([0, 0, 1])
     with pytest.raises(ValueError, match="wavelength expects a wavelength in nm from 1 to 1000000"):
         dspbr.Bsdf({}, wavelength=1e-300)
+    # Found by the sixth fresh tester's pass: an instance never initialised killed the interpreter,
+    # and directions whose length is not a double were refused.
+    with pytest.raises(TypeError, match="this Bsdf was never initialised"):
+        dspbr.Bsdf.__new__(dspbr.Bsdf).eval([0, 0, 1], [0, 0, 1])
+    with pytest.raises(TypeError, match="this Bsdf was never initialised"):
+        repr(dspbr.Bsdf.__new__(dspbr.Bsdf))
+    assert np.allclose(bsdf.eval([1e308, 1e308, 1e308], [0, 0, 1]), bsdf.eval([1, 1, 1], [0, 0, 1]))
+    assert np.allclose(bsdf.eval([0, 0, 1e-320], [0, 0, 1]), bsdf.eval([0, 0, 1], [0, 0, 1]))
     with pytest.raises(ValueError):
         dspbr.Bsdf("/nonexistent/material.json")
     msg = cli_error("eval", "--material", "/nonexistent/material.json", "--view", "0,0,1", "--light", "0,0,1")
