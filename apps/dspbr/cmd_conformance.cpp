@@ -128,7 +128,7 @@ void run_check(const CheckArgs& a) {
     // --require-all: every vector judged, i.e. of the selection (--groups/--components), has its f cos.
     const bool selected = !a.selection.groups.empty() || !a.selection.components.empty();
     if (a.require_all)
-      conformance::match_results(vectors, results, a.results, selected ? "the selection of " + a.vectors : a.vectors, true);
+      conformance::require_f_cos(vectors, results, a.results, selected ? "the selection of " + a.vectors : a.vectors);
   } catch (const std::exception& e) {
     throw UsageError(e.what());
   }

@@ -151,6 +151,8 @@ std::vector<uint32_t> compile_kernel(const RunArgs& a, const OutputFolder& out) 
   const std::string shaders = shared_path("shaders", "; the shader library is installed with dspbr");
   std::error_code ec;
   const fs::path top = fs::canonical(fs::absolute(user).parent_path(), ec);
+  // Without the folder every #include would pass the containment check below: refused instead.
+  if (ec) throw UsageError(std::string(option) + ": the folder of '" + quote_input(user) + "' cannot be read: " + ec.message());
   std::uint64_t total = text.size();
   text = expand_includes(text, fs::absolute(user), top, 0, total, option);
   write_text(out, ".kernel/dspbr_conformance_user", "#line 1 \"" + line_name(user) + "\"\n" + text + "\n");

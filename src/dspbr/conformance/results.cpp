@@ -242,6 +242,19 @@ std::vector<Result> read_results(const std::string& path) {
   return parse_results(read_file(path, limits::kDocumentBytes), path);
 }
 
+void require_f_cos(const std::vector<Vector>& vectors, const std::vector<Result>& results, const std::string& path,
+                   const std::string& vectors_path) {
+  // The one quantity every vector judges; a result whose f cos is left out or null counts as none.
+  std::size_t missing = 0;
+  std::string first_missing;
+  for (std::size_t i = 0; i < vectors.size(); ++i)
+    if (!results[i].f_cos && missing++ == 0) first_missing = vectors[i].id;
+  if (missing > 0)
+    fail(path, "no result with an f_cos for vector " + in_quotes(first_missing) +
+                   (missing > 1 ? " (and " + std::to_string(missing - 1) + " more)" : std::string()) +
+                   ": every vector of " + vectors_path + " needs one (--require-all)");
+}
+
 std::vector<Result> match_results(const std::vector<Vector>& vectors, std::vector<Result> results,
                                   const std::string& path, const std::string& vectors_path, bool require_all) {
   std::map<std::string, std::size_t> index;
@@ -256,20 +269,10 @@ std::vector<Result> match_results(const std::vector<Vector>& vectors, std::vecto
     slot[it->second] = std::move(results[i]);
   }
   std::vector<Result> out;
-  std::size_t missing = 0;
-  std::string first_missing;
-  for (std::size_t i = 0; i < vectors.size(); ++i) {
-    // --require-all: a result with its f cos (the one quantity every vector judges); a result
-    // whose f cos is left out or null counts as missing.
-    if (!slot[i] || !slot[i]->f_cos)
-      if (missing++ == 0) first_missing = vectors[i].id;
-    if (!slot[i]) slot[i] = Result{vectors[i].id, std::nullopt, std::nullopt, std::nullopt, std::nullopt, std::nullopt};
-    out.push_back(std::move(*slot[i]));
-  }
-  if (missing > 0 && require_all)
-    fail(path, "no result with an f_cos for vector " + in_quotes(first_missing) +
-                   (missing > 1 ? " (and " + std::to_string(missing - 1) + " more)" : std::string()) +
-                   ": every vector of " + vectors_path + " needs one (--require-all)");
+  for (std::size_t i = 0; i < vectors.size(); ++i)
+    out.push_back(slot[i] ? std::move(*slot[i])
+                          : Result{vectors[i].id, std::nullopt, std::nullopt, std::nullopt, std::nullopt, std::nullopt});
+  if (require_all) require_f_cos(vectors, out, path, vectors_path);
   return out;
 }
 

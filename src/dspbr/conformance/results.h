@@ -37,10 +37,14 @@ std::vector<Result> read_results(const std::string& path);
 // Same from the file's bytes; `path` names it in messages.
 std::vector<Result> parse_results(std::string_view bytes, const std::string& path);
 
+// --require-all: throws "<path>: no result with an f_cos for vector 'x' (and N more): every vector
+// of <vectors_path> needs one (--require-all)" unless results[i] (matched to vectors[i]) has its f cos.
+void require_f_cos(const std::vector<Vector>& vectors, const std::vector<Result>& results, const std::string& path,
+                   const std::string& vectors_path);
+
 // The results in the order of `vectors`; a vector without one gets a Result that supplies
 // nothing. Throws "<path>: <record>: id 'x' is not a vector of <vectors_path>" for a result of no
-// vector, and with `require_all` "<path>: no result for vector 'x' (and N more)" when a vector has
-// none.
+// vector, and with `require_all` what require_f_cos throws.
 std::vector<Result> match_results(const std::vector<Vector>& vectors, std::vector<Result> results,
                                   const std::string& path, const std::string& vectors_path, bool require_all = false);
 
