@@ -139,7 +139,7 @@ void run_check(const CheckArgs& a) {
   InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
   expect_with(a.representation, vectors, provenance, a.vectors);
   Judgement j{a.vectors, a.results, a.out, a.python, script, a.selection};
-  judge_results(j, cleanup.out(), vectors, results, provenance);
+  judge_results(j, cleanup.out(), vectors, results, provenance, a.representation);
 }
 
 // The results of the reference BSDF reading another table set (f cos and pdf; the quantities that
@@ -229,7 +229,8 @@ void add_conformance_command(CLI::App& app) {
                    "docs/conformance.md): f_cos and pdf of every vector");
   ref->add_option("VECTORS", r->vectors, "vectors.json written by `dspbr conformance generate`")->required();
   ref->add_option("--tables", r->tables,
-                  "renderer (the reference), published, fits (fits/dspbr_fits.hpp) or uncompensated")
+                  "renderer (the reference), published, fits (fits/dspbr_fits.hpp), uncompensated or analytic "
+                  "(Karis 2014's albedo approximation)")
       ->capture_default_str();
   ref->add_option("--out", r->out, "Results file (JSON)")->required();
   ref->callback([r] { run_reference(*r); });

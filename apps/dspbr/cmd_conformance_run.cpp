@@ -286,7 +286,7 @@ void run_shader(const RunArgs& a) {
   expect_with(a.representation, vectors, provenance, a.vectors);
   Judgement j{a.vectors, user, a.out, a.python, script, a.selection};
   write_text(out, "results.json", json_text(conformance::results_document(results), -1, "results.json") + "\n");
-  judge_results(j, out, vectors, results, provenance);
+  judge_results(j, out, vectors, results, provenance, a.representation);
 #endif
 }
 

@@ -1,6 +1,7 @@
 #include "conformance_judge.h"
 
 #include <cstdio>
+#include <optional>
 
 #include "commands.h"
 #include "report_script.h"
@@ -17,7 +18,8 @@ void add_representation_options(CLI::App* cmd, RepresentationOptions& o) {
   cmd->add_option("--tables", o.tables,
                   "Judge against the reference reading this table set: renderer (the vectors as written), published "
                   "(the published tables, multilinear), fits (the LUT-free fits), uncompensated (no energy "
-                  "compensation); for an implementation that ships them (docs/conformance.md)")
+                  "compensation), analytic (Karis 2014's albedo approximation); for an implementation that ships them "
+                  "(docs/conformance.md)")
       ->capture_default_str();
   cmd->add_option("--min-roughness", o.min_roughness,
                   "The implementation clamps roughness and clearcoatRoughness to at least R: judge f_cos and pdf "
@@ -51,14 +53,34 @@ void expect_with(const RepresentationOptions& o, std::vector<conformance::Vector
 }
 
 void judge_results(const Judgement& j, OutputFolder& out, const std::vector<conformance::Vector>& vectors,
-                   const std::vector<conformance::Result>& results, const nlohmann::ordered_json& provenance) {
+                   const std::vector<conformance::Result>& results, const nlohmann::ordered_json& provenance,
+                   const RepresentationOptions& representation) {
   const conformance::Check check = conformance::check_results(vectors, results);
   // A check that judged nothing could not have failed: bad input, not a PASS.
   if (check.judged() == 0)
     throw UsageError(j.results + ": no result for any of the " + std::to_string(vectors.size()) +
                      (j.selection.groups.empty() && j.selection.components.empty() ? "" : " selected") + " vectors of " +
                      j.vectors);
-  const nlohmann::ordered_json report = conformance::check_report(vectors, results, check, provenance);
+  nlohmann::ordered_json report = conformance::check_report(vectors, results, check, provenance);
+  std::optional<conformance::Diagnosis> diagnosis;
+  if (!check.passed()) {
+    std::fprintf(stderr, "conformance: diagnosing %zu failing vectors ...\n", check.failed);
+    const conformance::Representation base{&conformance::demo_table_set(parse_tables_option(representation.tables)),
+                                           representation.min_roughness};
+    diagnosis = conformance::diagnose(vectors, results, check, base);
+    report["diagnosis"] = conformance::ranking_json(diagnosis->overall);
+    for (auto& g : report["groups"])
+      for (const conformance::Ranking& r : diagnosis->groups)
+        if (g["name"] == r.group) g["diagnosis"] = conformance::ranking_json(r);
+    // The worst failing vectors term by term.
+    for (auto& w : report["worst"])
+      if (w["verdict"] == "FAIL")
+        for (const conformance::Vector& x : vectors)
+          if (x.id == w["id"]) {
+            w["terms"] = conformance::vector_terms(x, base);
+            break;
+          }
+  }
   write_text(out, "report.json", json_text(report, 1, "report.json"));
   if (!j.script.empty())
     run_report_script(j.python, j.script, out.staging(), j.out);
@@ -83,6 +105,19 @@ void judge_results(const Judgement& j, OutputFolder& out, const std::vector<conf
     if (q["ignored"].get<int>() > 0)
       std::printf("  IGNORED: %s of %d results (their vectors have no %s expectation)\n", name.c_str(),
                   q["ignored"].get<int>(), name.c_str());
+  }
+  if (diagnosis && !diagnosis->overall.causes.empty()) {
+    std::printf("  likely causes of the %zu vectors whose f_cos or emission fails (docs/conformance.md, \"Diagnosis\"):\n",
+                diagnosis->overall.failing);
+    int shown = 0;
+    for (const conformance::CauseScore& s : diagnosis->overall.causes) {
+      if (++shown > 3) break;
+      std::printf("  %d. %-22s explains %zu, contradicted by %zu: %s\n", shown, s.cause->name, s.explains, s.contradicts,
+                  s.cause->evidence);
+    }
+  } else if (diagnosis && diagnosis->overall.failing > 0) {
+    std::printf("  no cause of the vocabulary explains the %zu vectors whose f_cos or emission fails\n",
+                diagnosis->overall.failing);
   }
   if (!check.passed())
     throw std::runtime_error(std::to_string(check.failed) + " of " + std::to_string(check.judged()) +

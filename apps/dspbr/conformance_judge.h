@@ -12,6 +12,7 @@
 
 #include "dspbr/conformance/checker.h"
 #include "dspbr/conformance/demo_tables.h"
+#include "dspbr/conformance/diagnosis.h"
 #include "dspbr/conformance/results.h"
 #include "dspbr/conformance/vector.h"
 #include "dspbr/io/output_folder.h"
@@ -46,9 +47,12 @@ void expect_with(const RepresentationOptions& o, std::vector<conformance::Vector
                  nlohmann::ordered_json& provenance, const std::string& vectors_file);
 
 // Writes the report into `out` (the run's folder, interrupt_cleanup.h; the caller may have written
-// other files into its staging folder) and commits it.
+// other files into its staging folder) and commits it. When a vector fails, the report's
+// `diagnosis` and each failing group's ranks the likely causes (conformance/diagnosis.h), with the
+// reference made as `representation` says plus each cause; the summary prints the first ones.
 void judge_results(const Judgement& j, OutputFolder& out, const std::vector<conformance::Vector>& vectors,
-                   const std::vector<conformance::Result>& results, const nlohmann::ordered_json& provenance);
+                   const std::vector<conformance::Result>& results, const nlohmann::ordered_json& provenance,
+                   const RepresentationOptions& representation);
 
 // `dspbr conformance run` (cmd_conformance_run.cpp), registered on `dspbr conformance`.
 void add_conformance_run_command(CLI::App& conformance);

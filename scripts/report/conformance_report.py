@@ -44,6 +44,19 @@ the ratio is the error over that bound (≤ 1 passes).</p>
 <td>{{ q.failed }}</td><td class="NJ">{{ q.not_judged }}{% if q.not_judged %} (not supplied){% endif %}</td></tr>
 {% endfor %}</table>
 
+{% if r.diagnosis %}<h2>Likely causes (docs/conformance.md, "Diagnosis")</h2>
+<p>Of the {{ r.diagnosis.failing }} vectors whose f cos or emission fails: each cause's reference explains
+some (within their tolerances) and contradicts passing ones.</p>
+{% if r.diagnosis.causes %}<table><tr><th>cause</th><th>explains</th><th>contradicts</th><th>evidence</th><th>remedy</th></tr>
+{% for c in r.diagnosis.causes %}<tr><td><code>{{ c.cause }}</code></td><td>{{ c.explains }}</td><td>{{ c.contradicts }}</td>
+<td>{{ c.evidence }}</td><td>{{ c.remedy }}</td></tr>
+{% endfor %}</table>
+<table><tr><th>group</th><th>failing</th><th>first cause (explains, contradicts)</th></tr>
+{% for g in r.groups %}{% if g.diagnosis %}<tr><td>{{ g.name }}</td><td>{{ g.diagnosis.failing }}</td>
+<td>{% if g.diagnosis.causes %}<code>{{ g.diagnosis.causes[0].cause }}</code> ({{ g.diagnosis.causes[0].explains }}, {{ g.diagnosis.causes[0].contradicts }}){% else %}none of the vocabulary{% endif %}</td></tr>{% endif %}
+{% endfor %}</table>
+{% else %}<p>No cause of the vocabulary explains them.</p>{% endif %}
+{% endif %}
 <h2>Verdict per group (the component a set of vectors tests)</h2>
 <table><tr><th>group</th><th>verdict</th><th>vectors</th><th>PASS</th><th>FAIL</th><th>NOT SUPPLIED</th><th>worst ratio</th><th>worst vector</th></tr>
 {% for g in r.groups %}<tr><td>{{ g.name }}</td><td class="{{ g.verdict }}">{{ g.verdict }}</td><td>{{ g.vectors }}</td>

@@ -42,6 +42,10 @@ class GgxDistribution {
         au_(smooth_ ? alpha_u : std::max(alpha_u, kMinAlpha)),
         av_(smooth_ ? alpha_v : std::max(alpha_v, kMinAlpha)) {}
 
+  // The conformance diagnosis's Deviation::LambdaZeroAtGrazing (bsdf/lobe_assembly.h): Lambda = 0
+  // where |w.n| < cos_theta (0, the default: never).
+  void set_grazing_guard(double cos_theta) { grazing_guard_ = cos_theta; }
+
   double alpha_u() const { return au_; }
   double alpha_v() const { return av_; }
   // A mirror: the lobes built on it are Dirac (eval = pdf = 0, sample along the mirror direction).
@@ -58,6 +62,7 @@ class GgxDistribution {
   // Smith Lambda(w) = (-1 + sqrt(1 + 1/a^2)) / 2, 1/a^2 = ((w.t a_u)^2 + (w.b a_v)^2) / (w.n)^2
   // (Heitz 2014, GGX with the anisotropic alpha along w's azimuth). +inf at w.n = 0 (grazing).
   double Lambda(const Vec3& w) const {
+    if (std::abs(w.z) < grazing_guard_) return 0.0;
     const double cos2 = w.z * w.z;
     const double tan2_alpha2 = w.x * w.x * au_ * au_ + w.y * w.y * av_ * av_;
     if (tan2_alpha2 == 0) return 0.0;  // normal incidence or alpha = 0: no masking
@@ -103,6 +108,7 @@ class GgxDistribution {
  private:
   bool smooth_ = false;
   double au_ = 1, av_ = 1;
+  double grazing_guard_ = 0;
 };
 
 }  // namespace dspbr

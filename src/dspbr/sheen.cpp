@@ -32,8 +32,17 @@ const SheenLambdaFit& sheen_lambda_fit_spec() {
   return fit;
 }
 
+const SheenLambdaFit& sheen_lambda_fit_ck17() {
+  static const SheenLambdaFit fit{{25.3245, 3.32435, 0.16801, -1.27393, -4.85967},
+                                  {21.5473, 3.82987, 0.19823, -1.97760, -4.32054},
+                                  {0, 0, 0, 0},
+                                  true};
+  return fit;
+}
+
 SheenLambda::SheenLambda(double alpha_b, const SheenLambdaFit& f) {
-  const double w = f.c[0] / (1.0 + f.c[1] * std::pow(alpha_b, f.c[2])) + f.c[3];
+  const double w = f.ck17_blend ? 1.0 - (1.0 - alpha_b) * (1.0 - alpha_b)
+                                : f.c[0] / (1.0 + f.c[1] * std::pow(alpha_b, f.c[2])) + f.c[3];
   for (size_t i = 0; i < p_.size(); ++i) p_[i] = (1.0 - w) * f.p0[i] + w * f.p1[i];
   l_half_ = L(0.5);
 }

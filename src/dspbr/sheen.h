@@ -29,10 +29,15 @@ double charlie_d(double cos_theta_h, double alpha_b);
 struct SheenLambdaFit {
   std::array<double, 5> p0, p1;
   std::array<double, 4> c;
+  bool ck17_blend = false;  // w = 1 - (1 - alpha_b)^2 instead (Conty Estevez & Kulla 2017; c unused)
 };
 
 // The coefficients printed in the DSPBR 2025x spec (Table sheen-lambda-fit and -w).
 const SheenLambdaFit& sheen_lambda_fit_spec();
+// The older fit of Conty Estevez & Kulla 2017 (their Table 1, blended by (1 - alpha_b)^2): what
+// implementations written before DSPBR 2025x use; the conformance diagnosis's
+// Deviation::OldSheenLambda.
+const SheenLambdaFit& sheen_lambda_fit_ck17();
 
 // The fit at one alpha_b: the blended row p(alpha_b) and L(0.5) computed once, for the many
 // directions evaluated at a fixed roughness (a quadrature cell: 5 powers per sheen BRDF

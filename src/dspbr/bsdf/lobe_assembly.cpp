@@ -33,6 +33,7 @@ struct SideInputs {
   double eta;
   bool flake_opaque;
   bool compensate_transmission;
+  Deviation deviation;
   const std::optional<SheenLobe>& sheen;
   const FilmLayer& film;  // with the tables of R when the film is on
   const AssembledLobes& a;
@@ -93,6 +94,8 @@ void add_transmission_compensation(LobeMixture& out, const LutSet& luts, bool th
 LobeMixture assemble_side(const Material& m, const LutSet& luts, const SideInputs& in, bool inside) {
   const AssembledLobes& a = in.a;
   const uint32_t mask = in.mask;
+  const Deviation dev = in.deviation;
+  const double guard = dev == Deviation::LambdaZeroAtGrazing ? kGrazingGuardCos : 0.0;
   LobeMixture::Layering layering;
   layering.core = a.core;
   layering.coat = a.coat;
@@ -138,27 +141,37 @@ LobeMixture assemble_side(const Material& m, const LutSet& luts, const SideInput
   if (has_core) {
     // M_r with the core Fresnel (CoreFresnel::reflection). Present unless every Fresnel weight
     // vanishes (e.g. a dielectric with s = 0 and no film).
-    if (w_metal > 0 || s * (w_opaque + w_transp) > 0 || i > 0)
-      out.add(std::make_unique<MicrofacetReflection>(
-                  alpha_u, alpha_v, CosineFactor::core(CosineFactor::Kind::CoreReflection, core)),
-              Layer::Core);
+    if (w_metal > 0 || s * (w_opaque + w_transp) > 0 || i > 0) {
+      auto lobe = std::make_unique<MicrofacetReflection>(alpha_u, alpha_v,
+                                                         CosineFactor::core(CosineFactor::Kind::CoreReflection, core));
+      lobe->set_grazing_guard(guard);
+      out.add(std::move(lobe), Layer::Core);
+    }
     // M_r,ms F_ms(rho_s,r,0, rho_s,r,90) (same for every film weight). A mirror (delta M_r) has
     // E_m = 1 exactly: no compensation (the tables' first roughness sample is not at r = 0).
-    const Rgb f_ms = fresnel_ms(core.rho_sr0, core.rho_sr90, std::clamp(luts.E_m_avg(r_uv), 0.0, 1.0));
+    const double e_m_avg = std::clamp(luts.E_m_avg(r_uv), 0.0, 1.0);
+    const Rgb f_ms = dev == Deviation::BlendedFms
+                         ? w_metal * fresnel_ms(rho, Rgb(1.0), e_m_avg) +
+                               (w_opaque + w_transp) * fresnel_ms(core.f0_diel * s, Rgb(s), e_m_avg)
+                         : fresnel_ms(core.rho_sr0, core.rho_sr90, e_m_avg);
     const bool mirror = GgxDistribution(alpha_u, alpha_v).effectively_smooth();
-    if (f_ms.max_component() > 0 && !mirror)
+    if (f_ms.max_component() > 0 && !mirror && dev != Deviation::NoMultipleScattering)
       out.add(std::make_unique<MultiScatterReflection>(r_uv, f_ms, luts), Layer::Core);
     // Transmission: rho_t M_t' (1 - s F) (thin) or rho_t M_t (1 - s F_d) (volumetric); with a film
     // (1-i) times that + i rho_t M_t (1 - R).
     if (w_transp > 0 && core.rho_t.max_component() > 0) {
-      if (volumetric)
-        out.add(std::make_unique<VolumetricTransmission>(
-                    alpha_u, alpha_v, eta_i, eta_o, CosineFactor::core(CosineFactor::Kind::VolumetricTransmission, core)),
-                Layer::Core);
-      else
-        out.add(std::make_unique<ThinTransmission>(alpha_u, alpha_v,
-                                                   CosineFactor::core(CosineFactor::Kind::ThinTransmission, core)),
-                Layer::Core);
+      if (volumetric) {
+        auto lobe = std::make_unique<VolumetricTransmission>(
+            alpha_u, alpha_v, eta_i, eta_o, CosineFactor::core(CosineFactor::Kind::VolumetricTransmission, core));
+        lobe->set_grazing_guard(guard);
+        lobe->set_factor_at_macro_normal(dev == Deviation::FresnelAtMacroNormal);
+        out.add(std::move(lobe), Layer::Core);
+      } else {
+        auto lobe = std::make_unique<ThinTransmission>(alpha_u, alpha_v,
+                                                       CosineFactor::core(CosineFactor::Kind::ThinTransmission, core));
+        lobe->set_grazing_guard(guard);
+        out.add(std::move(lobe), Layer::Core);
+      }
       // Not for index-matched volumetric media: the transmission is then a Dirac that loses nothing.
       const bool matched = volumetric && std::abs(eta - 1.0) < kIndexMatched;
       if (in.compensate_transmission && !mirror && !matched)
@@ -170,7 +183,7 @@ LobeMixture assemble_side(const Material& m, const LutSet& luts, const SideInput
       dp.rho_d = rho_d;
       dp.specular = s;
       dp.translucency = l;
-      dp.f0_max = core.f0_diel.max_component();
+      dp.f0_max = (dev == Deviation::BcMaxRhoSr0 ? core.rho_sr0 : core.f0_diel).max_component();
       dp.r_uv = r_uv;
       dp.film_weight = i;
       dp.film = core.film;
@@ -183,7 +196,9 @@ LobeMixture assemble_side(const Material& m, const LutSet& luts, const SideInput
   // ---- Clearcoat (Coated: + M_c c F_c(h.v), isotropic GGX alpha = r_c^2) --------------------------
   if (a.clearcoat > 0) {
     const double ac = roughness_to_alpha(m.clearcoatRoughness);
-    out.add(std::make_unique<MicrofacetReflection>(ac, ac, CosineFactor::clearcoat(a.clearcoat)), Layer::Coat);
+    auto lobe = std::make_unique<MicrofacetReflection>(ac, ac, CosineFactor::clearcoat(a.clearcoat));
+    lobe->set_grazing_guard(guard);
+    out.add(std::move(lobe), Layer::Coat);
   }
   return out;
 }
@@ -197,6 +212,7 @@ AssembledLobes assemble_lobes(const Material& m, const LutSet& luts, const BsdfO
   a.coat = clearcoat_frame(m);
   a.alpha_cut = std::clamp(m.cutoutOpacity, 0.0, 1.0);
   a.clearcoat = (mask & kClearcoat) ? m.clearcoat : 0.0;
+  a.emission_coat = opt.deviation == Deviation::EmissionUnattenuated ? 0.0 : a.clearcoat;
   a.eta = m.ior;
   // Dispersion (spec "Dispersion"): eta(lambda) replaces ior at the caller's wavelength.
   if ((mask & kDispersion) && opt.wavelength_nm > 0 && m.abbeNumber > 0) a.eta = dispersion_ior(m, opt.wavelength_nm);
@@ -207,8 +223,11 @@ AssembledLobes assemble_lobes(const Material& m, const LutSet& luts, const BsdfO
     flake_opaque = flake.opacity > 0;
   }
   std::optional<SheenLobe> sheen;  // ShinyCore factor and lobe (absent without sheen)
-  if ((mask & kSheen) && m.sheenColor.max_component() > 0 && !flake_opaque)
+  if ((mask & kSheen) && m.sheenColor.max_component() > 0 && !flake_opaque) {
     sheen.emplace(m.sheenColor, m.sheenRoughness, opt.sheen_model, luts);
+    if (opt.deviation == Deviation::OldSheenLambda) sheen->set_lambda_fit(sheen_lambda_fit_ck17());
+    sheen->set_scales_layers(opt.deviation != Deviation::NoSheenLayering);
+  }
   if ((mask & kEmission) && m.emissionValue > 0) a.rho_e = emission_rho_e(m, opt.object_area_m2);
   // The film's R tabulated once for both sides, over the bases the core reads: the base IOR
   // (dielectric parts) and the metal's equivalent IOR (bsdf/thin_film_table.h).
@@ -218,7 +237,7 @@ AssembledLobes assemble_lobes(const Material& m, const LutSet& luts, const BsdfO
     else if (m.metallic >= 1) film = FilmLayer::tabulated(m.thinFilmThickness, m.thinFilmIor, {thin_film_metal_eta(m.albedo)});
     else film = FilmLayer::tabulated(m.thinFilmThickness, m.thinFilmIor, {a.eta, thin_film_metal_eta(m.albedo)});
   }
-  const SideInputs in{mask, a.eta, flake_opaque, opt.transmission_compensation, sheen, film, a};
+  const SideInputs in{mask, a.eta, flake_opaque, opt.transmission_compensation, opt.deviation, sheen, film, a};
   for (int side = 0; side < 2; ++side) {
     a.sides[size_t(side)] = assemble_side(m, luts, in, side == 1);
     // The flake lobe needs the flake normal (same on both sides).

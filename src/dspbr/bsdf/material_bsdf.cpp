@@ -17,7 +17,7 @@ MaterialBsdf::MaterialBsdf(const Material& m, const LutSet& luts, const BsdfOpti
   coat_ = a.coat;
   eta_ = a.eta;
   alpha_cut_ = a.alpha_cut;
-  clearcoat_ = a.clearcoat;
+  clearcoat_ = a.emission_coat;
   rho_e_ = a.rho_e;
   // Thin-walled: the side of the shading normal (keeps reciprocity with normal maps); volume
   // boundary: the geometric side (v.z < 0 is inside the object).

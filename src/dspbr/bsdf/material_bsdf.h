@@ -60,7 +60,7 @@ class MaterialBsdf : public Bsdf {
   Frame core_, coat_;
   double eta_ = 1.5;
   double alpha_cut_ = 1;  // cut-out opacity
-  double clearcoat_ = 0;  // c (0 when masked out)
+  double clearcoat_ = 0;  // c attenuating the emission (AssembledLobes::emission_coat)
   Rgb rho_e_{0, 0, 0};    // emitted luminance (0 without emission)
   TwoSided<CutOut> bsdf_;
 };

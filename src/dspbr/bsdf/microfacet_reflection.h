@@ -22,6 +22,7 @@ class MicrofacetReflection final : public Lobe {
   double sampling_weight(const Vec3& v) const override;
   bool is_delta() const override { return delta_; }
   const GgxDistribution& distribution() const { return ggx_; }
+  void set_grazing_guard(double cos_theta) { ggx_.set_grazing_guard(cos_theta); }  // GgxDistribution's
 
  private:
   GgxDistribution ggx_;

@@ -15,7 +15,7 @@ SheenLobe::SheenLobe(const Rgb& color, double sheen_roughness, SheenModel model,
 
 Rgb SheenLobe::eval(const Vec3& v, const Vec3& l) const {
   if (v.z <= 0 || l.z <= 0) return Rgb(0);
-  const double mb = model_ == SheenModel::Main ? sheen_brdf(v, l, alpha_b_) : sheen_brdf_ash(v, l, alpha_b_);
+  const double mb = model_ == SheenModel::Main ? sheen_brdf(v, l, alpha_b_, *fit_) : sheen_brdf_ash(v, l, alpha_b_);
   return color_ * mb;
 }
 
@@ -34,6 +34,7 @@ double SheenLobe::albedo(double cos_theta) const {
 }
 
 double SheenLobe::layer_scale(double cos_v, double cos_l) const {
+  if (!scales_layers_) return 1.0;
   const double rho_hat = color_.max_component();
   return std::clamp(std::min(1.0 - rho_hat * albedo(cos_v), 1.0 - rho_hat * albedo(cos_l)), 0.0, 1.0);
 }

@@ -26,12 +26,18 @@ class SheenLobe : public Lobe {
   // rho_hat = max(rho_b); |cos| for a transmitted l.
   double layer_scale(double cos_v, double cos_l) const;
   double alpha_b() const { return alpha_b_; }
+  // The conformance diagnosis's mistakes (lobe_assembly.h, Deviation): another Lambda fit (the
+  // fit must outlive the lobe), and no scaling of the layers below (layer_scale = 1).
+  void set_lambda_fit(const SheenLambdaFit& fit) { fit_ = &fit; }
+  void set_scales_layers(bool scales) { scales_layers_ = scales; }
 
  private:
   Rgb color_;
   double alpha_b_;
   SheenModel model_;
   AlbedoSlice e_b_;  // E_b(mu; alpha_b) of the model
+  const SheenLambdaFit* fit_ = &sheen_lambda_fit_spec();
+  bool scales_layers_ = true;
 };
 
 }  // namespace dspbr

@@ -18,6 +18,7 @@ class ThinTransmission : public Lobe {
   uint32_t flags() const override;
   double sampling_weight(const Vec3& v) const override;
   bool is_delta() const override { return reflection_.is_delta(); }
+  void set_grazing_guard(double cos_theta) { reflection_.set_grazing_guard(cos_theta); }  // GgxDistribution's
 
  private:
   MicrofacetReflection reflection_;  // M_r with the transmission factor as its "Fresnel"

@@ -36,7 +36,7 @@ Rgb VolumetricTransmission::eval(const Vec3& v, const Vec3& l) const {
   const double g = ggx_.G2(v, l);
   const double mt = std::abs(lh) * std::abs(vh) / (std::abs(l.z) * std::abs(v.z)) * eta_o_ * eta_o_ *
                     ggx_.D(h) * g / (denom * denom);
-  return factor_(vh) * mt;
+  return factor_(factor_at_macro_normal_ ? v.z : vh) * mt;
 }
 
 double VolumetricTransmission::pdf(const Vec3& v, const Vec3& l) const {

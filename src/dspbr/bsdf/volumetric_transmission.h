@@ -25,6 +25,10 @@ class VolumetricTransmission final : public Lobe {
   uint32_t flags() const override;
   double sampling_weight(const Vec3& v) const override;
   bool is_delta() const override { return delta_; }
+  // The conformance diagnosis's mistakes (lobe_assembly.h, Deviation): GgxDistribution's grazing
+  // guard, and the factor read at v.n instead of v.h.
+  void set_grazing_guard(double cos_theta) { ggx_.set_grazing_guard(cos_theta); }
+  void set_factor_at_macro_normal(bool macro) { factor_at_macro_normal_ = macro; }
 
  private:
   // h_t for (v, l), oriented to +z; false when undefined or not a refraction configuration.
@@ -33,6 +37,7 @@ class VolumetricTransmission final : public Lobe {
   double eta_i_, eta_o_;
   bool delta_;
   CosineFactor factor_;
+  bool factor_at_macro_normal_ = false;
 };
 
 }  // namespace dspbr

@@ -12,13 +12,13 @@
 
 namespace dspbr::conformance {
 
-namespace {
-
-using OJson = nlohmann::ordered_json;
-
 double rgb_ratio(const Tolerance& t, const Rgb& got, const Rgb& expected) {
   return std::max({t.ratio(got.r, expected.r), t.ratio(got.g, expected.g), t.ratio(got.b, expected.b)});
 }
+
+namespace {
+
+using OJson = nlohmann::ordered_json;
 
 // Directions of delta lobes match within this distance (unit vectors).
 constexpr double kDeltaDirection = 1e-6;

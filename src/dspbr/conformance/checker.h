@@ -24,6 +24,9 @@ const char* quantity_name(Quantity q);  // "f_cos", "pdf", "albedo", "emission",
 // whatever its tolerance, as a non-finite value from `conformance run` does (1e300).
 inline constexpr double kNegativeRatio = 1e300;
 
+// The worst channel's |got - expected| / tolerance.
+double rgb_ratio(const Tolerance& t, const Rgb& got, const Rgb& expected);
+
 struct VectorVerdict {
   // Per quantity: the worst channel's error over its tolerance (<= 1 passes); nullopt when the
   // vector has no such expectation or the results do not supply it (NOT JUDGED).

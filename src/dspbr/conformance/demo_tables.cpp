@@ -1,5 +1,6 @@
 #include "dspbr/conformance/demo_tables.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
@@ -45,6 +46,25 @@ LutSet fit_set() {
   return s;
 }
 
+// Karis 2014 ("Physically Based Shading on Mobile"), the analytic environment BRDF A + B at
+// F_0 = 1 for roughness r: E_m(mu; r) = 1 - 0.55 r whatever mu (its mu terms cancel in A + B).
+double analytic_E(double rough, double mu) {
+  const double c0[4] = {-1, -0.0275, -0.572, 0.022}, c1[4] = {1, 0.0425, 1.04, -0.04};
+  double r[4];
+  for (int k = 0; k < 4; ++k) r[k] = rough * c0[k] + c1[k];
+  const double a004 = std::min(r[0] * r[0], std::exp2(-9.28 * mu)) * r[0] + r[1];
+  return std::clamp((-1.04 * a004 + r[2]) + (1.04 * a004 + r[3]), 0.0, 1.0);
+}
+
+LutSet analytic_set() {
+  LutSet s = LutSet::builtin();
+  RendererLuts& r = s.renderer;
+  fill(r.ggx_E, [](double rough, double mu) { return analytic_E(rough, mu); });
+  // Its cosine-weighted average 2 Int E mu dmu: the same value (E does not depend on mu).
+  fill(r.ggx_E_avg, [](double rough, double) { return analytic_E(rough, 1.0); });
+  return s;
+}
+
 LutSet uncompensated_set() {
   LutSet s = LutSet::builtin();
   RendererLuts& r = s.renderer;
@@ -63,14 +83,16 @@ const char* demo_tables_name(DemoTables t) {
     case DemoTables::Published: return "published";
     case DemoTables::Fits: return "fits";
     case DemoTables::Uncompensated: return "uncompensated";
+    case DemoTables::Analytic: return "analytic";
   }
   return "?";
 }
 
 DemoTables parse_demo_tables(const std::string& name) {
-  for (DemoTables t : {DemoTables::Renderer, DemoTables::Published, DemoTables::Fits, DemoTables::Uncompensated})
+  for (DemoTables t :
+       {DemoTables::Renderer, DemoTables::Published, DemoTables::Fits, DemoTables::Uncompensated, DemoTables::Analytic})
     if (name == demo_tables_name(t)) return t;
-  throw std::invalid_argument("unknown table set '" + name + "' (known: renderer, published, fits, uncompensated)");
+  throw std::invalid_argument("unknown table set '" + name + "' (known: renderer, published, fits, uncompensated, analytic)");
 }
 
 const LutSet& demo_table_set(DemoTables t) {
@@ -83,6 +105,10 @@ const LutSet& demo_table_set(DemoTables t) {
     }
     case DemoTables::Uncompensated: {
       static const LutSet s = uncompensated_set();
+      return s;
+    }
+    case DemoTables::Analytic: {
+      static const LutSet s = analytic_set();
       return s;
     }
   }

@@ -10,6 +10,8 @@
 //   uncompensated  no energy compensation: E_m = E_m,avg = 1 (no multiple-scattering lobe, no F_ms
 //                  term), E_b = 0 (no albedo scaling under the sheen); the Schlick moment beta,
 //                  and with it the diffuse base's coupling to the specular albedo, unchanged
+//   analytic       GGX_E and GGX_E_avg from Karis 2014's analytic environment BRDF at F_0 = 1
+//                  (1 - 0.55 r): an implementation that approximates the albedo instead of reading it
 #pragma once
 #include <string>
 
@@ -17,9 +19,9 @@
 
 namespace dspbr::conformance {
 
-enum class DemoTables { Renderer, Published, Fits, Uncompensated };
+enum class DemoTables { Renderer, Published, Fits, Uncompensated, Analytic };
 
-// "renderer", "published", "fits", "uncompensated"; parse throws std::invalid_argument for others.
+// "renderer", "published", "fits", "uncompensated", "analytic"; parse throws std::invalid_argument for others.
 const char* demo_tables_name(DemoTables t);
 DemoTables parse_demo_tables(const std::string& name);
 
