@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes the summary of the conformance demonstrations (scripts/conformance_demo.sh) into the
 block between <!-- conformance-demo:begin --> and <!-- conformance-demo:end --> of a Markdown file:
-per implementation, the groups that fail (how many vectors, by how much) and where (roughness and
-view cosine of the failing vectors).
+per implementation, the groups that fail (how many vectors, by how much), the first causes of the
+report's diagnosis, and where (roughness and view cosine of the failing vectors).
 
 usage: conformance_demo_summary.py DEMO_DIR DOC.md
 """
@@ -60,6 +60,11 @@ def summary(demo):
             lines.append(f"| {g['name']} | {g['failed']} / {g['vectors']} | {g['worst_ratio']:.3g} | "
                          f"{rel.get(g['name'], 0.0):.2g} | `{g['worst_id']}` |")
         lines += ["", "Pass: " + (", ".join(passing) if passing else "none") + ".", ""]
+        d = rep.get("diagnosis")
+        if d is not None:
+            causes = ", ".join(f"`{c['cause']}` ({c['explains']}, {c['contradicts']})" for c in d["causes"][:3])
+            lines += [f"Diagnosis of the {d['failing']} vectors whose f cos fails (cause: explains, contradicts): "
+                      + (causes if causes else "no cause of the vocabulary") + ".", ""]
         # Where: the failing vectors by the material's roughness and the view cosine.
         counts = [[[0, 0] for _ in COS_BINS] for _ in ROUGH_BINS]
         for v in rep["vectors"]:
