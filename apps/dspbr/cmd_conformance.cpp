@@ -1,6 +1,6 @@
 // `dspbr conformance`: test vectors for implementers of DSPBR and the checker of their results
 // (docs/conformance.md).
-//   dspbr conformance generate --out DIR [--seed N] [--scenes FOLDER]   DIR/vectors.json, DIR/vectors.csv
+//   dspbr conformance generate --out DIR [--seed N] [--scenes FOLDER]   DIR/vectors.json, DIR/vectors.csv, DIR/terms.json
 //   dspbr conformance check VECTORS RESULTS --out REPORT                 REPORT/report.json, index.html, plots/
 //   dspbr conformance reference VECTORS --tables SET --out RESULTS.json  the reference's results with other tables
 // check exits 0 when every vector passes, 1 when one fails, 2 on bad input (one line naming the
@@ -19,6 +19,7 @@
 #include "report_script.h"
 #include "dspbr/conformance/checker.h"
 #include "dspbr/conformance/demo_tables.h"
+#include "dspbr/conformance/diagnosis.h"
 #include "dspbr/conformance/results.h"
 #include "dspbr/conformance/vector_file.h"
 #include "dspbr/conformance/vector_set.h"
@@ -109,11 +110,12 @@ void run_generate(const GenerateArgs& a) {
                      bytes_text(limits::kDocumentBytes) + " of the files that read it (docs/limits.md): use fewer --directions");
   write_text(out, "vectors.json", text);
   write_text(out, "vectors.csv", conformance::vectors_csv(vectors));
+  write_text(out, "terms.json", json_text(conformance::terms_document(vectors), -1, "terms.json") + "\n");
   out.commit();
   std::size_t delta = 0, albedo = 0;
   for (const auto& v : vectors) delta += v.delta.empty() ? 0 : 1, albedo += v.albedo ? 1 : 0;
-  std::printf("%zu vectors (%zu with delta lobes, %zu with an albedo) -> %s/vectors.json, %s/vectors.csv\n",
-              vectors.size(), delta, albedo, a.out.c_str(), a.out.c_str());
+  std::printf("%zu vectors (%zu with delta lobes, %zu with an albedo) -> %s/vectors.json, %s/vectors.csv, %s/terms.json\n",
+              vectors.size(), delta, albedo, a.out.c_str(), a.out.c_str(), a.out.c_str());
 }
 
 void run_check(const CheckArgs& a) {
@@ -178,7 +180,8 @@ void add_conformance_command(CLI::App& app) {
   cmd->require_subcommand(1);
 
   auto g = std::make_shared<GenerateArgs>();
-  auto* gen = cmd->add_subcommand("generate", "Write the conformance vectors: DIR/vectors.json and DIR/vectors.csv");
+  auto* gen = cmd->add_subcommand("generate", "Write the conformance vectors: DIR/vectors.json, DIR/vectors.csv and their per-term expectations "
+                                  "DIR/terms.json");
   gen->add_option("--out", g->out, "Output folder")->required();
   gen->add_option("--seed", g->settings.seed, "Seed of the directions (same seed -> same bytes)")
       ->capture_default_str()

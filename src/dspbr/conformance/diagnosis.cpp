@@ -262,6 +262,17 @@ OJson vector_terms(const Vector& x, const Representation& base) {
   return {{"components", std::move(components)}, {"tables", std::move(tables)}, {"with_cause", std::move(with_cause)}};
 }
 
+OJson terms_document(const std::vector<Vector>& vectors) {
+  std::vector<OJson> terms(vectors.size());
+  tbb::parallel_for(std::size_t(0), vectors.size(), [&](std::size_t i) {
+    terms[i] = {{"id", vectors[i].id}};
+    terms[i].update(vector_terms(vectors[i], {}));
+  });
+  OJson list = OJson::array();
+  for (OJson& t : terms) list.push_back(std::move(t));
+  return {{"format", "dspbr-conformance-terms"}, {"version", 1}, {"terms", std::move(list)}};
+}
+
 OJson ranking_json(const Ranking& r) {
   OJson list = OJson::array();
   for (const CauseScore& s : r.causes)

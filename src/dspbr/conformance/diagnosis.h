@@ -64,6 +64,10 @@ Diagnosis diagnose(const std::vector<Vector>& vectors, const std::vector<Result>
 // its layer scaling; the GGX Lambda(v), Lambda(l) and the sheen's), and f cos with each cause of
 // the vocabulary ("with_cause"). Angles by |cos| in the core frame as the tables read them.
 nlohmann::ordered_json vector_terms(const Vector& x, const Representation& base);
+// The companion file of a vector set (`conformance generate`'s terms.json):
+// {"format": "dspbr-conformance-terms", "version": 1, "terms": [{"id", "components", "tables",
+// "with_cause"}, ...]} in the order of the vectors (vector_terms with the renderer tables).
+nlohmann::ordered_json terms_document(const std::vector<Vector>& vectors);
 
 // {"failing", "causes": [{"cause", "term", "explains", "contradicts", "evidence", "remedy"}]}
 nlohmann::ordered_json ranking_json(const Ranking& r);
