@@ -5,7 +5,8 @@
 # material; a broken one (tests/data/conformance/shader_broken.glsl: clearcoat 5 % too
 # bright, sheen not supported, no pdf) exits 1 with clearcoat FAIL, sheen NOT SUPPLIED, the other
 # components PASS and the pdf not judged; a shader that does not compile exits 2 naming its file and
-# line and leaves nothing. Exit 77 (skipped) without a Vulkan device.
+# line and leaves nothing, and so does a --glslang that writes no SPIR-V module. Exit 77 (skipped)
+# without a Vulkan device.
 #   conformance_run_test.sh DSPBR VECTORS SOURCE_DIR WORK_DIR glsl|hlsl
 set -uo pipefail
 dspbr=$1 vectors=$2 src=$3 work=$4 lang=$5
@@ -80,4 +81,18 @@ cat "$work/typo.log"
 [ "$(wc -l < "$work/typo.log")" -eq 1 ] || fail "not one line"
 grep -q "typo.glsl: does not compile .*typo.glsl:2" "$work/typo.log" || fail "the message names no file and line"
 [ ! -e "$work/never" ] || fail "a folder was left"
-echo "conformance run --$lang: reference PASS, broken FAIL as planted, compile error exit 2"
+# A --glslang that exits 0 without a SPIR-V module (nothing, or bytes that are not SPIR-V) is bad
+# input (exit 2 naming the option), not a failing implementation.
+printf '#!/bin/sh\nwhile [ $# -gt 0 ]; do [ "$1" = -o ] && printf "not a SPIR-V module" > "$2"; shift; done\nexit 0\n' \
+  > "$work/fake_glslang.sh"
+chmod +x "$work/fake_glslang.sh"
+for fake in /bin/true "$work/fake_glslang.sh"; do
+  "$dspbr" conformance run "$vectors" --"$lang" "$src/examples/conformance/shader_reference.glsl" --glslang "$fake" \
+    --no-html --out "$work/never" > "$work/fake.log" 2>&1
+  rc=$?
+  cat "$work/fake.log"
+  [ $rc -eq 2 ] || fail "--glslang $fake: exit $rc, expected 2"
+  grep -q "^dspbr: error: --glslang: .*wrote no SPIR-V" "$work/fake.log" || fail "--glslang $fake: the message"
+  [ ! -e "$work/never" ] || fail "--glslang $fake: a folder was left"
+done
+echo "conformance run --$lang: reference PASS, broken FAIL as planted, compile error and a fake compiler exit 2"

@@ -15,6 +15,7 @@
 
 #include "dspbr/bsdf/dispersion.h"
 #include "dspbr/bsdf/material_bsdf.h"
+#include "dspbr/bsdf/sampling.h"
 #include "dspbr/bsdf/volume.h"
 #include "dspbr/conformance/vector_set.h"
 #include "dspbr/gltf/gltf_file.h"
@@ -152,6 +153,65 @@ TEST(ShaderLibrary, EmissionAndDeltaLobesAsTheVectors) {
   }
   EXPECT_GE(emission, 8);  // the two emitting materials at four views
   EXPECT_GT(delta, 10);
+}
+
+// Values at the top of the float range (the seventh fresh tester's pass): a glass of ior 1e19 or
+// the largest float (the library's +inf) gave a pdf of +inf or 0 and, with dispersion, a valid
+// sample of NaN weight; a dim emitter with energy normalisation gave inf and NaN. Against the
+// reference in double: the same values, or the largest float where the true value exceeds it.
+TEST(ShaderLibrary, HugeFloatInputsAsTheReference) {
+  const double kFloatMax = 3.4028234663852886e38;
+  Pcg32 rng(11, 3);
+  auto dir = [&](bool up) {
+    const Vec3 u = sample_uniform_hemisphere(rng.next_double(), rng.next_double());
+    return up ? u : flip_z(u);
+  };
+  for (double ior : {1e19, kFloatMax}) {
+    Material m;
+    m.transparency = 1, m.roughness = 0.5, m.thinWalled = false, m.ior = ior;
+    const MaterialBsdf ref(m, LutSet::builtin(), {});
+    const shader_test::ShaderBsdf lib(m, {});
+    int compared = 0;
+    for (int i = 0; i < 2000; ++i) {
+      const Vec3 v = dir(true), l = dir(i % 2 == 0);
+      const double p = lib.pdf(v, l), want = ref.pdf(v, l);
+      const Rgb f = lib.eval(v, l);
+      ASSERT_TRUE(std::isfinite(p) && p >= 0 && std::isfinite(f.r) && f.r >= 0) << ior << " " << i << ": " << p << " " << f.r;
+      if (want > 1e-3) {
+        ++compared;
+        EXPECT_NEAR(p, want, 1e-3 * want) << "ior " << ior << " pair " << i;
+      }
+    }
+    EXPECT_GT(compared, 500) << ior;
+  }
+  {
+    Material m;
+    m.transparency = 1, m.roughness = 0.3, m.thinWalled = false, m.ior = kFloatMax, m.abbeNumber = 1.04;
+    BsdfOptions o;
+    o.wavelength_nm = 513;
+    const shader_test::ShaderBsdf lib(m, o);
+    for (int i = 0; i < 500; ++i) {
+      const Vec3 v = dir(i % 2 == 0);
+      const BsdfSample s = lib.sample(v, Vec3(rng.next_double(), rng.next_double(), rng.next_double()));
+      if (s.valid)
+        ASSERT_TRUE(std::isfinite(s.weight.r) && s.weight.r >= 0 && std::isfinite(s.pdf) && s.pdf > 0) << i;
+    }
+  }
+  struct Emitter {
+    double value;
+    Rgb color;
+  };
+  for (const Emitter& e : {Emitter{100, {1e-37, 0, 0}}, Emitter{1, {1e-40, 1e-40, 1e-40}}, Emitter{1e36, {0.01, 0, 0}},
+                           Emitter{3e38, {0, 0, 0.5}}, Emitter{250, {1.0, 0.8, 0.6}}})
+    for (bool normalize : {true, false}) {
+      Material m;
+      m.emissionValue = e.value, m.emissionColor = e.color, m.emissionEnergyNormalization = normalize;
+      const Rgb want = MaterialBsdf(m, LutSet::builtin(), {}).emission({0, 0, 1});
+      const Rgb got = shader_test::ShaderBsdf(m, {}).emission({0, 0, 1});
+      for (auto [g, w] : {std::pair{got.r, want.r}, {got.g, want.g}, {got.b, want.b}})
+        EXPECT_NEAR(g, std::min(w, kFloatMax), 1e-5 * std::min(w, kFloatMax) + 1.2e-38)  // + the smallest normal float
+            << e.value << " (" << e.color.r << ", " << e.color.g << ", " << e.color.b << ") normalize " << normalize;
+    }
 }
 
 TEST(ShaderLibrary, VolumeAndDispersionAsTheReference) {

@@ -182,7 +182,12 @@ std::vector<uint32_t> compile_kernel(const RunArgs& a, const OutputFolder& out) 
   std::error_code spv_ec;
   if (!fs::is_regular_file(spv, spv_ec))  // a "compiler" that succeeds without output (--glslang /bin/true)
     throw UsageError("--glslang: '" + quote_input(a.glslang) + "' exited 0 but wrote no SPIR-V (is it glslangValidator?)");
-  std::vector<uint32_t> words = vk_compute::read_spirv(spv);
+  std::vector<uint32_t> words;
+  try {
+    words = vk_compute::read_spirv(spv);
+  } catch (const std::invalid_argument&) {  // random bytes from a "compiler" that exits 0
+    throw UsageError("--glslang: '" + quote_input(a.glslang) + "' exited 0 but wrote no SPIR-V module (is it glslangValidator?)");
+  }
   for (const std::string& f : {spv, log, work + "/dspbr_conformance_user"}) fs::remove(f);
   fs::remove(work);
   return words;

@@ -115,6 +115,9 @@ DSPBR_FN float dspbr_reflection_weight(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, flo
 // and l are on the two sides of the microfacet. denom = eta_i v.h + eta_o l.h, which is -|eta_i v +
 // eta_o l| (or +|...| once h is turned): computed from the sum's length, not as the difference of
 // the two dot products (near eta = 1 they cancel, and float would lose 1e-5 of it).
+// Callers pass the IORs divided by the larger one: only their ratio matters, and eta_o^2 and
+// denom^2 of the IORs themselves overflow a float beyond ior ~1e19 (+inf or 0 where the value is
+// finite; the seventh fresh tester's pass).
 DSPBR_FN bool dspbr_refraction_half(vec3 v, vec3 l, float eta_i, float eta_o, DSPBR_OUT(vec3) h, DSPBR_OUT(float) denom) {
   vec3 s = -(v * eta_i + l * eta_o);
   float len = length(s);
@@ -134,10 +137,11 @@ DSPBR_FN vec3 dspbr_volumetric_eval(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, float
   if (dspbr_is_delta_lobe(b, DSPBR_LOBE_TRANSMISSION) || !(v.z > 0.0f) || !(l.z < 0.0f)) return dspbr_splat(0.0f);
   vec3 h;
   float denom;
-  if (!dspbr_refraction_half(v, l, eta_i, eta_o, h, denom)) return dspbr_splat(0.0f);
+  float m = max(eta_i, eta_o), ei = eta_i / m, eo = eta_o / m;
+  if (!dspbr_refraction_half(v, l, ei, eo, h, denom)) return dspbr_splat(0.0f);
   float vh = dot(v, h), lh = dot(l, h);
   float g = dspbr_ggx_G2(b.ggx, v, l);
-  float mt = abs(lh) * abs(vh) / (abs(l.z) * abs(v.z)) * eta_o * eta_o * dspbr_ggx_D(b.ggx, h) * g / (denom * denom);
+  float mt = abs(lh) * abs(vh) / (abs(l.z) * abs(v.z)) * eo * eo * dspbr_ggx_D(b.ggx, h) * g / (denom * denom);
   return dspbr_core_transmission_factor(b, vh, eta_i, eta_o) * mt;
 }
 // D_v(h_t) times |dh/dl| = eta_o^2 |l.h| / (eta_i v.h + eta_o l.h)^2 (Walter 2007 eq. 17).
@@ -145,15 +149,16 @@ DSPBR_FN float dspbr_volumetric_pdf(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, float
   if (dspbr_is_delta_lobe(b, DSPBR_LOBE_TRANSMISSION) || !(v.z > 0.0f)) return 0.0f;
   vec3 h;
   float denom;
-  if (!dspbr_refraction_half(v, l, eta_i, eta_o, h, denom)) return 0.0f;
+  float m = max(eta_i, eta_o), ei = eta_i / m, eo = eta_o / m;
+  if (!dspbr_refraction_half(v, l, ei, eo, h, denom)) return 0.0f;
   float lh = dot(l, h);
-  return dspbr_ggx_D_visible(b.ggx, v, h) * eta_o * eta_o * abs(lh) / (denom * denom);
+  return dspbr_ggx_D_visible(b.ggx, v, h) * eo * eo * abs(lh) / (denom * denom);
 }
 DSPBR_FN float dspbr_volumetric_weight(DSPBR_IN(DspbrBsdf) b, vec3 v, float eta_i, float eta_o) {
   if (!(v.z > 0.0f)) return 0.0f;
   // A smooth lobe under total internal reflection transmits nothing.
   float eta = eta_i / eta_o;
-  bool macro_tir = eta * eta * (1.0f - v.z * v.z) >= 1.0f && abs(eta - 1.0f) >= dspbr_index_matched;
+  bool macro_tir = eta * sqrt(max(0.0f, 1.0f - v.z * v.z)) >= 1.0f && abs(eta - 1.0f) >= dspbr_index_matched;
   if (dspbr_is_delta_lobe(b, DSPBR_LOBE_TRANSMISSION) && macro_tir) return 0.0f;
   if (macro_tir) {
     // Beyond the critical angle: the share of facets tilted towards v by more than

@@ -124,14 +124,20 @@ DSPBR_FN DspbrFrame dspbr_core_frame(DSPBR_IN(DspbrMaterial) m) {
 // times the value, or normalised by the colour's luminance (linear sRGB, D65).
 DSPBR_FN vec3 dspbr_emission_rho_e(DSPBR_IN(DspbrMaterial) m, DspbrOptions o) {
   if (!(m.emissionValue > 0.0f)) return dspbr_splat(0.0f);
-  vec3 l_vc = m.emissionColor * m.emissionValue;
-  if (m.emissionEnergyNormalization) {
-    float lum = 0.2126729f * m.emissionColor.x + 0.7151522f * m.emissionColor.y + 0.0721750f * m.emissionColor.z;
-    l_vc = lum > 0.0f ? m.emissionColor * (m.emissionValue / lum) : dspbr_splat(0.0f);
-  }
+  // In float the products overflow (a dim colour normalised: value / luminance; a large value
+  // times a colour) and 0 x inf is NaN: the colour is scaled to a largest channel of 1 first, every
+  // factor kept at most the largest float (the library's +inf, shaders/README.md), and so the
+  // radiance, which saturates there (the seventh fresh tester's pass: inf and NaN for value 100
+  // and colour (1e-37, 0, 0)).
+  float c_max = dspbr_max3(m.emissionColor);
+  if (!(c_max > 0.0f)) return dspbr_splat(0.0f);
+  vec3 c = m.emissionColor / c_max;
   bool power = m.emissionMode == DSPBR_EMISSIONMODE_LUMINOUS_POWER;
   float area = o.object_area_m2 > 0.0f ? o.object_area_m2 : 1.0f;
-  return l_vc * (power ? dspbr_inv_pi / area : dspbr_inv_pi);
+  float v = m.emissionValue * min(power ? dspbr_inv_pi / area : dspbr_inv_pi, dspbr_float_max);
+  float k = m.emissionEnergyNormalization ? v / (0.2126729f * c.x + 0.7151522f * c.y + 0.0721750f * c.z)  // lum >= 0.0722
+                                          : v * c_max;
+  return c * min(k, dspbr_float_max);
 }
 
 DSPBR_FN DspbrBsdf dspbr_prepare(DSPBR_IN(DspbrMaterial) m, DspbrFrame frame, DSPBR_IN(DspbrOptions) o) {

@@ -30,13 +30,15 @@ DSPBR_FN float dspbr_uniform_hemisphere_pdf(vec3 w) { return w.z > 0.0f ? 0.5f *
 // Mirror reflection of v about n (both unit, pointing away from the surface).
 DSPBR_FN vec3 dspbr_reflect(vec3 v, vec3 n) { return n * (2.0f * dot(v, n)) - v; }
 // Refraction of v (v.h > 0) through the facet h, eta = eta_i / eta_o (Walter et al. 2007 eq. 40);
-// false under total internal reflection.
+// false under total internal reflection. sin theta_t is formed as eta sin theta_i (eta^2 overflows
+// a float beyond eta ~1e19, and eta^2 (1 - cos^2) is then NaN at normal incidence), and for
+// eta > 1 the direction as (its expression) / eta: normalize takes any length.
 DSPBR_FN bool dspbr_refract(vec3 v, vec3 h, float eta, DSPBR_OUT(vec3) l) {
   float cos_i = dot(v, h);
-  float sin2_t = eta * eta * max(0.0f, 1.0f - cos_i * cos_i);
+  float sin_t = eta * sqrt(max(0.0f, 1.0f - cos_i * cos_i));
   l = vec3(0.0f, 0.0f, 0.0f);
-  if (!(sin2_t < 1.0f)) return false;
-  float cos_t = sqrt(1.0f - sin2_t);
-  l = normalize(h * (eta * cos_i - cos_t) - v * eta);
+  if (!(sin_t < 1.0f)) return false;
+  float cos_t = sqrt(1.0f - sin_t * sin_t);
+  l = eta > 1.0f ? normalize(h * (cos_i - cos_t / eta) - v) : normalize(h * (eta * cos_i - cos_t) - v * eta);
   return true;
 }

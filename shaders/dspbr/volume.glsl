@@ -54,5 +54,7 @@ DSPBR_FN DspbrVolume dspbr_volume(DSPBR_IN(DspbrMaterial) m) {
 // "Dispersion", Cauchy through the d line); the ior itself for nu_d = 0 or no wavelength.
 DSPBR_FN float dspbr_dispersion_ior(float ior, float abbe_number, float lambda_nm) {
   if (!(abbe_number > 0.0f) || !(lambda_nm > 0.0f) || abbe_number >= dspbr_float_max) return ior;
-  return max(ior + (ior - 1.0f) / abbe_number * (523655.0f / (lambda_nm * lambda_nm) - 1.5168f), 1.0f);
+  // At most the largest float (the library's +inf, shaders/README.md): the sum overflows for iors
+  // near it.
+  return min(max(ior + (ior - 1.0f) / abbe_number * (523655.0f / (lambda_nm * lambda_nm) - 1.5168f), 1.0f), dspbr_float_max);
 }

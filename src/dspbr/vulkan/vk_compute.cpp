@@ -21,6 +21,8 @@ std::vector<uint32_t> read_spirv(const std::string& path) {
   std::vector<uint32_t> words(size_t(n) / 4);
   f.seekg(0);
   f.read(reinterpret_cast<char*>(words.data()), n);
+  // The header: the magic number and four more words (SPIR-V specification, 2.3 "Physical Layout").
+  if (!f || words.size() < 5 || words[0] != 0x07230203u) throw std::invalid_argument("'" + path + "' is not SPIR-V");
   return words;
 }
 

@@ -22,7 +22,8 @@ struct VkError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The words of a SPIR-V file (glslangValidator -V); std::invalid_argument when unreadable.
+// The words of a SPIR-V file (glslangValidator -V); std::invalid_argument when unreadable or without
+// a SPIR-V header (magic number 0x07230203 and four more words).
 std::vector<uint32_t> read_spirv(const std::string& path);
 
 // One dispatch: what the shader reads and writes.
