@@ -34,9 +34,9 @@ struct SheenLambdaFit {
 
 // The coefficients printed in the DSPBR 2025x spec (Table sheen-lambda-fit and -w).
 const SheenLambdaFit& sheen_lambda_fit_spec();
-// The older fit of Conty Estevez & Kulla 2017 (their Table 1, blended by (1 - alpha_b)^2): what
-// implementations written before DSPBR 2025x use; the conformance diagnosis's
-// Deviation::OldSheenLambda.
+// The older fit of Conty Estevez & Kulla 2017 (their two rows for alpha = 0 and 1, blended by
+// 1 - (1 - alpha_b)^2): what implementations written before DSPBR 2025x use; the conformance
+// diagnosis's Deviation::OldSheenLambda.
 const SheenLambdaFit& sheen_lambda_fit_ck17();
 
 // The fit at one alpha_b: the blended row p(alpha_b) and L(0.5) computed once, for the many
