@@ -237,6 +237,10 @@ void select_vectors(const Selection& s, std::vector<Vector>& vectors, std::vecto
     kept_vectors.push_back(std::move(vectors[i]));
     kept_results.push_back(std::move(results[i]));
   }
+  // Each name exists but no vector has both (a group whose materials lack the component): the
+  // options, not the results, leave nothing to judge.
+  if (kept_vectors.empty() && !s.groups.empty() && !s.components.empty())
+    throw std::invalid_argument("--groups and --components: no vector is in one of the groups and has one of the components");
   vectors = std::move(kept_vectors);
   results = std::move(kept_results);
 }

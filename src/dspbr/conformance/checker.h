@@ -46,7 +46,8 @@ struct Check {
 
 // The vectors to judge (`dspbr conformance check --groups/--components`): those in one of
 // `groups` (all when empty) whose material has one of `components` (all when empty). Throws
-// std::invalid_argument naming a group or component no vector has, with the known ones.
+// std::invalid_argument naming a group or component no vector has, with the known ones, or when
+// no vector is in both.
 struct Selection {
   std::vector<std::string> groups, components;
 };
