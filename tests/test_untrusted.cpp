@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -595,6 +596,23 @@ TEST(Untrusted, TrailingCommasAndOptionsWithoutTheirPartnerAreRefused) {
 // scene analyze FOLDER reads every .gltf and .glb entry: a FIFO named a.gltf is refused by the
 // reader (found by this stop's second fresh tester: skipped without a word, while conformance
 // generate --scenes refused it).
+// A scene folder's .GLTF (a file from a case-insensitive file system) is a glTF file: scene
+// analyze and conformance generate --scenes read it (both skipped it without a word; the sixth
+// fresh tester's pass).
+TEST(Untrusted, SceneFilesWithUpperCaseExtensionsAreRead) {
+  const fs::path dir = fresh("scene_upper");
+  std::ofstream(dir / "X.GLTF") << R"({"asset": {"version": "2.0"}, "materials": [{"name": "m"}]})";
+  const ToolRun analyze = run_dspbr("scene analyze " + dir.string());
+  EXPECT_EQ(analyze.status, 0) << analyze.output;
+  EXPECT_NE(analyze.output.find("X.GLTF: 1 material(s)"), std::string::npos) << analyze.output;
+  const ToolRun gen = run_dspbr("conformance generate --no-albedo --directions 1 --scenes " + dir.string() + " --out " +
+                                (dir / "vectors").string());
+  ASSERT_EQ(gen.status, 0) << gen.output;
+  std::ifstream f(dir / "vectors" / "vectors.json");
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"scenes/X/00\""), std::string::npos);
+}
+
 TEST(Untrusted, SceneFolderEntriesThatAreNotFilesAreRefused) {
   const fs::path dir = fresh("scene_fifo");
   ASSERT_EQ(::mkfifo((dir / "a.gltf").c_str(), 0600), 0);

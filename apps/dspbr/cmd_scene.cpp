@@ -12,6 +12,7 @@
 
 #include "commands.h"
 #include "provenance.h"
+#include "dspbr/gltf/gltf_file.h"
 #include "dspbr/io/json_write.h"
 #include "dspbr/limits.h"
 #include "dspbr/params/material_params.h"
@@ -38,7 +39,7 @@ std::vector<std::string> scene_files(const std::string& path) {
   if (!fs::is_directory(path, ec)) return {path};
   std::vector<std::string> out;
   for (const auto& e : fs::directory_iterator(path, ec)) {
-    const std::string ext = e.path().extension().string();
+    const std::string ext = gltf::lower_extension(e.path().string());
     if (ext == ".gltf" || ext == ".glb") out.push_back(e.path().string());
   }
   if (ec) throw UsageError(path + ": cannot list the folder: " + ec.message());

@@ -468,7 +468,7 @@ std::vector<Case> scene_cases(const std::string& dir) {
   std::vector<fs::path> files;
   std::error_code ec;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    if (it->path().extension() == ".gltf") files.push_back(it->path());
+    if (gltf::lower_extension(it->path().string()) == ".gltf") files.push_back(it->path());
   if (ec) throw std::runtime_error(dir + ": cannot list the scene folder: " + ec.message());
   std::sort(files.begin(), files.end());
   std::vector<Case> out;

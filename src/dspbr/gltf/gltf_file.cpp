@@ -394,6 +394,12 @@ GltfFile parse_gltf(std::string_view bytes, const std::string& path) {
   return f;
 }
 
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
 GltfFile read_gltf(const std::string& path) {
   return parse_gltf(std::string_view(read_file(path, limits::kGltfBytes)), path);
 }

@@ -37,4 +37,9 @@ GltfFile parse_gltf(const std::vector<std::uint8_t>& bytes, const std::string& p
 // in: a caller that looked at the document first does not hold two copies.
 GltfFile gltf_from_json(nlohmann::json json, const std::string& path);
 
+// The extension of a file name in lower case (".GLTF" -> ".gltf"): scene folders list .gltf and
+// .glb files in any case (a file from a case-insensitive file system was skipped without a word;
+// the sixth fresh tester's pass).
+std::string lower_extension(const std::string& path);
+
 }  // namespace dspbr::gltf
