@@ -489,16 +489,26 @@ auto on_bsdf(R (PyBsdf::*f)(A...) const) {
 
 // ---- dspbr.lut -------------------------------------------------------------------------------
 
+// An integer by the __index__ protocol (int, numpy's integers; not bool, not float), as an int;
+// py::cast_error otherwise or beyond int (numpy.int64(4) was refused: the sixth fresh tester's pass).
+bool is_index(const py::handle& x) { return !py::isinstance<py::bool_>(x) && PyIndex_Check(x.ptr()); }
+int index_value(const py::handle& x) {
+  if (!is_index(x)) throw py::cast_error();
+  PyObject* i = PyNumber_Index(x.ptr());  // an __index__ that raises: no int
+  if (i == nullptr) {
+    PyErr_Clear();
+    throw py::cast_error();
+  }
+  return py::reinterpret_steal<py::int_>(i).cast<int>();
+}
+
 std::vector<int> dims_of(const py::handle& obj, const std::string& name) {
   const std::string what = "size of " + name;
   if (py::isinstance<py::bool_>(obj)) fail(what + " expects an int or a tuple of ints, got " + py::repr(obj).cast<std::string>());
-  if (py::isinstance<py::int_>(obj)) return {obj.cast<int>()};
   std::vector<int> dims;
   try {
-    for (const auto& x : obj) {
-      if (!py::isinstance<py::int_>(x) || py::isinstance<py::bool_>(x)) throw py::cast_error();
-      dims.push_back(x.cast<int>());
-    }
+    if (is_index(obj)) return {index_value(obj)};
+    for (const auto& x : obj) dims.push_back(index_value(x));
   } catch (const std::exception&) {
     fail(what + " expects an int or a tuple of ints, got " + py::repr(obj).cast<std::string>());
   }

@@ -44,6 +44,17 @@ def test_generate_agrees_with_cli(tmp_path, integrator, grid):
         assert [(a.name, a.warp) for a in loaded[name].axes] == [(n, grid) for n, _ in dspbr.lut.axes(name, sizes[name], grid)]
 
 
+def test_sizes_are_integers_of_any_kind():
+    # numpy's integers are integers (they were refused with "got (4, 4)"; the sixth fresh tester's
+    # pass); floats and bools are not.
+    plain = dspbr.lut.generate(["GGX_E_avg"], size={"GGX_E_avg": 4}, layout="published", **SETTINGS)
+    numpy = dspbr.lut.generate(["GGX_E_avg"], size={"GGX_E_avg": (np.int64(4),)}, layout="published", **SETTINGS)
+    np.testing.assert_array_equal(plain["GGX_E_avg"], numpy["GGX_E_avg"])
+    for bad in (4.0, (np.float64(4),), True, (4, "4")):
+        with pytest.raises(ValueError, match="size of GGX_E_avg expects an int or a tuple of ints"):
+            dspbr.lut.generate(["GGX_E_avg"], size={"GGX_E_avg": bad}, layout="published", **SETTINGS)
+
+
 def test_generate_default_sizes_and_errors_and_threads():
     one = dspbr.lut.generate(["Sheen_ash_E"], samples=1024, target_error=0, threads=1, errors=True, layout="published")
     two = dspbr.lut.generate("Sheen_ash_E", samples=1024, target_error=0, threads=2, layout="published")
