@@ -5,7 +5,9 @@ library's own text (its overload lists, "Invoked with", cast errors).
 
 Each guarded function keeps its signature, read from the first docstring line the extension writes
 ("name(a: type = default, ...) -> result"); the checks run only once the extension has refused the
-call, so a correct call costs nothing more.
+call, so a correct call costs nothing more. The one exception: an array argument (ArrayLike) of a
+function (dspbr.lookup) that is neither an array nor a number is checked first, because numpy turns None into NaN and "0.5" into
+0.5 where the extension asks for an array, and the call would go through.
 """
 import functools
 import os
@@ -88,6 +90,11 @@ def _is_numeric_array(x: Any) -> bool:
     return a.dtype.kind in "biuf"
 
 
+# Values that need no check before the call: arrays and numbers (anything else, a list of None or of
+# strings included, is looked at by _explain).
+_PLAIN = (numpy.ndarray, int, float, numpy.number, numpy.bool_)
+
+
 def _short(value: Any) -> str:
     text = repr(value)
     return text if len(text) <= 60 else text[:57] + "..."
@@ -133,15 +140,24 @@ def guard(fn: Callable[..., Any], qualname: str, method: bool = False) -> Callab
     if parsed is None:
         return fn
     params: List[Tuple[str, str, bool]] = parsed
+    # (Methods check their arrays themselves: dspbr.Bsdf refuses strings and None with its own words.)
+    has_arrays = not method and any("ArrayLike" in annotation for _, annotation, _ in params)
 
     @functools.wraps(fn)
     def call(*args: Any, **kwargs: Any) -> Any:
+        user_args = args[1:] if method else args
+        if has_arrays and not all(isinstance(v, _PLAIN) and not isinstance(v, (str, bytes))
+                                  for v in (*user_args, *kwargs.values())):
+            names = [p[0] for p in params]
+            for name, value in (*zip(names, user_args), *kwargs.items()):
+                annotation = next((a for n, a, _ in params if n == name), "")
+                if "ArrayLike" in annotation and not _is_numeric_array(value):
+                    raise TypeError(f"{qualname}(): {name} expects a number or an array of numbers, got {_short(value)}")
         try:
             return fn(*args, **kwargs)
         except (TypeError, ValueError, RuntimeError) as e:
             if not any(t in str(e) for t in _BINDING_TEXT):
                 raise
-            user_args = args[1:] if method else args
             reason = _explain(qualname, params, user_args, kwargs)
             if reason is None:
                 signature = (fn.__doc__ or "").split("\n", 1)[0].replace("self, ", "")

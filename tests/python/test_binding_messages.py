@@ -26,6 +26,13 @@ CASES = [
      "dspbr.lookup.ggx_E(): cos_theta expects a number or an array of numbers, got 'x'"),
     (lambda: dspbr.lookup.ggx_E([[1, 2], [3]], 0.5), TypeError,
      "dspbr.lookup.ggx_E(): cos_theta expects a number or an array of numbers, got [[1, 2], [3]]"),
+    # numpy reads None as NaN and "0.5" as 0.5: the lookups took them (the sixth fresh tester's pass).
+    (lambda: dspbr.lookup.ggx_E(None, 0.5), TypeError,
+     "dspbr.lookup.ggx_E(): cos_theta expects a number or an array of numbers, got None"),
+    (lambda: dspbr.lookup.ggx_E(0.5, roughness="0.5"), TypeError,
+     "dspbr.lookup.ggx_E(): roughness expects a number or an array of numbers, got '0.5'"),
+    (lambda: dspbr.lookup.glass_E([None, 1], 0.5, 1.5, 0), TypeError,
+     "dspbr.lookup.glass_E(): cos_theta expects a number or an array of numbers, got [None, 1]"),
     (lambda: dspbr.lookup.ggx_E(1, 2, 3), TypeError, "dspbr.lookup.ggx_E() takes at most 2 arguments (3 given)"),
     (lambda: dspbr.lookup.ggx_E(cos_theta=0.5), TypeError, "dspbr.lookup.ggx_E(): missing argument 'roughness'"),
     (lambda: dspbr.lookup.ggx_E([0.1, 0.2], [0.1, 0.2, 0.3]), ValueError,
