@@ -613,6 +613,20 @@ TEST(Untrusted, SceneFilesWithUpperCaseExtensionsAreRead) {
   EXPECT_NE(text.find("\"scenes/X/00\""), std::string::npos);
 }
 
+// A scene file whose name holds a newline would make vector ids that break the CSV files' lines
+// (the sixth fresh tester's pass): refused, naming the file.
+TEST(Untrusted, SceneFileNamesWithControlCharactersAreRefused) {
+  const fs::path dir = fresh("scene_newline");
+  std::ofstream(dir / "a\nb.gltf") << R"({"asset": {"version": "2.0"}, "materials": [{"name": "m"}]})";
+  const ToolRun r = run_dspbr("conformance generate --no-albedo --directions 1 --scenes " + dir.string() + " --out " +
+                              (dir / "vectors").string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(r.output, "dspbr: error: --scenes: " + dir.string() +
+                          "/a\\x0ab.gltf: the file name has a control character, which no vector id may hold: rename "
+                          "the file\n");
+  EXPECT_FALSE(fs::exists(dir / "vectors"));
+}
+
 TEST(Untrusted, SceneFolderEntriesThatAreNotFilesAreRefused) {
   const fs::path dir = fresh("scene_fifo");
   ASSERT_EQ(::mkfifo((dir / "a.gltf").c_str(), 0600), 0);

@@ -476,6 +476,13 @@ std::vector<Case> scene_cases(const std::string& dir) {
   // material 1 and x-1.gltf would share the vector ids scenes/x-1/NN; such a set is refused.
   std::map<std::string, std::string> named_by;  // case name -> the file (and material) it came from
   for (const fs::path& f : files) {
+    // The stem becomes vector ids, which the CSV files hold one per line: a control character (a
+    // newline) would break the line (the sixth fresh tester's pass: the results reader then refused
+    // its own quoted row).
+    const std::string stem = f.stem().string();
+    if (std::any_of(stem.begin(), stem.end(), [](char ch) { return static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f; }))
+      throw std::runtime_error(quote_input(f.string()) +
+                               ": the file name has a control character, which no vector id may hold: rename the file");
     const gltf::GltfFile file = gltf::read_gltf(f.string());
     const std::vector<gltf::GltfMaterial> mats = gltf::map_materials(file);
     for (const gltf::GltfMaterial& gm : mats) {
