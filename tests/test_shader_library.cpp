@@ -214,6 +214,33 @@ TEST(ShaderLibrary, HugeFloatInputsAsTheReference) {
     }
 }
 
+// Dispersion bends only the volumetric transparent part (the dispersion component): thin walls and
+// opaque dielectrics keep their ior at every wavelength (the library bent them too: a thin glass of
+// Abbe number 20 at 470 nm 6.9 % too bright; the eighth fresh tester's pass).
+TEST(ShaderLibrary, DispersionOnlyWhereTheReferenceHasIt) {
+  Pcg32 rng(5, 9);
+  auto dir = [&](bool up) {
+    const Vec3 u = sample_uniform_hemisphere(rng.next_double(), rng.next_double());
+    return up ? u : flip_z(u);
+  };
+  BsdfOptions o;
+  o.wavelength_nm = 470;
+  for (int kind = 0; kind < 3; ++kind) {
+    Material m;
+    m.albedo = {0.5, 0.13, 0.35}, m.roughness = 0.666, m.abbeNumber = kind == 1 ? 2.27 : 20;
+    m.transparency = kind == 1 ? 0.0 : 1.0;
+    m.thinWalled = kind != 2;  // 0: thin glass, 1: opaque dielectric, 2: volumetric glass (bent)
+    const MaterialBsdf ref(m, LutSet::builtin(), o);
+    const shader_test::ShaderBsdf lib(m, o);
+    for (int i = 0; i < 200; ++i) {
+      const Vec3 v = dir(true), l = dir(i % 2 == 0);
+      const Rgb want = ref.eval(v, l), got = lib.eval(v, l);
+      for (auto [g, w] : {std::pair{got.r, want.r}, {got.g, want.g}, {got.b, want.b}})
+        EXPECT_NEAR(g, w, 1e-4 * w + 1e-6) << "material " << kind << " pair " << i;
+    }
+  }
+}
+
 TEST(ShaderLibrary, VolumeAndDispersionAsTheReference) {
   Pcg32 rng(5, 2);
   auto u = [&] { return rng.next_double(); };

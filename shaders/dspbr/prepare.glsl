@@ -149,7 +149,12 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DSPBR_IN(DspbrMaterial) m, DspbrFrame frame, DS
   b.alpha_cut = dspbr_clamp_nan(m.cutoutOpacity, 0.0f, 1.0f);
   // A component compiled out (features.glsl) has weight 0, as in the reference's component masks.
   b.clearcoat = DSPBR_HAS_CLEARCOAT != 0 ? m.clearcoat : 0.0f;
-  b.eta = DSPBR_HAS_DISPERSION != 0 ? dspbr_dispersion_ior(m.ior, m.abbeNumber, o.wavelength_nm) : m.ior;
+  // Dispersion belongs to the volumetric transparent part (src/dspbr/component.cpp): eta(lambda) only
+  // behind a volume boundary that transmits, as the reference (it bent thin walls and opaque
+  // dielectrics too; the eighth fresh tester's pass).
+  bool dispersive = DSPBR_HAS_DISPERSION != 0 && DSPBR_HAS_VOLUMETRIC_TRANSPARENT != 0 && !m.thinWalled && m.metallic < 1.0f &&
+                    m.transparency > 0.0f;
+  b.eta = dispersive ? dspbr_dispersion_ior(m.ior, m.abbeNumber, o.wavelength_nm) : m.ior;
   // Anisotropic roughness (r_u, r_v) = r (1, 1 - o), alpha = r^2 (spec "Microfacet BSDF").
   float r_u = m.roughness, r_v = m.roughness * (1.0f - m.anisotropy);
   b.ggx = dspbr_ggx(r_u * r_u, r_v * r_v);
