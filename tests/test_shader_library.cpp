@@ -212,6 +212,36 @@ TEST(ShaderLibrary, HugeFloatInputsAsTheReference) {
         EXPECT_NEAR(g, std::min(w, kFloatMax), 1e-5 * std::min(w, kFloatMax) + 1.2e-38)  // + the smallest normal float
             << e.value << " (" << e.color.r << ", " << e.color.g << ", " << e.color.b << ") normalize " << normalize;
     }
+  // A transmission weight that underflows a float ((1 - metallic) t = 1.2e-7 x 5.6e-39): the lobe is
+  // present as in the reference, whose pdf gives it its minimum selection share (the library left it
+  // out: pdf 0 where the reference has 1e-5..1e-4; the eighth fresh tester's pass).
+  for (bool thin : {true, false}) {
+    Material glass;
+    glass.metallic = double(0.99999988f), glass.transparency = 5.6e-39, glass.roughness = 0.54, glass.thinWalled = thin;
+    const MaterialBsdf ref(glass, LutSet::builtin(), {});
+    const shader_test::ShaderBsdf lib(glass, {});
+    int compared = 0;
+    for (int i = 0; i < 400; ++i) {
+      const Vec3 v = dir(true), l = dir(false);
+      const double want = ref.pdf(v, l);
+      if (!(want > 0)) continue;
+      ++compared;
+      EXPECT_NEAR(lib.pdf(v, l), want, 1e-3 * want) << "thin " << thin << " pair " << i;
+    }
+    EXPECT_GT(compared, 50) << thin;
+  }
+  // Each channel saturates on its own (the eighth fresh tester's pass: green beyond the largest float
+  // pulled red, 9.55e32, down to 3.4e32).
+  Material m;
+  m.emissionValue = 3e38, m.emissionColor = {1e-6, 1, 0}, m.emissionMode = EmissionMode::LuminousPower;
+  BsdfOptions small;
+  small.object_area_m2 = 0.1;
+  const Rgb want = MaterialBsdf(m, LutSet::builtin(), small).emission({0, 0, 1});
+  const Rgb got = shader_test::ShaderBsdf(m, small).emission({0, 0, 1});
+  ASSERT_GT(want.g, kFloatMax);
+  EXPECT_NEAR(got.r, want.r, 1e-5 * want.r);
+  EXPECT_EQ(got.g, kFloatMax);
+  EXPECT_EQ(got.b, 0.0);
 }
 
 // Dispersion bends only the volumetric transparent part (the dispersion component): thin walls and

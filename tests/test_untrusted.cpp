@@ -627,6 +627,30 @@ TEST(Untrusted, SceneFileNamesWithControlCharactersAreRefused) {
   EXPECT_FALSE(fs::exists(dir / "vectors"));
 }
 
+// A scene emitter that a float implementation cannot represent: a colour channel below the
+// smallest normal float, an emitted luminance beyond the largest (the eighth fresh tester's pass:
+// the vectors expected 149.67 and 9.55e38 where the shader library, in float, could only give 0 and
+// 3.4e38). Refused naming the file and material.
+TEST(Untrusted, SceneEmittersBeyondTheFloatRangeAreRefused) {
+  const std::pair<const char*, const char*> cases[] = {
+      {R"("emissiveFactor": [1e-46, 0, 0], "extensions": {"3DS_materials_emission": {"emissionValue": 100,
+           "emissionEnergyNormalization": true}})",
+       "emissionColor has a channel of 1e-46, below the smallest normal float (1.2e-38)"},
+      {R"("emissiveFactor": [1e-6, 1, 0], "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 3e38},
+           "3DS_materials_emission": {"emissionValue": 10, "emissionMode": "LUMINOUS_POWER"}})",
+       "its emitted luminance 9.55e+38 cd/m^2 is beyond the largest float (3.4e38)"}};
+  int k = 0;
+  for (const auto& [material, message] : cases) {
+    const fs::path dir = fresh("scene_emitter_" + std::to_string(k++));
+    std::ofstream(dir / "e.gltf") << R"({"asset": {"version": "2.0"}, "materials": [{"name": "e", )" << material << "}]}";
+    const ToolRun r = run_dspbr("conformance generate --no-albedo --directions 1 --scenes " + dir.string() + " --out " +
+                                (dir / "vectors").string());
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_EQ(r.output, "dspbr: error: --scenes: " + (dir / "e.gltf").string() + ": materials[0] 'e': " + message +
+                            (k == 1 ? ": a float implementation reads 0 or loses its precision\n" : "\n"));
+  }
+}
+
 TEST(Untrusted, SceneFolderEntriesThatAreNotFilesAreRefused) {
   const fs::path dir = fresh("scene_fifo");
   ASSERT_EQ(::mkfifo((dir / "a.gltf").c_str(), 0600), 0);

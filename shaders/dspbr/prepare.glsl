@@ -125,19 +125,21 @@ DSPBR_FN DspbrFrame dspbr_core_frame(DSPBR_IN(DspbrMaterial) m) {
 DSPBR_FN vec3 dspbr_emission_rho_e(DSPBR_IN(DspbrMaterial) m, DspbrOptions o) {
   if (!(m.emissionValue > 0.0f)) return dspbr_splat(0.0f);
   // In float the products overflow (a dim colour normalised: value / luminance; a large value
-  // times a colour) and 0 x inf is NaN: the colour is scaled to a largest channel of 1 first, every
-  // factor kept at most the largest float (the library's +inf, shaders/README.md), and so the
-  // radiance, which saturates there (the seventh fresh tester's pass: inf and NaN for value 100
-  // and colour (1e-37, 0, 0)).
+  // times a colour) and 0 x inf is NaN: the colour is scaled to a largest channel of 1 first, so
+  // that each channel's product stays finite until its last factor, and each channel saturates at
+  // the largest float (the library's +inf, shaders/README.md) on its own (the seventh and eighth
+  // fresh testers' passes: inf and NaN for value 100 and colour (1e-37, 0, 0); a channel in range
+  // pulled down with one beyond it).
   float c_max = dspbr_max3(m.emissionColor);
   if (!(c_max > 0.0f)) return dspbr_splat(0.0f);
   vec3 c = m.emissionColor / c_max;
   bool power = m.emissionMode == DSPBR_EMISSIONMODE_LUMINOUS_POWER;
   float area = o.object_area_m2 > 0.0f ? o.object_area_m2 : 1.0f;
-  float v = m.emissionValue * min(power ? dspbr_inv_pi / area : dspbr_inv_pi, dspbr_float_max);
-  float k = m.emissionEnergyNormalization ? v / (0.2126729f * c.x + 0.7151522f * c.y + 0.0721750f * c.z)  // lum >= 0.0722
-                                          : v * c_max;
-  return c * min(k, dspbr_float_max);
+  // c <= 1: c value is finite; each later factor finite, so a channel becomes +inf at worst, never NaN.
+  vec3 l = (c * m.emissionValue) * min(power ? dspbr_inv_pi / area : dspbr_inv_pi, dspbr_float_max);
+  l = m.emissionEnergyNormalization ? l / (0.2126729f * c.x + 0.7151522f * c.y + 0.0721750f * c.z)  // lum >= 0.0722
+                                    : l * c_max;
+  return vec3(min(l.x, dspbr_float_max), min(l.y, dspbr_float_max), min(l.z, dspbr_float_max));
 }
 
 DSPBR_FN DspbrBsdf dspbr_prepare(DSPBR_IN(DspbrMaterial) m, DspbrFrame frame, DSPBR_IN(DspbrOptions) o) {
@@ -209,7 +211,10 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DSPBR_IN(DspbrMaterial) m, DspbrFrame frame, DS
     b.f_ms = dspbr_fresnel_ms3(b.rho_sr0, b.rho_sr90, dspbr_clamp_nan(e_avg, 0.0f, 1.0f));
     b.ms_inv_norm = missing_m > dspbr_min_missing_energy ? 1.0f / (dspbr_pi * missing_m) : 0.0f;
     if (dspbr_max3(b.f_ms) > 0.0f && !mirror) b.lobes |= 1u << uint(DSPBR_LOBE_MULTISCATTER);
-    if (b.w_transp > 0.0f && dspbr_max3(b.rho_t) > 0.0f) {
+    // Present as in the reference (w_transp > 0 and rho_t > 0 in double): from the factors, not from
+    // their float product, which underflows for a transmission near the smallest float (the pdf was
+    // then 0 where the lobe's minimum selection share gives 1e-5..1e-4; the eighth fresh tester's pass).
+    if (transp_on && metal < 1.0f && t > 0.0f && dspbr_max3(m.albedo) > 0.0f) {
       b.lobes |= 1u << uint(DSPBR_LOBE_TRANSMISSION);
       bool matched = volumetric && abs(b.eta - 1.0f) < dspbr_index_matched;
       if (mirror || matched) b.delta |= 1u << uint(DSPBR_LOBE_TRANSMISSION);
