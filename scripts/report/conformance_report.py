@@ -89,8 +89,29 @@ def vec(x):
     return "(" + ", ".join("%.6g" % c for c in x) + ")"
 
 
+# A plot shows at most this many groups (those with the largest worst ratio, in the report's
+# order), each labelled with at most LABEL_CHARS characters: a vector file may name thousands of
+# groups or a group in 5000 characters, and the figure would exceed what the plotting library
+# draws (the eighth fresh tester's pass: the whole report was lost).
+MAX_GROUPS, LABEL_CHARS = 40, 40
+
+
+def plotted_groups(groups):
+    if len(groups) <= MAX_GROUPS:
+        return groups
+    worst = sorted(range(len(groups)), key=lambda i: -groups[i]["worst_ratio"])[:MAX_GROUPS]
+    return [groups[i] for i in sorted(worst)]
+
+
+def label(name):
+    return name if len(name) <= LABEL_CHARS else name[:LABEL_CHARS - 3] + "..."
+
+
 def distribution_plot(groups, values, path, xlabel, limit=None):
-    names = [g["name"] for g in groups]
+    shown = plotted_groups(groups)
+    names = [g["name"] for g in shown]
+    if len(shown) < len(groups):
+        xlabel += f"\n({len(shown)} of the {len(groups)} groups: those with the largest error over tolerance)"
     fig, ax = plt.subplots(figsize=(10, 0.35 * len(names) + 1.5))
     for i, name in enumerate(names):
         x = np.array([v for v in values.get(name, []) if v is not None], dtype=float)
@@ -100,7 +121,7 @@ def distribution_plot(groups, values, path, xlabel, limit=None):
         ax.axvline(limit, color="r", linewidth=1)
     ax.set_xscale("log")
     ax.set_yticks(range(len(names)))
-    ax.set_yticklabels(names)
+    ax.set_yticklabels([label(n) for n in names])
     ax.set_xlabel(xlabel)
     ax.grid(True, axis="x", alpha=0.3)
     fig.tight_layout()

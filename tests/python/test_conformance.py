@@ -180,3 +180,23 @@ def test_outputs_its_own_tools_would_refuse_are_refused(vectors, tmp_path):
     code, _, err = run_cli("conformance", "generate", "--directions", 200, "--no-albedo", "--out", tmp_path / "big")
     assert code == 2 and "larger than the limit of 16.0 MB" in err, err
     assert not (tmp_path / "big").exists()
+
+
+def test_report_of_many_groups_and_long_names(tmp_path):
+    # A vector file with 60 groups, one named in 5000 characters: the HTML report's plots show the 40
+    # worst groups with shortened labels (the plotting library refused the figure and the whole report
+    # was lost; the eighth fresh tester's pass).
+    code, _, err = run_cli("conformance", "generate", "--directions", 1, "--no-albedo", "--no-scenes", "--out",
+                           tmp_path / "v")
+    assert code == 0, err
+    doc = json.loads((tmp_path / "v" / "vectors.json").read_text())
+    for i, v in enumerate(doc["vectors"]):
+        v["group"] = "a" * 5000 if i == 0 else f"group-{i % 60}"
+    (tmp_path / "edited.json").write_text(json.dumps(doc))
+    code, _, err = run_cli("conformance", "reference", tmp_path / "edited.json", "--out", tmp_path / "r.json")
+    assert code == 0, err
+    code, out, err = run_cli("conformance", "check", tmp_path / "edited.json", tmp_path / "r.json", "--out",
+                             tmp_path / "report")
+    assert code == 0, (out, err)
+    for name in ("index.html", "plots/ratio_by_group.png", "plots/relative_error_by_group.png"):
+        assert (tmp_path / "report" / name).is_file(), name
