@@ -106,18 +106,26 @@ void judge_results(const Judgement& j, OutputFolder& out, const std::vector<conf
       std::printf("  IGNORED: %s of %d results (their vectors have no %s expectation)\n", name.c_str(),
                   q["ignored"].get<int>(), name.c_str());
   }
-  if (diagnosis && !diagnosis->overall.causes.empty()) {
-    std::printf("  likely causes of the %zu vectors whose f_cos or emission fails (docs/conformance.md, \"Diagnosis\"):\n",
-                diagnosis->overall.failing);
+  if (diagnosis) {
+    // The causes printed: at most three, each explaining a tenth of the failures or more (the report
+    // lists every cause that explains more than it is contradicted).
+    const conformance::Ranking& d = diagnosis->overall;
     int shown = 0;
-    for (const conformance::CauseScore& s : diagnosis->overall.causes) {
-      if (++shown > 3) break;
+    for (const conformance::CauseScore& s : d.causes) {
+      if (shown == 3 || 10 * s.explains < d.failing) break;
+      if (shown++ == 0)
+        std::printf("  likely causes of the %zu vectors whose f_cos or emission fails (docs/conformance.md, \"Diagnosis\"):\n",
+                    d.failing);
       std::printf("  %d. %-22s explains %zu, contradicted by %zu: %s\n", shown, s.cause->name, s.explains, s.contradicts,
                   s.cause->evidence);
     }
-  } else if (diagnosis && diagnosis->overall.failing > 0) {
-    std::printf("  no cause of the vocabulary explains the %zu vectors whose f_cos or emission fails\n",
-                diagnosis->overall.failing);
+    if (shown == 0 && d.failing > 0)
+      std::printf("  no cause of the vocabulary explains a tenth of the %zu vectors whose f_cos or emission fails\n",
+                  d.failing);
+    if (d.unreproduced > 0)
+      std::printf("  %zu vectors left out of the diagnosis: the reference does not give their expectations (an edited "
+                  "or stale vector file?)\n",
+                  d.unreproduced);
   }
   if (!check.passed())
     throw std::runtime_error(std::to_string(check.failed) + " of " + std::to_string(check.judged()) +

@@ -4,7 +4,9 @@
 // failures they explain. A mistake explains a failing vector when the implementation's f cos and
 // emission (those it supplied) are within the vector's tolerances of the reference with that
 // mistake; it is contradicted by a passing vector whose values the mistake would have moved
-// outside them. Ranked by explained minus contradicted, then by the vocabulary's order.
+// outside them. Ranked by explained minus contradicted, then by the vocabulary's order; a cause
+// contradicted as often as it explains is not listed. Vectors whose expectations the reference
+// does not reproduce (an edited or stale file) are left out and counted.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -44,6 +46,7 @@ struct CauseScore {
 struct Ranking {
   std::string group;        // "" for all the vectors
   std::size_t failing = 0;  // vectors whose f cos or emission fails
+  std::size_t unreproduced = 0;  // vectors left out: the reference does not give their expectations
   std::vector<CauseScore> causes;
 };
 
@@ -69,7 +72,7 @@ nlohmann::ordered_json vector_terms(const Vector& x, const Representation& base)
 // "with_cause"}, ...]} in the order of the vectors (vector_terms with the renderer tables).
 nlohmann::ordered_json terms_document(const std::vector<Vector>& vectors);
 
-// {"failing", "causes": [{"cause", "term", "explains", "contradicts", "evidence", "remedy"}]}
+// {"failing", "unreproduced", "causes": [{"cause", "term", "explains", "contradicts", "evidence", "remedy"}]}
 nlohmann::ordered_json ranking_json(const Ranking& r);
 
 }  // namespace dspbr::conformance
