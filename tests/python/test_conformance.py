@@ -183,15 +183,15 @@ def test_outputs_its_own_tools_would_refuse_are_refused(vectors, tmp_path):
 
 
 def test_report_of_many_groups_and_long_names(tmp_path):
-    # A vector file with 60 groups, one named in 5000 characters: the HTML report's plots show the 40
-    # worst groups with shortened labels (the plotting library refused the figure and the whole report
+    # A vector file with 60 groups, one named in 5000 characters, one "$\frac{$": the HTML report's
+    # plots show the 40 worst groups with shortened, escaped labels (the plotting library refused the figure and the whole report
     # was lost; the eighth fresh tester's pass).
     code, _, err = run_cli("conformance", "generate", "--directions", 1, "--no-albedo", "--no-scenes", "--out",
                            tmp_path / "v")
     assert code == 0, err
     doc = json.loads((tmp_path / "v" / "vectors.json").read_text())
     for i, v in enumerate(doc["vectors"]):
-        v["group"] = "a" * 5000 if i == 0 else f"group-{i % 60}"
+        v["group"] = "a" * 5000 if i == 0 else ("$\\frac{$" if i == 1 else f"group-{i % 60}")
     (tmp_path / "edited.json").write_text(json.dumps(doc))
     code, _, err = run_cli("conformance", "reference", tmp_path / "edited.json", "--out", tmp_path / "r.json")
     assert code == 0, err
@@ -200,3 +200,11 @@ def test_report_of_many_groups_and_long_names(tmp_path):
     assert code == 0, (out, err)
     for name in ("index.html", "plots/ratio_by_group.png", "plots/relative_error_by_group.png"):
         assert (tmp_path / "report" / name).is_file(), name
+    # A group named "$\frac{$" (matplotlib's mathematics) and results without any f cos (a pdf
+    # alone): the report is written (the ninth fresh tester's pass: tracebacks, the report lost).
+    results = json.loads((tmp_path / "r.json").read_text())["results"]
+    (tmp_path / "pdf.json").write_text(json.dumps({"results": [{"id": r["id"], "pdf": r["pdf"]} for r in results]}))
+    code, out, err = run_cli("conformance", "check", tmp_path / "edited.json", tmp_path / "pdf.json", "--out",
+                             tmp_path / "report-pdf")
+    assert code == 0, (out, err)
+    assert (tmp_path / "report-pdf" / "index.html").is_file()
