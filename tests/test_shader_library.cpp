@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -229,6 +230,29 @@ TEST(ShaderLibrary, HugeFloatInputsAsTheReference) {
       EXPECT_NEAR(lib.pdf(v, l), want, 1e-3 * want) << "thin " << thin << " pair " << i;
     }
     EXPECT_GT(compared, 50) << thin;
+  }
+  // Directions closer to the horizon than |cos| 1e-9 carry nothing, as in the reference (the ninth
+  // fresh tester's pass: a sheen gave f = +inf at l.z = 1.4e-45, and the sampler returned such a
+  // direction with an infinite weight).
+  {
+    Material sheen;
+    sheen.sheenColor = {1, 1, 1}, sheen.sheenRoughness = 0.5, sheen.clearcoat = 1, sheen.clearcoatRoughness = 0.3;
+    const MaterialBsdf ref(sheen, LutSet::builtin(), {});
+    const shader_test::ShaderBsdf lib(sheen, {});
+    const Vec3 v = normalize(Vec3(0.3, 0.2, 0.9));
+    for (double z : {double(std::numeric_limits<float>::denorm_min()), 1e-40, 1e-30, 1e-10, -1e-30}) {
+      const Vec3 l(0.8, 0.6, z);
+      EXPECT_EQ(ref.eval(v, l).r, 0.0) << z;
+      EXPECT_EQ(lib.eval(v, l).r, 0.0) << z;
+      EXPECT_EQ(lib.pdf(v, l), 0.0) << z;
+      EXPECT_EQ(lib.eval(l, v).r, 0.0) << z;
+    }
+    for (int i = 0; i < 2000; ++i) {
+      const Vec3 u(rng.next_double(), i % 2 ? double(std::numeric_limits<float>::denorm_min()) : rng.next_double(),
+                   rng.next_double());
+      const BsdfSample s = lib.sample(dir(true), u);
+      if (s.valid) ASSERT_TRUE(std::isfinite(s.weight.r) && std::isfinite(s.pdf) && s.pdf > 0) << i;
+    }
   }
   // Each channel saturates on its own (the eighth fresh tester's pass: green beyond the largest float
   // pulled red, 9.55e32, down to 3.4e32).

@@ -59,13 +59,22 @@ DSPBR_FN float dspbr_layer_of(DspbrLayers f, int k) {
 }
 DSPBR_FN vec3 dspbr_flip_z(vec3 w) { return vec3(w.x, w.y, -w.z); }
 
+// A direction closer to the horizon of a lobe's frame than |cos| 1e-9 is on it: no value, no
+// density, no sample, as the reference's kHorizonCos (src/dspbr/bsdf/lobe_mixture.h). Below it the
+// lobes' 1/cos factors overflow a float (the ninth fresh tester's pass: f = +inf at a cosine of
+// 1.4e-45, which the sampler itself produced), and f cos there is below 1e-9 f anyway. NaN included.
+DSPBR_CONST float dspbr_horizon_cos = 1e-9f;
+DSPBR_FN bool dspbr_on_horizon(vec3 w) { return !(abs(w.z) >= dspbr_horizon_cos); }
+
 // f of lobe k (no layer factor) for v, l in the side's coordinates; av, al: the tables at v and l.
 DSPBR_FN vec3 dspbr_lobe_eval(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, float eta_i, float eta_o, DspbrAlbedos av,
                               DspbrAlbedos al) {
   if (DSPBR_HAS_CLEARCOAT != 0 && k == DSPBR_LOBE_CLEARCOAT) {
     // The coat reflects: nothing towards the other side of the core's surface.
     if (!(dot(l, b.core.n) > 0.0f)) return dspbr_splat(0.0f);
-    return dspbr_reflection_eval(b, k, dspbr_to_local(b.coat, v), dspbr_to_local(b.coat, l), eta_i, eta_o);
+    vec3 vk = dspbr_to_local(b.coat, v), lk = dspbr_to_local(b.coat, l);
+    if (dspbr_on_horizon(vk) || dspbr_on_horizon(lk)) return dspbr_splat(0.0f);
+    return dspbr_reflection_eval(b, k, vk, lk, eta_i, eta_o);
   }
   vec3 vc = dspbr_to_local(b.core, v), lc = dspbr_to_local(b.core, l);
   if (k == DSPBR_LOBE_CORE_REFLECTION) return dspbr_reflection_eval(b, k, vc, lc, eta_i, eta_o);
@@ -84,8 +93,10 @@ DSPBR_FN vec3 dspbr_lobe_eval(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, floa
 
 // The density with which lobe k samples l.
 DSPBR_FN float dspbr_lobe_pdf(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, float eta_i, float eta_o) {
-  if (DSPBR_HAS_CLEARCOAT != 0 && k == DSPBR_LOBE_CLEARCOAT)
-    return dspbr_ggx_reflection_pdf(b.coat_ggx, dspbr_to_local(b.coat, v), dspbr_to_local(b.coat, l));
+  if (DSPBR_HAS_CLEARCOAT != 0 && k == DSPBR_LOBE_CLEARCOAT) {
+    vec3 vk = dspbr_to_local(b.coat, v), lk = dspbr_to_local(b.coat, l);
+    return dspbr_on_horizon(vk) || dspbr_on_horizon(lk) ? 0.0f : dspbr_ggx_reflection_pdf(b.coat_ggx, vk, lk);
+  }
   vec3 vc = dspbr_to_local(b.core, v), lc = dspbr_to_local(b.core, l);
   if (k == DSPBR_LOBE_CORE_REFLECTION) return dspbr_ggx_reflection_pdf(b.ggx, vc, lc);
   if (DSPBR_HAS_VOLUMETRIC_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && !b.thin_walled)
@@ -155,6 +166,7 @@ DSPBR_FN DspbrAlbedos dspbr_albedos_at(DSPBR_IN(DspbrBsdf) b, vec3 w) { return d
 
 // f(v, l) and the mixture pdf on one side (v in front, side coordinates; av: the tables at v).
 DSPBR_FN vec3 dspbr_eval_side(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, float eta_i, float eta_o, DspbrAlbedos av) {
+  if (dspbr_on_horizon(dspbr_to_local(b.core, v)) || dspbr_on_horizon(dspbr_to_local(b.core, l))) return dspbr_splat(0.0f);
   DspbrAlbedos al = dspbr_albedos_at(b, l);
   DspbrLayers f = dspbr_layers(b, v, l, av, al);
   vec3 sum = dspbr_splat(0.0f);
@@ -165,6 +177,7 @@ DSPBR_FN vec3 dspbr_eval_side(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, float eta_i
 }
 DSPBR_FN float dspbr_pdf_side(DSPBR_IN(DspbrBsdf) b, DspbrSelection sel, vec3 v, vec3 l, float eta_i, float eta_o) {
   float p = 0.0f;
+  if (dspbr_on_horizon(dspbr_to_local(b.core, v)) || dspbr_on_horizon(dspbr_to_local(b.core, l))) return p;
   for (int k = 0; k < DSPBR_LOBE_COUNT; ++k)
     if (dspbr_has_lobe(b, k) && !dspbr_is_delta_lobe(b, k) && sel.p[k] > 0.0f)
       p += sel.p[k] * dspbr_lobe_pdf(b, k, v, l, eta_i, eta_o);
@@ -288,6 +301,7 @@ DSPBR_FN DspbrSample dspbr_sample(DSPBR_IN(DspbrBsdf) b, vec3 v_in, vec3 u) {
   } else {
     float ux = clamp((u.x - cum) / p, 0.0f, 0.99999994f);
     DspbrFrame lf = chosen == DSPBR_LOBE_CLEARCOAT ? b.coat : b.core;
+    if (dspbr_on_horizon(dspbr_to_local(lf, v)) || dspbr_on_horizon(dspbr_to_local(b.core, v))) return out_s;
     vec3 lk, lw;
     if (!dspbr_lobe_sample(b, chosen, dspbr_to_local(lf, v), vec3(ux, u.y, u.z), eta_i, eta_o, lk, lw)) return out_s;
     l = normalize(dspbr_to_world(lf, lk));
