@@ -55,28 +55,20 @@ Judged judged(const Vector& x, const Result& r, const VectorVerdict& v) {
   return j;
 }
 
-const LutSet& cause_tables(const Cause& c, const Representation& base) {
-  if (c.tables != DemoTables::Renderer) return demo_table_set(c.tables);
-  return base.tables != nullptr ? *base.tables : LutSet::builtin();
-}
-
-// The reference made as `base` says plus the cause.
-MaterialBsdf cause_bsdf(const Vector& x, const Cause& c, const Representation& base) {
-  Material m = vector_material(x);
-  const uint32_t mask = active_components(m);
-  const double min_r = std::max(base.min_roughness, c.min_roughness);
-  m.roughness = std::max(m.roughness, min_r);
-  m.clearcoatRoughness = std::max(m.clearcoatRoughness, min_r);
-  BsdfOptions o = vector_options(x);
-  o.deviation = c.deviation;
-  return MaterialBsdf(m, cause_tables(c, base), o, mask);
+// The reference made as `base` says plus the cause (m: the vector's material, built once per vector).
+MaterialBsdf cause_bsdf(const Vector& x, const Material& m, const Cause& c, const Representation& base) {
+  Representation r = base;
+  if (c.tables != DemoTables::Renderer) r.tables = &demo_table_set(c.tables);
+  r.min_roughness = std::max(base.min_roughness, c.min_roughness);
+  return represented_bsdf(x, m, r, c.deviation);
 }
 
 OJson rgb_json(const Rgb& c) { return OJson::array({c.r, c.g, c.b}); }
 
 // Whether the results agree with the reference made with the cause (within the vector's tolerances).
-bool agrees(const Vector& x, const Result& r, const Judged& j, const Cause& c, const Representation& base) {
-  const MaterialBsdf b = cause_bsdf(x, c, base);
+bool agrees(const Vector& x, const Material& m, const Result& r, const Judged& j, const Cause& c,
+            const Representation& base) {
+  const MaterialBsdf b = cause_bsdf(x, m, c, base);
   if (j.f_cos && rgb_ratio(x.tolerance, *r.f_cos, b.eval(x.v, x.l) * std::abs(x.l.z)) > 1) return false;
   if (j.emission && rgb_ratio(x.emission_tolerance, *r.emission, b.emission(x.v)) > 1) return false;
   return true;
@@ -185,27 +177,26 @@ Diagnosis diagnose(const std::vector<Vector>& vectors, const std::vector<Result>
   // A vector whose expectations the reference (as `base`) does not reproduce, from an edited or
   // stale vector file, says nothing about causes: left out and counted (the eighth fresh tester's
   // pass: every cause "explained" glass vectors whose ior had been edited).
-  std::vector<char> unreproduced(n, 0);
+  // agree[i * nc + c]: vector i agrees with cause c (only for vectors judged on f cos or emission).
+  std::vector<char> unreproduced(n, 0), agree(n * nc, 0);
   const Cause none{"", "", "", ""};
   tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
     if (!j[i].failing && !j[i].passing) return;
     const Vector& x = vectors[i];
+    const Material m = vector_material(x);
     Result expected;
     expected.f_cos = x.f_cos;
     if (x.emission) expected.emission = *x.emission;
     Judged all = j[i];
     all.f_cos = true, all.emission = x.emission.has_value();
-    unreproduced[i] = agrees(x, expected, all, none, base) ? 0 : 1;
-  });
-  for (std::size_t i = 0; i < n; ++i)
-    if (unreproduced[i]) j[i] = Judged{};
-  // agree[i * nc + c]: vector i agrees with cause c (only for vectors judged on f cos or emission).
-  std::vector<char> agree(n * nc, 0);
-  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
-    if (!j[i].failing && !j[i].passing) return;
+    if (!agrees(x, m, expected, all, none, base)) {
+      unreproduced[i] = 1;
+      j[i] = Judged{};
+      return;
+    }
     for (std::size_t c = 0; c < nc; ++c)
       if (applies(vocabulary[c], base))
-        agree[i * nc + c] = agrees(vectors[i], results[i], j[i], vocabulary[c], base) ? 1 : 0;
+        agree[i * nc + c] = agrees(x, m, results[i], j[i], vocabulary[c], base) ? 1 : 0;
       else
         agree[i * nc + c] = j[i].passing ? 1 : 0;  // neither explains nor contradicts
   });
@@ -278,7 +269,7 @@ OJson vector_terms(const Vector& x, const Representation& base) {
   }
   OJson with_cause = OJson::object();
   for (const Cause& c : causes())
-    with_cause[c.name] = rgb_json(cause_bsdf(x, c, base).eval(x.v, x.l) * std::abs(x.l.z));
+    with_cause[c.name] = rgb_json(cause_bsdf(x, m, c, base).eval(x.v, x.l) * std::abs(x.l.z));
   return {{"components", std::move(components)}, {"tables", std::move(tables)}, {"with_cause", std::move(with_cause)}};
 }
 

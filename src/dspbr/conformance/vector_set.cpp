@@ -1,6 +1,7 @@
 #include "dspbr/conformance/vector_set.h"
 #include "dspbr/io/message.h"
 
+#include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -8,7 +9,6 @@
 #include <optional>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <filesystem>
 #include <functional>
@@ -468,23 +468,16 @@ std::vector<Case> builtin_cases() {
 // expected it and the shader library, in float, gave 0 or the largest float): a colour channel that
 // is not 0 but below the smallest normal float (1.2e-38), or an emitted luminance beyond the
 // largest float. "" when representable.
-std::string fmt_g(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
-
 std::string emission_float_problem(const Material& m) {
   if (!(m.emissionValue > 0)) return "";
   const double smallest = double(std::numeric_limits<float>::min()), largest = double(std::numeric_limits<float>::max());
   for (double c : {m.emissionColor.r, m.emissionColor.g, m.emissionColor.b})
     if (c > 0 && c < smallest)
-      return "emissionColor has a channel of " + fmt_g(c) +
+      return fmt::format("emissionColor has a channel of {:.3g}", c) +
              ", below the smallest normal float (1.2e-38): a float implementation reads 0 or loses its precision";
   const Rgb rho_e = emission_rho_e(m, 1.0);
   if (rho_e.max_component() > largest)
-    return "its emitted luminance " + fmt_g(rho_e.max_component()) +
-           " cd/m^2 is beyond the largest float (3.4e38)";
+    return fmt::format("its emitted luminance {:.3g} cd/m^2 is beyond the largest float (3.4e38)", rho_e.max_component());
   return "";
 }
 
@@ -591,17 +584,21 @@ Evaluation evaluate(const Vector& v, const LutSet& luts) {
   return {b.eval(v.v, v.l) * std::abs(v.l.z), b.pdf(v.v, v.l)};
 }
 
+MaterialBsdf represented_bsdf(const Vector& v, Material m, const Representation& r, Deviation deviation) {
+  const uint32_t mask = active_components(m);  // of the material as given (a clamp adds no component)
+  m.roughness = std::max(m.roughness, r.min_roughness);
+  m.clearcoatRoughness = std::max(m.clearcoatRoughness, r.min_roughness);
+  BsdfOptions o = vector_options(v);
+  o.deviation = deviation;
+  return MaterialBsdf(m, r.tables != nullptr ? *r.tables : LutSet::builtin(), o, mask);
+}
+
 void expect_with(std::vector<Vector>& vectors, const Representation& r) {
-  const LutSet& luts = r.tables != nullptr ? *r.tables : LutSet::builtin();
   // Each vector's material is built once per vector (as evaluate does): independent, so parallel.
   tbb::parallel_for(std::size_t(0), vectors.size(), [&](std::size_t i) {
     Vector& v = vectors[i];
     try {
-      Material m = vector_material(v);
-      const uint32_t mask = active_components(m);
-      m.roughness = std::max(m.roughness, r.min_roughness);
-      m.clearcoatRoughness = std::max(m.clearcoatRoughness, r.min_roughness);
-      const MaterialBsdf b(m, luts, vector_options(v), mask);
+      const MaterialBsdf b = represented_bsdf(v, vector_material(v), r);
       v.f_cos = b.eval(v.v, v.l) * std::abs(v.l.z);
       v.pdf = b.pdf(v.v, v.l);
       v.delta = delta_lobes(b, v.v);

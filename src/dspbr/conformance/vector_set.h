@@ -73,4 +73,10 @@ struct Representation {
 // invalid instance or options.
 void expect_with(std::vector<Vector>& vectors, const Representation& r);
 
+// The reference BSDF of vector `v` (material `m`, its vector_material) as an implementation with
+// that representation reads it: its tables, its roughness clamp, and the conformance diagnosis's
+// `deviation` (diagnosis.h) in the options. expect_with's and the diagnosis's one construction.
+MaterialBsdf represented_bsdf(const Vector& v, Material m, const Representation& r,
+                              Deviation deviation = Deviation::None);
+
 }  // namespace dspbr::conformance
