@@ -24,12 +24,12 @@ DSPBR_FN DspbrU64 dspbr_u64_shr(DspbrU64 a, uint n) {
   if (n >= 32u) return dspbr_u64(0u, n == 32u ? a.hi : a.hi >> (n - 32u));
   return dspbr_u64(a.hi >> n, (a.lo >> n) | (a.hi << (32u - n)));
 }
-// The full 64-bit product of two 32-bit words, from 16-bit halves.
+// The full 64-bit product of two 32-bit words (the interop's dspbr_umul_extended: GLSL's
+// umulExtended, a native 64-bit product in C++, 16-bit halves in HLSL).
 DSPBR_FN DspbrU64 dspbr_mul32(uint a, uint b) {
-  uint a0 = a & 0xFFFFu, a1 = a >> 16u, b0 = b & 0xFFFFu, b1 = b >> 16u;
-  uint p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
-  uint mid = (p00 >> 16u) + (p01 & 0xFFFFu) + (p10 & 0xFFFFu);
-  return dspbr_u64(p11 + (p01 >> 16u) + (p10 >> 16u) + (mid >> 16u), (p00 & 0xFFFFu) | (mid << 16u));
+  DspbrU64 r;
+  dspbr_umul_extended(a, b, r.hi, r.lo);
+  return r;
 }
 // The low 64 bits of a * b.
 DSPBR_FN DspbrU64 dspbr_u64_mul(DspbrU64 a, DspbrU64 b) {
@@ -49,12 +49,16 @@ struct DspbrPcg32 {
   DspbrU64 state;
   DspbrU64 inc;
 };
-DSPBR_FN uint dspbr_pcg32_next(DSPBR_INOUT(DspbrPcg32) g) {
-  DspbrU64 old = g.state;
-  g.state = dspbr_u64_add(dspbr_u64_mul(old, dspbr_u64(0x5851f42du, 0x4c957f2du)), g.inc);
+// The output of the step from state old (PCG XSH RR).
+DSPBR_FN uint dspbr_pcg32_output(DspbrU64 old) {
   uint x = dspbr_u64_shr(dspbr_u64_xor(dspbr_u64_shr(old, 18u), old), 27u).lo;
   uint rot = old.hi >> 27u;
   return (x >> rot) | (x << ((32u - rot) & 31u));
+}
+DSPBR_FN uint dspbr_pcg32_next(DSPBR_INOUT(DspbrPcg32) g) {
+  DspbrU64 old = g.state;
+  g.state = dspbr_u64_add(dspbr_u64_mul(old, dspbr_u64(0x5851f42du, 0x4c957f2du)), g.inc);
+  return dspbr_pcg32_output(old);
 }
 DSPBR_FN DspbrPcg32 dspbr_pcg32(DspbrU64 seed, DspbrU64 stream) {
   DspbrPcg32 g;
@@ -67,10 +71,31 @@ DSPBR_FN DspbrPcg32 dspbr_pcg32(DspbrU64 seed, DspbrU64 stream) {
   return g;
 }
 // The reference's next_double (two words, 53 bits) to the 24 bits a float holds: [0, 1 - 2^-24].
-DSPBR_FN float dspbr_pcg32_float(DSPBR_INOUT(DspbrPcg32) g) {
-  uint hi = dspbr_pcg32_next(g);
-  dspbr_pcg32_next(g);
-  return float(hi >> 8u) * (1.0f / 16777216.0f);
+// The number drawn at a state is its first word's (the second word only advances the state).
+DSPBR_FN float dspbr_pcg32_float_at(DspbrU64 state) { return float(dspbr_pcg32_output(state) >> 8u) * (1.0f / 16777216.0f); }
+
+// The LCG's state n steps on is A_n state + C_n inc, A_n = a^n, C_n = 1 + a + ... + a^(n-1) (mod
+// 2^64; Brown 1994, "Random Number Generation with Arbitrary Strides"): a flake's five numbers are
+// the states 0, 2, 4, 6, 8 steps after its first, the next flake's first 10 steps on. A probe needs
+// only the first two numbers of each flake (its position) and the best flake's other three, and the
+// jumps are independent of each other (the sequential generator is a chain of 40 dependent 64-bit
+// products per cell; 2 us of a car paint's prepare).
+DSPBR_FN DspbrU64 dspbr_lcg_a(int n) {
+  if (n == 2) return dspbr_u64(0x685f98a2u, 0x018fade9u);
+  if (n == 4) return dspbr_u64(0xfb4d3ae3u, 0x9272be11u);
+  if (n == 6) return dspbr_u64(0xf08d02b0u, 0x115f7a79u);
+  if (n == 8) return dspbr_u64(0xb59dda5fu, 0x38413d21u);
+  return dspbr_u64(0xc07a0e3eu, 0x901ef009u);  // n = 10
+}
+DSPBR_FN DspbrU64 dspbr_lcg_c(int n) {
+  if (n == 2) return dspbr_u64(0x5851f42du, 0x4c957f2eu);
+  if (n == 4) return dspbr_u64(0xcbb5f646u, 0x404a560cu);
+  if (n == 6) return dspbr_u64(0x30705b04u, 0x2917ec1au);
+  if (n == 8) return dspbr_u64(0x9a8b7f78u, 0xda6ef4d8u);
+  return dspbr_u64(0xab894868u, 0xb3b04fc6u);  // n = 10
+}
+DSPBR_FN DspbrU64 dspbr_lcg_jump(DspbrU64 state, DspbrU64 inc, int n) {
+  return dspbr_u64_add(dspbr_u64_mul(state, dspbr_lcg_a(n)), dspbr_u64_mul(inc, dspbr_lcg_c(n)));
 }
 
 // Omega_cone = 2 pi (1 - cos theta_cone) (spec "Flake BSDF"); alpha_cone^2 = min(Omega(cos 7 deg) /
@@ -96,26 +121,31 @@ DSPBR_FN float dspbr_frac(float x) {
 }
 DSPBR_FN float dspbr_sgn(float x) { return x < 0.0f ? -1.0f : 1.0f; }
 
-// The flakes of grid cell (ii, jj) (unwrapped; hashed modulo res) against the best found so far.
-DSPBR_FN void dspbr_flake_probe(int ii, int jj, int res, float gx, float gy, float coverage, DSPBR_INOUT(float) best_d2,
-                                DSPBR_INOUT(float) best_xi3, DSPBR_INOUT(float) best_xi4,
-                                DSPBR_INOUT(float) opacity) {
+// The flakes of grid cell (ii, jj) (unwrapped; hashed modulo res) against the best found so far:
+// its squared distance, and the state and increment of its cell's generator at its first number.
+struct DspbrFlakeBest {
+  float d2;
+  DspbrU64 state;
+  DspbrU64 inc;
+};
+DSPBR_FN void dspbr_flake_probe(int ii, int jj, int res, float gx, float gy, DSPBR_INOUT(DspbrFlakeBest) best) {
   // The cell modulo res (|offset| <= 2 < res: one wrap; no % of a negative number).
   int wi = ii < 0 ? ii + res : (ii >= res ? ii - res : ii);
   int wj = jj < 0 ? jj + res : (jj >= res ? jj - res : jj);
   DspbrPcg32 g = dspbr_pcg32(dspbr_u64(0u, uint(wi)), dspbr_u64(0u, uint(wj)));
+  DspbrU64 s = g.state;
+  DspbrU64 c2 = dspbr_u64_mul(g.inc, dspbr_lcg_c(2)), c10 = dspbr_u64_mul(g.inc, dspbr_lcg_c(10));
   for (int k = 0; k < 4; ++k) {  // k = 4 flakes per cell, 5 numbers each (spec generate_flake)
-    float xi1 = dspbr_pcg32_float(g), xi2 = dspbr_pcg32_float(g);
-    float xi3 = dspbr_pcg32_float(g), xi4 = dspbr_pcg32_float(g);
-    float xi5 = dspbr_pcg32_float(g);
+    float xi1 = dspbr_pcg32_float_at(s);
+    float xi2 = dspbr_pcg32_float_at(dspbr_u64_add(dspbr_u64_mul(s, dspbr_lcg_a(2)), c2));
     float dx = gx - (float(ii) + xi1), dy = gy - (float(jj) + xi2);
     float d2 = dx * dx + dy * dy;
-    if (d2 < best_d2) {
-      best_d2 = d2;
-      best_xi3 = xi3;
-      best_xi4 = xi4;
-      opacity = xi5 < coverage ? 1.0f : 0.0f;  // O_f(f, xi_5)
+    if (d2 < best.d2) {
+      best.d2 = d2;
+      best.state = s;
+      best.inc = g.inc;
     }
+    s = dspbr_u64_add(dspbr_u64_mul(s, dspbr_lcg_a(10)), c10);
   }
 }
 
@@ -144,17 +174,25 @@ DSPBR_FN DspbrFlake dspbr_flake_at(vec3 p, vec3 n, float coverage, float size_mm
   }
   float gx = u * float(res), gy = v * float(res);
   int i = min(int(floor(gx)), res - 1), j = min(int(floor(gy)), res - 1);
-  float best_d2 = 3.402823466e38f, xi3 = 0.0f, xi4 = 0.0f, opacity = 0.0f;
+  DspbrFlakeBest best;
+  best.d2 = 3.402823466e38f;
+  best.state = dspbr_u64(0u, 0u);
+  best.inc = dspbr_u64(0u, 0u);
   for (int di = -1; di <= 1; ++di)
-    for (int dj = -1; dj <= 1; ++dj) dspbr_flake_probe(i + di, j + dj, res, gx, gy, coverage, best_d2, xi3, xi4, opacity);
+    for (int dj = -1; dj <= 1; ++dj) dspbr_flake_probe(i + di, j + dj, res, gx, gy, best);
   // The 3x3 block is exact unless the nearest flake is farther than its border; 5x5 always is.
   float fx = gx - float(i), fy = gy - float(j);
   float margin = 1.0f + min(min(fx, 1.0f - fx), min(fy, 1.0f - fy));
-  if (best_d2 > margin * margin) {
+  if (best.d2 > margin * margin) {
     for (int di = -2; di <= 2; ++di)
       for (int dj = -2; dj <= 2; ++dj)
-        if (max(abs(di), abs(dj)) == 2) dspbr_flake_probe(i + di, j + dj, res, gx, gy, coverage, best_d2, xi3, xi4, opacity);
+        if (max(abs(di), abs(dj)) == 2) dspbr_flake_probe(i + di, j + dj, res, gx, gy, best);
   }
+  // The nearest flake's other numbers: orientation xi_3, xi_4 and opacity O_f(f, xi_5).
+  float xi3 = dspbr_pcg32_float_at(dspbr_lcg_jump(best.state, best.inc, 4));
+  float xi4 = dspbr_pcg32_float_at(dspbr_lcg_jump(best.state, best.inc, 6));
+  float xi5 = dspbr_pcg32_float_at(dspbr_lcg_jump(best.state, best.inc, 8));
+  float opacity = xi5 < coverage ? 1.0f : 0.0f;
   // K(r_f, xi_3, xi_4): cos^2 theta = (1 - xi) / (1 - (1 - alpha^2) xi), alpha = alpha_ggx =
   // sqrt(r_f^2 - alpha_cone^2) (spec eq. roughness-distribution).
   float a2 = max(0.0f, r_f * r_f - dspbr_flake_alpha_cone2(r_f));

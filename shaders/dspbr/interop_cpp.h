@@ -58,6 +58,12 @@ inline vec3 cross(vec3 a, vec3 b) {
 inline float length(vec3 a) { return std::sqrt(dot(a, a)); }
 inline vec3 normalize(vec3 a) { return a / length(a); }
 inline bool isnan(float x) { return std::isnan(x); }
+// GLSL's umulExtended: the 64-bit product of two 32-bit words as its high and low words.
+inline void dspbr_umul_extended(uint a, uint b, uint& hi, uint& lo) {
+  const unsigned long long p = (unsigned long long)a * b;
+  hi = uint(p >> 32u);
+  lo = uint(p);
+}
 inline bool isinf(float x) { return std::isinf(x); }
 
 }  // namespace dspbr_shader
