@@ -17,11 +17,10 @@ if(DSPBR_INSTALL)
   set(_dspbr_shader_dir ${CMAKE_INSTALL_DATADIR}/dspbr/shaders)
   install(TARGETS dspbr_shaders EXPORT dspbr_shadersTargets)
   install(EXPORT dspbr_shadersTargets NAMESPACE dspbr:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/dspbr)
+  # The generated lookups and fits beside the entries: DSPBR_SHADER_LOOKUPS (CMakeLists.txt).
   install(FILES ${PROJECT_SOURCE_DIR}/shaders/dspbr.h ${PROJECT_SOURCE_DIR}/shaders/dspbr.glsl
                 ${PROJECT_SOURCE_DIR}/shaders/dspbr.hlsl ${PROJECT_SOURCE_DIR}/shaders/README.md
-                ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.h ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.glsl
-                ${PROJECT_SOURCE_DIR}/luts/dspbr_lookup.hlsl ${PROJECT_SOURCE_DIR}/fits/dspbr_fits.hpp
-                ${PROJECT_SOURCE_DIR}/fits/dspbr_fits.glsl ${PROJECT_SOURCE_DIR}/fits/dspbr_fits.hlsl
+                ${DSPBR_SHADER_LOOKUPS}
           DESTINATION ${_dspbr_shader_dir})
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/shaders/dspbr ${PROJECT_SOURCE_DIR}/shaders/conformance
           DESTINATION ${_dspbr_shader_dir})

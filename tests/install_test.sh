@@ -22,6 +22,7 @@ for f in bin/dspbr lib/libdspbr_core.a lib/libdspbr_lutgen.a lib/libdspbr_format
          lib/cmake/dspbr/dspbrTargets.cmake lib/pkgconfig/dspbr.pc include/dspbr/bsdf/material_bsdf.h \
          lib/cmake/dspbr/dspbr_shadersTargets.cmake share/dspbr/shaders/dspbr.h share/dspbr/shaders/dspbr.glsl \
          share/dspbr/shaders/dspbr.hlsl share/dspbr/shaders/dspbr/bsdf.glsl share/dspbr/shaders/dspbr_lookup.glsl \
+         share/dspbr/shaders/dspbr_thin_film_lookup.h include/dspbr/luts/dspbr_thin_film_lookup.h \
          include/dspbr/version.h include/dspbr/luts/pbrlut.hpp include/dspbr/luts/dspbr_lookup.h \
          include/dspbr/luts/dspbr_lookup.glsl include/dspbr/luts/dspbr_lookup.hlsl \
          include/dspbr/luts/dspbr_glass_lookup.h include/dspbr/luts/dspbr_glass_lookup.glsl \

@@ -157,6 +157,7 @@ void run_renderer(const LutArgs& a, const LutOptions& opt, const LutFormats& for
                           renderer_json_text(luts, opt, a.renderer_scale));
   if (formats.exr || formats.png) write_renderer_images(luts, (fs::path(dir) / "renderer").string(), formats.half, kSplitSumSize,
                                                         opt.command);
+  if (formats.hpp) write_text_atomically((fs::path(dir) / thin_film_lookup_file_name()).string(), thin_film_lookup_code());
   if (formats.hpp)
     for (LookupDialect d : {LookupDialect::C, LookupDialect::Glsl, LookupDialect::Hlsl}) {
       write_text_atomically((fs::path(dir) / lookup_file_name(d)).string(), lookup_code(luts, d, provenance));
@@ -185,7 +186,7 @@ bool table_output(const std::string& name) {
   };
   return ends(".exr") || ends(".png") || name == "pbrlut.hpp" || name == "dspbr_luts.json" ||
          name == "dspbr_renderer_luts.json" || name.rfind("dspbr_lookup.", 0) == 0 ||
-         name.rfind("dspbr_glass_lookup.", 0) == 0;
+         name.rfind("dspbr_glass_lookup.", 0) == 0 || name == thin_film_lookup_file_name();
 }
 
 // Before the commit: the folder must not keep files of an earlier table set that this set does not
@@ -333,7 +334,7 @@ void add_lut_command(CLI::App& app) {
   auto* layout_opt = cmd->add_option("--layout", args->layouts,
                   "Comma-separated layouts: published (the published grids: EXR, pbrlut.hpp, dspbr_luts.json) and "
                   "renderer (warped grids, Catmull-Rom lookups: dspbr_renderer_luts.json, renderer/*.exr|png, "
-                  "dspbr_lookup.h|glsl|hlsl); default: both, or published alone with --tables/--scene/--size/--grid");
+                  "dspbr_lookup.h|glsl|hlsl, the thin film's dspbr_thin_film_lookup.h); default: both, or published alone with --tables/--scene/--size/--grid");
   auto* scale_opt = cmd->add_option("--renderer-scale", args->renderer_scale,
                   "Renderer layout: (N - 1) * scale + 1 samples per axis of the default N (default: 1)")
       ->transform(decimal_integer(1, 16, "a scale"));

@@ -60,8 +60,81 @@ DSPBR_FN float dspbr_cmf_edge(int e) {
   return 830.0f;
 }
 
-// R as linear sRGB in [0, 1] (E-white normalised XYZ -> Bradford to D65 -> IEC 61966-2-1 sRGB,
-// rows scaled so that XYZ = (1, 1, 1) maps to (1, 1, 1), as the reference's colour transform).
+// E-white normalised XYZ -> Bradford to D65 -> IEC 61966-2-1 linear sRGB, rows scaled so that
+// XYZ = (1, 1, 1) maps to (1, 1, 1), as the reference's colour transform; clamped to [0, 1].
+DSPBR_FN vec3 dspbr_thin_film_rgb(vec3 xyz) {
+  vec3 rgb = vec3(3.146250862f * xyz.x - 1.666123795f * xyz.y - 0.480127066f * xyz.z,
+                  -0.995535012f * xyz.x + 1.955763473f * xyz.y + 0.039771539f * xyz.z,
+                  0.063597844f * xyz.x - 0.214596549f * xyz.y + 1.150998705f * xyz.z);
+  return vec3(clamp(rgb.x, 0.0f, 1.0f), clamp(rgb.y, 0.0f, 1.0f), clamp(rgb.z, 0.0f, 1.0f));
+}
+
+#ifdef DSPBR_THIN_FILM_S_SAMPLES
+// With the spectral sensitivity table (dspbr_thin_film_lookup.h, included by the C++ entry): the
+// spectral integral in Fourier space (BB17 sec. 4), as the reference's thin_film_fourier.cpp. Per
+// polarisation, with the real amplitudes a = r12, b = r23 and K = (1 - a^2)(1 - b^2) / (1 - a^2 b^2),
+// |r|^2 = 1 - K (1 + 2 Sum_{m>=1} (-a b)^m cos(m phi)) (the Poisson kernel), and the spectral mean of
+// cos(m phi) is Re S_c(m P), P the phase times lambda. False where the series needs more than
+// dspbr_film_max_terms terms (|a b| near 1: grazing over a strongly reflecting base): the caller
+// integrates per wavelength.
+DSPBR_CONST int dspbr_film_max_terms = 64;
+// The series stops when the bound of the remaining terms, 2 K |a b|^m / (1 - |a b|), is below this
+// (float's resolution of R; the reference sums to 1e-7 in double).
+DSPBR_CONST float dspbr_film_series_tolerance = 1e-7f;
+// The envelope E_c(x) = S_c(x) exp(-i x nu_c) at 0 <= x < DSPBR_THIN_FILM_S_X_END (Catmull-Rom).
+DSPBR_FN void dspbr_thin_film_envelope(float x, DSPBR_OUT(vec3) re, DSPBR_OUT(vec3) im) {
+  float g = x / DSPBR_THIN_FILM_S_STEP;
+  int k = min(int(g), DSPBR_THIN_FILM_S_SAMPLES - 4);  // samples k .. k + 3 hold x = (k - 1 .. k + 2) STEP
+  float f = g - float(k), f2 = f * f, f3 = f2 * f;
+  float w0 = 0.5f * (-f3 + 2.0f * f2 - f), w1 = 0.5f * (3.0f * f3 - 5.0f * f2 + 2.0f);
+  float w2 = 0.5f * (-3.0f * f3 + 4.0f * f2 + f), w3 = 0.5f * (f3 - f2);
+  re = vec3(0.0f, 0.0f, 0.0f);
+  im = vec3(0.0f, 0.0f, 0.0f);
+  for (int j = 0; j < 4; ++j) {
+    float w = j == 0 ? w0 : (j == 1 ? w1 : (j == 2 ? w2 : w3));
+    re += vec3(dspbr_thin_film_S_at(k + j, 0), dspbr_thin_film_S_at(k + j, 1), dspbr_thin_film_S_at(k + j, 2)) * w;
+    im += vec3(dspbr_thin_film_S_at(k + j, 3), dspbr_thin_film_S_at(k + j, 4), dspbr_thin_film_S_at(k + j, 5)) * w;
+  }
+}
+DSPBR_FN bool dspbr_thin_film_fourier_xyz(float r12s, float r23s, float r12p, float r23p, float phase_nm,
+                                          DSPBR_OUT(vec3) xyz) {
+  xyz = vec3(0.0f, 0.0f, 0.0f);
+  float qs = -r12s * r23s, qp = -r12p * r23p;  // the series' ratios (-a b)
+  float ks = (1.0f - r12s * r12s) * (1.0f - r23s * r23s) / (1.0f - qs * qs);
+  float kp = (1.0f - r12p * r12p) * (1.0f - r23p * r23p) / (1.0f - qp * qp);
+  if (!(abs(qs) < 1.0f) || !(abs(qp) < 1.0f)) return false;
+  float tail_s = 2.0f * ks / (1.0f - abs(qs)), tail_p = 2.0f * kp / (1.0f - abs(qp));
+  // S_c(m P) = E_c(m P) z_c^m, z_c = exp(i P nu_c), z_c^m by rotation.
+  vec3 z_re = vec3(cos(phase_nm * dspbr_thin_film_S_nu[0]), cos(phase_nm * dspbr_thin_film_S_nu[1]),
+                   cos(phase_nm * dspbr_thin_film_S_nu[2]));
+  vec3 z_im = vec3(sin(phase_nm * dspbr_thin_film_S_nu[0]), sin(phase_nm * dspbr_thin_film_S_nu[1]),
+                   sin(phase_nm * dspbr_thin_film_S_nu[2]));
+  vec3 zm_re = vec3(1.0f, 1.0f, 1.0f), zm_im = vec3(0.0f, 0.0f, 0.0f);
+  vec3 acc_s = vec3(0.0f, 0.0f, 0.0f), acc_p = vec3(0.0f, 0.0f, 0.0f);
+  float qms = 1.0f, qmp = 1.0f;
+  for (int m = 1; m <= dspbr_film_max_terms; ++m) {
+    float x = float(m) * phase_nm;
+    if (!(x < DSPBR_THIN_FILM_S_X_END)) break;  // S_c = 0 from here on
+    vec3 e_re, e_im;
+    dspbr_thin_film_envelope(x, e_re, e_im);
+    vec3 r = zm_re * z_re - zm_im * z_im;
+    zm_im = zm_re * z_im + zm_im * z_re;
+    zm_re = r;
+    vec3 s_re = e_re * zm_re - e_im * zm_im;  // Re S_c(m P)
+    qms *= qs;
+    qmp *= qp;
+    acc_s += s_re * qms;
+    acc_p += s_re * qmp;
+    if (max(tail_s * abs(qms * qs), tail_p * abs(qmp * qp)) < dspbr_film_series_tolerance) break;
+    if (m == dspbr_film_max_terms) return false;
+  }
+  vec3 one = vec3(1.0f, 1.0f, 1.0f);
+  xyz = one - (ks * (one + acc_s * 2.0f) + kp * (one + acc_p * 2.0f)) * 0.5f;
+  return true;
+}
+#endif
+
+// R as linear sRGB in [0, 1] (dspbr_thin_film_rgb of the spectral mean).
 DSPBR_FN vec3 dspbr_thin_film_reflectance(float cos_theta, float eta_base, float thickness_um, float eta_film) {
   float c1 = min(1.0f, abs(cos_theta));
   if (eta_base < 0.0f) return dspbr_splat(1.0f);
@@ -76,6 +149,10 @@ DSPBR_FN vec3 dspbr_thin_film_reflectance(float cos_theta, float eta_base, float
   float r23s = (eta_film * c2 - eta_base * c3) / (eta_film * c2 + eta_base * c3);
   float r23p = (eta_base * c2 - eta_film * c3) / (eta_base * c2 + eta_film * c3);
   float phase_nm = 4.0f * dspbr_pi * eta_film * (thickness_um * 1000.0f) * c2;
+#ifdef DSPBR_THIN_FILM_S_SAMPLES
+  vec3 xyz_fourier;
+  if (dspbr_thin_film_fourier_xyz(r12s, r23s, r12p, r23p, phase_nm, xyz_fourier)) return dspbr_thin_film_rgb(xyz_fourier);
+#endif
   // Panel width: the coarsest of 16, 8, ..., 1/16 nm on which the phase turns by at most two
   // resonance widths (1 - |r12 r23|) per panel at 360 nm (the reference's rule ladder, which goes
   // on to 1/64 nm; here 1/16 nm bounds a call to 7520 panels, 2 ms in C++ on this machine).
@@ -121,9 +198,5 @@ DSPBR_FN vec3 dspbr_thin_film_reflectance(float cos_theta, float eta_base, float
       }
     }
   }
-  xyz = xyz / norm;
-  vec3 rgb = vec3(3.146250862f * xyz.x - 1.666123795f * xyz.y - 0.480127066f * xyz.z,
-                  -0.995535012f * xyz.x + 1.955763473f * xyz.y + 0.039771539f * xyz.z,
-                  0.063597844f * xyz.x - 0.214596549f * xyz.y + 1.150998705f * xyz.z);
-  return vec3(clamp(rgb.x, 0.0f, 1.0f), clamp(rgb.y, 0.0f, 1.0f), clamp(rgb.z, 0.0f, 1.0f));
+  return dspbr_thin_film_rgb(xyz / norm);
 }

@@ -8,6 +8,9 @@
 // (thin_film_metal_eta). Both polarizations are summed coherently inside the film (Airy) and
 // averaged incoherently (unpolarized light).
 #pragma once
+#include <array>
+#include <vector>
+
 #include "dspbr/material.h"
 #include "dspbr/vec3.h"
 
@@ -61,6 +64,18 @@ Rgb thin_film_reflectance(double cos_theta, double eta_base, double thickness_um
 inline Rgb thin_film_reflectance(double cos_theta, double eta_base, const Material& m) {
   return thin_film_reflectance(cos_theta, eta_base, m.thinFilmThickness, m.thinFilmIor);
 }
+
+// The tabulated sensitivity of the Fourier evaluation, for the shader library's copy
+// (luts/dspbr_thin_film_lookup.h): S_c(x) = E_c(x) exp(i x nu_c), the envelope E_c sampled every
+// `step` rad nm (x = phase times lambda) from x = -step (the ghost sample E_c(-x) = conj(E_c(x)));
+// sample k holds Re E_X, Re E_Y, Re E_Z, Im E_X, Im E_Y, Im E_Z at x = (k - 1) step; S_c = 0 from
+// x_end on. Catmull-Rom between samples.
+struct ThinFilmSensitivity {
+  double step = 0, x_end = 0;
+  double nu[3] = {0, 0, 0};
+  std::vector<std::array<double, 6>> samples;
+};
+const ThinFilmSensitivity& thin_film_sensitivity();
 
 // Wyman, Sloan & Shirley 2013 multi-lobe fit of the CIE 1931 2 deg colour-matching functions
 // (x_bar, y_bar, z_bar at lambda in nm), exposed for tests and plots.

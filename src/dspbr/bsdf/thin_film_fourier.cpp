@@ -198,4 +198,18 @@ bool try_fourier_xyz(double c1, double eta_base, double thickness_um, double eta
 
 }  // namespace thin_film_detail
 
+const ThinFilmSensitivity& thin_film_sensitivity() {
+  static const ThinFilmSensitivity t = [] {
+    const Sensitivity& s = sensitivity();
+    ThinFilmSensitivity out;
+    out.step = kSensitivityStep;
+    out.x_end = s.x_end;
+    for (int c = 0; c < 3; ++c) out.nu[c] = s.nu[c];
+    for (const EnvelopeSample& e : s.samples)
+      out.samples.push_back({e.re[0], e.re[1], e.re[2], e.im[0], e.im[1], e.im[2]});
+    return out;
+  }();
+  return t;
+}
+
 }  // namespace dspbr

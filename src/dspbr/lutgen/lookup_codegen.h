@@ -54,4 +54,11 @@ const char* lookup_file_name(LookupDialect dialect);
 std::string glass_lookup_code(const RendererLuts& luts, LookupDialect dialect, const std::string& provenance);
 const char* glass_lookup_file_name(LookupDialect dialect);
 
+// The thin film's spectral sensitivity (bsdf/thin_film.h, ThinFilmSensitivity) for the shader
+// library's C++ compile, dspbr_thin_film_lookup.h (C99 / C++): DSPBR_THIN_FILM_S_SAMPLES,
+// _STEP, _X_END, dspbr_thin_film_S_nu[3] and dspbr_thin_film_S_at(k, i) (sample k, value i of the
+// six), in float. Not a table of `dspbr lut`'s settings: the same for every run.
+std::string thin_film_lookup_code();
+const char* thin_film_lookup_file_name();
+
 }  // namespace dspbr
