@@ -14,6 +14,8 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <atomic>
+#include <thread>
 #include <stdexcept>
 #include <string>
 
@@ -83,6 +85,39 @@ TEST(OutputFolder, TheDestructorDiscards) {
     write(fs::path(out.staging()) / "t.json", "unfinished");
   }
   EXPECT_FALSE(fs::exists(dir));
+}
+
+// An interrupt discards while the run's thread still writes into the staging folder: discard()
+// stops the writers first (the hook), then removes; a file created while the removal listed the
+// folder had kept it (the tenth fresh tester's pass: an interrupted `shader`).
+TEST(OutputFolder, DiscardStopsTheWritersBeforeRemoving) {
+  int hooks = 0;
+  for (int round = 0; round < 40; ++round) {
+    const fs::path dir = fresh("writers");
+    OutputFolder out(dir.string(), "--out");
+    const std::string staging = out.staging();
+    std::atomic<bool> stop{false};
+    std::thread writer([&] {
+      for (int i = 0; !stop.load(); ++i) {
+        std::ofstream(fs::path(staging) / ("f" + std::to_string(i % 64))) << i;
+        std::error_code ec;
+        fs::create_directories(fs::path(staging) / "plots", ec);
+      }
+    });
+    std::this_thread::sleep_for(std::chrono::microseconds(200 * (round % 5)));
+    out.discard([&] {
+      ++hooks;
+      EXPECT_TRUE(fs::exists(staging));  // nothing removed yet
+      stop = true;
+      writer.join();
+    });
+    stop = true;  // (a discard that did not call the hook left the writer running until here)
+    if (writer.joinable()) writer.join();
+    EXPECT_FALSE(fs::exists(staging)) << "round " << round;
+    EXPECT_FALSE(fs::exists(dir)) << "round " << round;
+    fs::remove_all(dir);
+  }
+  EXPECT_EQ(hooks, 40);
 }
 
 // A symbolic link planted at an output name points at a file the run must not touch.

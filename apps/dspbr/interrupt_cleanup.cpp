@@ -32,6 +32,19 @@ std::atomic<pid_t> g_child{0};  // watch_child
 constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE};
 constexpr std::size_t kSignalCount = sizeof kSignals / sizeof kSignals[0];
 
+// The thread that runs the command (the one that made the InterruptCleanup) keeps writing into
+// the staging folder while the watcher removes it: a file it created an instant after the removal
+// listed the folder kept the folder (the tenth fresh tester's pass: an interrupted `shader` left
+// its staging folder with a complete header in it). Before removing anything the watcher parks it
+// in this handler of its own signal, where it waits for the watcher's _exit.
+std::atomic<bool> g_parked{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "the park handler stores an atomic bool");
+extern "C" void on_park(int) {
+  g_parked.store(true);
+  for (;;) ::pause();
+}
+int park_signal() { return SIGRTMIN + 1; }
+
 extern "C" void on_signal(int sig) {
   const unsigned char byte = static_cast<unsigned char>(sig);
   if (g_pipe_write >= 0) {
@@ -66,6 +79,8 @@ struct InterruptCleanup::State {
   std::mutex opening;                 // held while the folder is being created
   std::optional<OutputFolder> out;    // empty until created (or when creating it failed: nothing left)
   int pipe_read = -1, pipe_write = -1;
+  pthread_t runner{};                 // the thread that writes the outputs
+  struct sigaction old_park {};
   struct sigaction old_actions[kSignalCount] {};
   sigset_t old_mask{};
   std::thread watcher;
@@ -78,7 +93,16 @@ struct InterruptCleanup::State {
     if (n != 1 || sig == 0) return;  // closed or told to stop
     if (const pid_t child = g_child.load(); child > 0) stop_child_group(child, sig);  // it may write into the staging folder
     const std::lock_guard<std::mutex> lock(opening);  // wait for a folder being created
-    const std::string what = out ? out->discard() : "nothing was written";
+    // Parks the runner once no commit is in progress (a commit under way completes first); waits
+    // for it up to 2 s (it may be in a system call that ends only then).
+    const auto park_runner = [this] {
+      if (::pthread_kill(runner, park_signal()) != 0) return;
+      for (int i = 0; i < 2000 && !g_parked.load(); ++i) {
+        const timespec one_ms{0, 1000 * 1000};
+        ::nanosleep(&one_ms, nullptr);
+      }
+    };
+    const std::string what = out ? out->discard(park_runner) : "nothing was written";
     const char* abbrev = sigabbrev_np(sig);
     std::fprintf(stderr, "dspbr: interrupted (SIG%s): %s\n", abbrev ? abbrev : "?", what.c_str());
     std::fflush(stderr);
@@ -95,6 +119,11 @@ InterruptCleanup::InterruptCleanup(const std::string& dir, const std::string& op
   ::fcntl(fds[1], F_SETFD, FD_CLOEXEC);
   s.pipe_read = fds[0];
   s.pipe_write = g_pipe_write = fds[1];
+  s.runner = ::pthread_self();
+  struct sigaction park {};
+  park.sa_handler = on_park;
+  sigemptyset(&park.sa_mask);
+  sigaction(park_signal(), &park, &s.old_park);
   s.watcher = std::thread([&s] { s.watch(); });
   struct sigaction sa {};
   sa.sa_handler = on_signal;
@@ -106,6 +135,7 @@ InterruptCleanup::InterruptCleanup(const std::string& dir, const std::string& op
     sigaction(kSignals[i], &sa, &s.old_actions[i]);
     sigaddset(&all, kSignals[i]);
   }
+  sigaddset(&all, park_signal());
   // A signal that arrived before (blocked by the parent, pending) is handled now, before anything
   // is created.
   pthread_sigmask(SIG_UNBLOCK, &all, &s.old_mask);
@@ -136,6 +166,7 @@ void InterruptCleanup::stop() {
   const unsigned char stop = 0;
   if (::write(s.pipe_write, &stop, 1) != 1) s.watcher.detach();  // cannot wake it: let it end with the process
   if (s.watcher.joinable()) s.watcher.join();
+  sigaction(park_signal(), &s.old_park, nullptr);  // after the watcher: it no longer parks anyone
   g_pipe_write = -1;
   ::close(s.pipe_read);
   ::close(s.pipe_write);

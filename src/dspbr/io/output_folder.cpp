@@ -193,10 +193,11 @@ std::vector<std::string> OutputFolder::commit() {
   return files;
 }
 
-std::string OutputFolder::discard() {
+std::string OutputFolder::discard(const std::function<void()>& stop_writers) {
   State& s = *state_;
   const std::lock_guard<std::mutex> lock(s.mutex);
   if (s.done) return "the outputs were in place already";
+  if (stop_writers) stop_writers();
   return s.remove_own();
 }
 

@@ -7,6 +7,7 @@
 // replaces a symbolic link rather than following it, and a sub-folder that is a symbolic link is
 // refused.
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,8 +36,10 @@ class OutputFolder {
 
   // Removes the staging folder and the folders the constructor created (when empty); says what
   // it did ("nothing was written", "removed ..."). Thread-safe (an interrupt handler calls it
-  // while the run writes); a no-op after commit().
-  std::string discard();
+  // while the run writes); a no-op after commit(). `stop_writers`, when given, runs first, once no
+  // commit is in progress: it must stop every thread that may still write into the staging folder
+  // (a file created while the folder is being removed would keep it).
+  std::string discard(const std::function<void()>& stop_writers = {});
 
  private:
   struct State;
