@@ -374,6 +374,32 @@ TEST(Untrusted, EmptyListsAreRefused) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
+// `fit --only` keeps the other fits' documents of --out: a malformed one is bad input (exit 2),
+// named before any fit runs, and the folder stays as it was (the tenth fresh tester's pass: exit 1,
+// after the whole fit).
+TEST(Untrusted, FitOnlyReadsTheKeptDocumentsFirst) {
+  const fs::path dir = fresh("fit_only_kept");
+  write(dir / "albedo.json", "{\"bad\": ");
+  const ToolRun r = run_dspbr("fit --quick --only flake_roughness --threads 1 --out " + dir.string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("albedo.json: malformed JSON"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("flake_roughness:"), std::string::npos) << "the fit ran first: " << r.output;
+  std::size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(dir)) entries += e.path().filename() == "albedo.json" ? 0 : 1;
+  EXPECT_EQ(entries, 0u);
+}
+
+// A scene whose materials need no table: `lut --scene` says so naming the scene, exit 0, writes
+// nothing (as `shader --scene`; it was "no tables selected", exit 2: the tenth fresh tester's pass).
+TEST(Untrusted, LutForASceneWithoutMaterials) {
+  const fs::path dir = fresh("lut_no_materials");
+  write(dir / "none.gltf", R"({"asset": {"version": "2.0"}, "materials": []})");
+  const ToolRun r = run_dspbr("lut --scene " + (dir / "none.gltf").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("none.gltf: its materials need no tables; nothing written"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 // A stray comma in a list option is refused, whole value quoted (found by the third fresh tester's
 // pass: eval/shader --components, fit --only and check --groups/--components took "a," as "a").
 TEST(Untrusted, StrayCommasInListsAreRefused) {

@@ -222,8 +222,9 @@ void add_conformance_command(CLI::App& app) {
                   "clearcoat, sheen, ...)");
   add_representation_options(chk, c->representation);
   chk->add_flag("--require-all", c->require_all,
-                "Every vector needs a result (by default a vector without one, or a quantity left out or null, "
-                "is NOT SUPPLIED and not judged)");
+                "Every vector judged needs a result with its f_cos (by default a vector without one is NOT "
+                "SUPPLIED and not judged); the other quantities (pdf, albedo, emission, delta) left out or null "
+                "are NOT SUPPLIED either way, and counted in the summary");
   chk->callback([c] { run_check(*c); });
 
   auto r = std::make_shared<ReferenceArgs>();

@@ -3,6 +3,7 @@
 // domain, error statistics, command and settings; built by fit/fit_documents.h) and
 // fits/dspbr_fits.hpp generated from them.
 // Deterministic: the same command and seed give the same bytes whatever --threads.
+#include <algorithm>
 #include <fmt/format.h>
 
 #include <chrono>
@@ -72,7 +73,7 @@ json read_json_if_exists(const fs::path& p) {
   try {
     return read_json_file(p.string(), "fit document", limits::kDocumentBytes);
   } catch (const std::exception& e) {
-    throw std::runtime_error(std::string(e.what()) + "; delete it or rerun without --only");
+    throw UsageError(std::string(e.what()) + "; delete it or rerun without --only");
   }
 }
 
@@ -102,6 +103,12 @@ void run(const FitArgs& a, const std::string& command_line) {
   // Written into a private staging folder inside --out, moved into place once complete.
   InterruptCleanup cleanup(a.out);  // the handlers first, then the folder
   OutputFolder& out = cleanup.out();
+  // The earlier run's documents that --only keeps are read before any fit runs: a malformed one is
+  // bad input (exit 2) found in a moment, not after minutes of fitting (the tenth fresh tester's pass).
+  std::map<std::string, json> kept;
+  for (const char* name : {"sheen_lambda", "albedo", "flake_roughness"})
+    if (std::find(names.begin(), names.end(), name) == names.end())
+      kept[name] = read_json_if_exists(fs::path(a.out) / (std::string(name) + ".json"));
   fit::FitContext ctx;
   ctx.threads = a.threads;
   ctx.seed = a.seed;
@@ -124,7 +131,7 @@ void run(const FitArgs& a, const std::string& command_line) {
   progress.finish();
   // The header always reflects every document: this run's, else the one already in --out.
   auto document = [&](const std::string& name) {
-    return docs.count(name) ? docs[name] : read_json_if_exists(fs::path(a.out) / (name + ".json"));
+    return docs.count(name) ? docs[name] : kept[name];
   };
   const json sl = document("sheen_lambda"), al = document("albedo"), fl = document("flake_roughness");
   const fs::path dir(out.staging());

@@ -116,6 +116,9 @@ LutOptions to_options(const LutArgs& a) {
   opt.threads = a.threads;
   opt.progress = !a.quiet;
   opt.command = reproducible_command();
+  // A scene whose materials need no table is not an error: run_generate says so (as `shader
+  // --scene` does; the tenth fresh tester's pass: "no tables selected", naming no file).
+  if (!a.scene.empty() && opt.tables.empty() && opt.sizes.empty()) return opt;
   try {
     validate_lut_options(opt);
   } catch (const std::invalid_argument& e) {
@@ -221,7 +224,7 @@ void run_generate(const LutArgs& a) {
   const LutOptions opt = to_options(a);
   const LutFormats formats = to_formats(a);
   if (opt.tables.empty()) {
-    std::printf("the scene needs no tables; nothing written\n");
+    std::printf("%s: its materials need no tables; nothing written\n", a.scene.c_str());
     return;
   }
   bool published = false, renderer = false;
