@@ -182,6 +182,25 @@ def test_outputs_its_own_tools_would_refuse_are_refused(vectors, tmp_path):
     assert not (tmp_path / "big").exists()
 
 
+def test_report_labels_escape_control_characters(tmp_path):
+    # A group named with an escape sequence: the report is written and nothing raw reaches stderr
+    # (matplotlib warned about the missing glyph, quoting it; the tenth fresh tester's pass).
+    code, _, err = run_cli("conformance", "generate", "--directions", 1, "--no-albedo", "--no-scenes", "--out",
+                           tmp_path / "v")
+    assert code == 0, err
+    doc = json.loads((tmp_path / "v" / "vectors.json").read_text())
+    for i, v in enumerate(doc["vectors"]):
+        v["group"] = "x\x1b[31mred\x07" if i % 2 else "plain"
+    (tmp_path / "edited.json").write_text(json.dumps(doc))
+    code, _, err = run_cli("conformance", "reference", tmp_path / "edited.json", "--out", tmp_path / "r.json")
+    assert code == 0, err
+    code, out, err = run_cli("conformance", "check", tmp_path / "edited.json", tmp_path / "r.json", "--out",
+                             tmp_path / "report")
+    assert code == 0, (out, err)
+    assert (tmp_path / "report" / "plots" / "ratio_by_group.png").is_file()
+    assert "\x1b" not in err and "\x07" not in err and "Warning" not in err, err
+
+
 def test_report_of_many_groups_and_long_names(tmp_path):
     # A vector file with 60 groups, one named in 5000 characters, one "$\frac{$": the HTML report's
     # plots show the 40 worst groups with shortened, escaped labels (the plotting library refused the figure and the whole report
