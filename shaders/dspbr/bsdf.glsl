@@ -194,8 +194,8 @@ struct DspbrSide {
 };
 DSPBR_FN DspbrSide dspbr_side(DSPBR_IN(DspbrBsdf) b, vec3 v_in, vec3 l_in) {
   DspbrSide s;
-  s.v = dspbr_to_local(b.frame, v_in);
-  s.l = dspbr_to_local(b.frame, l_in);
+  s.v = dspbr_to_local(b.frame, dspbr_unit_direction(v_in));
+  s.l = dspbr_to_local(b.frame, dspbr_unit_direction(l_in));
   bool back = dspbr_back_side(b, s.v);
   if (back) {
     s.v = -s.v;
@@ -266,7 +266,7 @@ DSPBR_FN bool dspbr_lobe_sample(DSPBR_IN(DspbrBsdf) b, int k, vec3 vk, vec3 u, f
 // rescaled, by the diffuse lobe's choice of side), u.y and u.z the direction.
 DSPBR_FN DspbrSample dspbr_sample(DSPBR_IN(DspbrBsdf) b, vec3 v_in, vec3 u) {
   DspbrSample out_s = dspbr_failed_sample();
-  vec3 v = dspbr_to_local(b.frame, v_in);
+  vec3 v = dspbr_to_local(b.frame, dspbr_unit_direction(v_in));
   bool back = dspbr_back_side(b, v);
   if (back) v = -v;
   float eta_i = dspbr_eta_i(b, back), eta_o = dspbr_eta_o(b, back);
@@ -329,7 +329,7 @@ DSPBR_FN DspbrSample dspbr_sample(DSPBR_IN(DspbrBsdf) b, vec3 v_in, vec3 u) {
 // cut-out opacity (spec "Emission"; cd/m^2).
 DSPBR_FN vec3 dspbr_emission(DSPBR_IN(DspbrBsdf) b, vec3 v_in) {
   if (DSPBR_HAS_EMISSION == 0 || !(dspbr_max3(b.rho_e) > 0.0f)) return dspbr_splat(0.0f);
-  vec3 vc = dspbr_to_local(b.core, dspbr_to_local(b.frame, v_in));
+  vec3 vc = dspbr_to_local(b.core, dspbr_to_local(b.frame, dspbr_unit_direction(v_in)));
   if (!(vc.z > 0.0f)) return dspbr_splat(0.0f);
   float fc = dspbr_clearcoat_fresnel(dot(vc, dspbr_to_local(b.core, b.coat.n)));
   return b.rho_e * ((1.0f - b.clearcoat * fc) * b.alpha_cut);

@@ -85,6 +85,20 @@ DSPBR_FN DspbrFrame dspbr_frame_from_normal_tangent(vec3 n, vec3 tangent) {
   f.b = cross(n, f.t);
   return f;
 }
+// A direction given to eval, pdf, sample or emission made unit (the renderer's need not be: the
+// lobes assume it, and a volume of ior 1e20 seen along v of length 2.8 sampled NaN weights; the
+// tenth fresh tester's pass); a zero, NaN or infinite one is the zero vector, which has no value.
+// A direction whose squared length is within 1e-5 of 1 (every unit vector rounded to float, ~3e-7)
+// is used as it is: renormalising it would move it by an ulp, and a sample's direction handed back
+// to pdf must give the density the sample reported (sharp lobes differ within an ulp).
+DSPBR_CONST float dspbr_unit_tolerance = 1e-5f;
+DSPBR_FN vec3 dspbr_unit_direction(vec3 w) {
+  float len2 = dot(w, w);
+  if (abs(len2 - 1.0f) <= dspbr_unit_tolerance) return w;
+  float len = sqrt(len2);
+  if (!(len > 0.0f) || isinf(len)) return vec3(0.0f, 0.0f, 0.0f);
+  return w / len;
+}
 // A material normal made unit; a zero, NaN or infinite one is +z (the unperturbed normal).
 DSPBR_FN vec3 dspbr_unit_normal(vec3 n) {
   float len = length(n);
