@@ -352,6 +352,36 @@ TEST(ShaderLibrary, DirectionsOfAnyLengthAsUnitOnes) {
     }
   }
   EXPECT_GT(samples, 200);
+  // Lengths whose square leaves the float range are scaled first: the same values as unit ones
+  // (the eleventh fresh tester's pass: 1e20 and 1e-30 gave f = pdf = 0).
+  Material metal;
+  metal.metallic = 1, metal.roughness = 0.5;
+  const shader_test::ShaderBsdf mb(metal, BsdfOptions{});
+  const vec3 vu = vec3(0.3f, 0.2f, 0.9f) / std::sqrt(0.94f), lu = vec3(-0.3f, -0.2f, 0.9f) / std::sqrt(0.94f);
+  const vec3 f_unit = dspbr_shader::dspbr_eval(mb.prepared(), vu, lu);
+  ASSERT_GT(f_unit.x, 0.0f);
+  for (float scale : {1e-30f, 1e-40f, 1e20f, 1e30f, 3e38f}) {
+    EXPECT_NEAR(dspbr_shader::dspbr_eval(mb.prepared(), vu * scale, lu * scale).x, f_unit.x, 1e-5f * f_unit.x) << scale;
+    EXPECT_NEAR(dspbr_shader::dspbr_pdf(mb.prepared(), vu * scale, lu * scale), dspbr_shader::dspbr_pdf(mb.prepared(), vu, lu),
+                1e-5f * dspbr_shader::dspbr_pdf(mb.prepared(), vu, lu)) << scale;
+  }
+  // No valid sample without a direction: a view of no length (or NaN, Inf) through a cut-out, and
+  // a refraction at exactly normal incidence from inside a volume of ior 1e8..3e38 (l was 0 or NaN).
+  Material cut;
+  cut.cutoutOpacity = 0.5;
+  const shader_test::ShaderBsdf cb(cut, BsdfOptions{});
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  for (const vec3& bad : {vec3(0, 0, 0), vec3(nan, 0, 1), vec3(inf, 0, 1)})
+    for (float ux : {0.1f, 0.5f, 0.9f}) EXPECT_FALSE(dspbr_shader::dspbr_sample(cb.prepared(), bad, vec3(ux, 0.6f, 0.7f)).valid);
+  for (double ior : {1e8, 1e20, 3e38}) {
+    Material vol;
+    vol.transparency = 1, vol.specularTint = {0, 0, 0}, vol.thinWalled = false, vol.ior = ior;
+    const shader_test::ShaderBsdf vb(vol, BsdfOptions{});
+    for (int k = 0; k < 1000; ++k) {
+      const dspbr_shader::DspbrSample a = dspbr_shader::dspbr_sample(vb.prepared(), vec3(0, 0, -1), vec3((k + 0.5f) / 1000, 0.5f, 0.5f));
+      if (a.valid) EXPECT_TRUE(std::isfinite(a.l.x + a.l.y + a.l.z) && dspbr_shader::dot(a.l, a.l) > 0.5f) << ior << " " << k;
+    }
+  }
   // The tester's case.
   Material g;
   g.roughness = 0.99999994, g.transparency = 0.99999994, g.specular = 0, g.thinWalled = false, g.ior = 1e20;

@@ -321,6 +321,11 @@ DSPBR_FN DspbrSample dspbr_sample(DSPBR_IN(DspbrBsdf) b, vec3 v_in, vec3 u) {
   }
   if (back) l = -l;
   out_s.l = dspbr_to_world(b.frame, l);
+  // Never a valid sample without a direction: a zero v (a view of no length, NaN or Inf) passes
+  // through a cut-out as l = 0, and a refraction into a volume of ior 1e8 at exactly normal
+  // incidence from inside gave NaN (the eleventh fresh tester's pass).
+  float ll = dot(out_s.l, out_s.l);
+  if (!(ll > 0.0f) || isinf(ll)) return dspbr_failed_sample();
   out_s.valid = true;
   return out_s;
 }

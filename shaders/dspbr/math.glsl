@@ -92,12 +92,16 @@ DSPBR_FN DspbrFrame dspbr_frame_from_normal_tangent(vec3 n, vec3 tangent) {
 // is used as it is: renormalising it would move it by an ulp, and a sample's direction handed back
 // to pdf must give the density the sample reported (sharp lobes differ within an ulp).
 DSPBR_CONST float dspbr_unit_tolerance = 1e-5f;
+// Any other finite non-zero one is divided by its largest |component| first, so that its squared
+// length neither overflows nor underflows (the eleventh fresh tester's pass: v of length 1e20 or
+// 1e-30 had no value).
 DSPBR_FN vec3 dspbr_unit_direction(vec3 w) {
   float len2 = dot(w, w);
   if (abs(len2 - 1.0f) <= dspbr_unit_tolerance) return w;
-  float len = sqrt(len2);
-  if (!(len > 0.0f) || isinf(len)) return vec3(0.0f, 0.0f, 0.0f);
-  return w / len;
+  float m = max(max(abs(w.x), abs(w.y)), abs(w.z));
+  if (!(m > 0.0f) || isinf(m) || isnan(w.x + w.y + w.z)) return vec3(0.0f, 0.0f, 0.0f);
+  vec3 s = w / m;
+  return s / length(s);
 }
 // A material normal made unit; a zero, NaN or infinite one is +z (the unperturbed normal).
 DSPBR_FN vec3 dspbr_unit_normal(vec3 n) {
