@@ -20,6 +20,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <regex>
 #include <string>
 
 #include "dspbr/conformance/results.h"
@@ -378,15 +379,32 @@ TEST(Untrusted, EmptyListsAreRefused) {
 // named before any fit runs, and the folder stays as it was (the tenth fresh tester's pass: exit 1,
 // after the whole fit).
 TEST(Untrusted, FitOnlyReadsTheKeptDocumentsFirst) {
-  const fs::path dir = fresh("fit_only_kept");
-  write(dir / "albedo.json", "{\"bad\": ");
-  const ToolRun r = run_dspbr("fit --quick --only flake_roughness --threads 1 --out " + dir.string());
+  // Malformed, not an object, another fit's document, a coefficient beyond float (the eleventh
+  // fresh tester's pass: rc 1 and nlohmann's raw text after the fit), a dangling link.
+  const std::string committed = read_all(fs::path(DSPBR_SOURCE_DIR) / "fits" / "flake_roughness.json");
+  const std::pair<std::string, std::string> cases[] = {
+      {"{\"bad\": ", "albedo.json: malformed JSON"},
+      {"null", "albedo.json: not the albedo fit's document (not a JSON object)"},
+      {"{}", "albedo.json: not the albedo fit's document: no /coefficients/ggx_E"},
+      {committed, "albedo.json: not the albedo fit's document: no /coefficients/ggx_E"}};
+  int k = 0;
+  for (const auto& [content, message] : cases) {
+    const fs::path dir = fresh("fit_only_kept_" + std::to_string(k++));
+    write(dir / "albedo.json", content);
+    const ToolRun r = run_dspbr("fit --quick --only flake_roughness --threads 1 --out " + dir.string());
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("flake_roughness:"), std::string::npos) << "the fit ran first: " << r.output;
+    std::size_t entries = 0;
+    for (const auto& e : fs::directory_iterator(dir)) entries += e.path().filename() == "albedo.json" ? 0 : 1;
+    EXPECT_EQ(entries, 0u);
+  }
+  const fs::path dir = fresh("fit_only_kept_huge");
+  write(dir / "flake_roughness.json", std::regex_replace(committed, std::regex("\"coefficients\": \\[\\s*[-0-9.e+]+"),
+                                                          "\"coefficients\": [1e300"));
+  const ToolRun r = run_dspbr("fit --quick --only sheen_lambda --threads 1 --out " + dir.string());
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_NE(r.output.find("albedo.json: malformed JSON"), std::string::npos) << r.output;
-  EXPECT_EQ(r.output.find("flake_roughness:"), std::string::npos) << "the fit ran first: " << r.output;
-  std::size_t entries = 0;
-  for (const auto& e : fs::directory_iterator(dir)) entries += e.path().filename() == "albedo.json" ? 0 : 1;
-  EXPECT_EQ(entries, 0u);
+  EXPECT_NE(r.output.find("/coefficients/0 is not a number within the float range"), std::string::npos) << r.output;
 }
 
 // A scene whose materials need no table: `lut --scene` says so naming the scene, exit 0, writes

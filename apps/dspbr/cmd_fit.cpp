@@ -66,14 +66,21 @@ std::vector<std::string> parse_only(const std::string& s) {
   return out;
 }
 
-// A fit document of an earlier run in the output folder (--only regenerates some), or null.
-json read_json_if_exists(const fs::path& p) {
+// A fit document of an earlier run in the output folder that --only keeps, or null when there is
+// none; one that is there (a link included, even a dangling one) must be that fit's document.
+json read_kept_document(const fs::path& dir, const std::string& name) {
+  const fs::path p = dir / (name + ".json");
   std::error_code ec;
-  if (!fs::exists(p, ec)) return nullptr;
+  if (!fs::exists(fs::symlink_status(p, ec))) return nullptr;
   try {
-    return read_json_file(p.string(), "fit document", limits::kDocumentBytes);
+    const json doc = read_json_file(p.string(), "fit document", limits::kDocumentBytes);
+    fit::check_fit_document(name, doc);
+    return doc;
   } catch (const std::exception& e) {
-    throw UsageError(std::string(e.what()) + "; delete it or rerun without --only");
+    const std::string what = e.what();
+    // read_json_file names the file; check_fit_document does not.
+    throw UsageError((what.rfind(p.string(), 0) == 0 ? what : p.string() + ": " + what) +
+                     "; delete it or rerun without --only");
   }
 }
 
@@ -108,7 +115,7 @@ void run(const FitArgs& a, const std::string& command_line) {
   std::map<std::string, json> kept;
   for (const char* name : {"sheen_lambda", "albedo", "flake_roughness"})
     if (std::find(names.begin(), names.end(), name) == names.end())
-      kept[name] = read_json_if_exists(fs::path(a.out) / (std::string(name) + ".json"));
+      kept[name] = read_kept_document(fs::path(a.out), name);
   fit::FitContext ctx;
   ctx.threads = a.threads;
   ctx.seed = a.seed;

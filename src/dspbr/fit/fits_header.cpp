@@ -3,6 +3,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "dspbr/constants.h"
 #include "dspbr/fit/albedo_forms.h"
@@ -105,6 +109,47 @@ inline float dspbr_fit_flake_lobe(float vx, float vy, float vz, float lx, float 
                      fmt::format("{:.8e}", flake_tan2_half_cone()), fmt::format("{:.8e}", std::cos(2 * kPi / kFlakeRimPoints)),
                      fmt::format("{:.8e}", std::sin(2 * kPi / kFlakeRimPoints)), fmt::format("{:.8e}", std::cos(kPi / kFlakeRimPoints)),
                      fmt::format("{:.8e}", std::sin(kPi / kFlakeRimPoints)), kFlakeRimPoints, kFlakeRimPoints);
+}
+
+void check_fit_document(const std::string& name, const nlohmann::json& doc) {
+  // (JSON pointer, expected array length; 0: a number) of every value the generators read.
+  std::vector<std::pair<std::string, std::size_t>> wanted;
+  if (name == "sheen_lambda") {
+    wanted = {{"/coefficients", 16}, {"/domain/alpha_b/0", 0}, {"/domain/cos_theta/0", 0}, {"/domain/cos_theta/1", 0},
+              {"/error/models/ours_rich/lambda_rel_error/max", 0}, {"/error/models/ours_rich/lambda_rel_error/rms", 0}};
+  } else if (name == "albedo") {
+    wanted = {{"/coefficients/ggx_E", kDualParams}, {"/coefficients/ggx_E_avg", kAvgParams},
+              {"/coefficients/ggx_E5", kDualParams}, {"/coefficients/ggx_E5_avg", kPoly1Params},
+              {"/coefficients/sheen_E", kDualParams}, {"/coefficients/sheen_ash_E", kDualParams},
+              {"/domain/cos_theta/0", 0}, {"/domain/alpha_b/0", 0}, {"/fit/ggx_E_avg_tolerance_units_max", 0}};
+    for (const char* k : {"ggx_E", "ggx_E_avg", "base_E", "base_E_avg", "sheen_E", "sheen_ash_E"})
+      for (const char* m : {"max", "mean"}) wanted.push_back({std::string("/error/") + k + "/" + m, 0});
+  } else if (name == "flake_roughness") {
+    wanted = {{"/coefficients", 3}, {"/domain/flake_roughness/0", 0}, {"/domain/flake_roughness/1", 0},
+              {"/formula_error/max", 0}, {"/ggx_lobe_error_max", 0}, {"/ggx_albedo_error_max", 0},
+              {"/lobe_error_max", 0}, {"/albedo_error_max", 0}};
+  } else {
+    throw std::invalid_argument("unknown fit '" + name + "'");
+  }
+  if (!doc.is_object()) throw std::invalid_argument("not the " + name + " fit's document (not a JSON object)");
+  const auto number = [&](const nlohmann::json& x, const std::string& where) {
+    if (!x.is_number() || !(std::fabs(x.get<double>()) <= double(std::numeric_limits<float>::max())))
+      throw std::invalid_argument("not the " + name + " fit's document: " + where + " is not a number within the float range");
+  };
+  for (const auto& [ptr, length] : wanted) {
+    const nlohmann::json::json_pointer p(ptr);
+    // contains() follows the path without inserting and without throwing on a wrong type.
+    if (!doc.contains(p)) throw std::invalid_argument("not the " + name + " fit's document: no " + ptr);
+    const nlohmann::json& x = doc.at(p);
+    if (length == 0) {
+      number(x, ptr);
+      continue;
+    }
+    if (!x.is_array() || x.size() != length)
+      throw std::invalid_argument("not the " + name + " fit's document: " + ptr + " is not an array of " + std::to_string(length) +
+                                  " numbers");
+    for (std::size_t i = 0; i < length; ++i) number(x[i], ptr + "/" + std::to_string(i));
+  }
 }
 
 std::string generate_fits_header(const nlohmann::json& sl, const nlohmann::json& al, const nlohmann::json& fl) {
