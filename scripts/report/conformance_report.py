@@ -108,14 +108,18 @@ def plotted_groups(groups):
     return [groups[i] for i in sorted(worst)]
 
 
+def control_escaped(text):
+    # Control characters (C0, DEL, C1) as \\xNN, as the command's own table prints them: in a plot
+    # label no font has their glyphs (matplotlib's warning wrote them raw to the terminal; the tenth
+    # fresh tester's pass), and in the page they are raw bytes (the eleventh's).
+    return "".join(f"\\x{ord(c):02x}" if ord(c) < 0x20 or 0x7f <= ord(c) < 0xa0 else c for c in text)
+
+
 def label(name):
     # "$" escaped: matplotlib reads $...$ as mathematics and raised on "$\\frac{$" (the ninth fresh
-    # tester's pass: the report was lost). Control characters (C0, DEL, C1) as \\xNN, as the command's
-    # own table prints them: no font has their glyphs, and matplotlib's warning wrote them raw to the
-    # terminal (the tenth fresh tester's pass: an escape sequence in a group name).
+    # tester's pass: the report was lost).
     short = name if len(name) <= LABEL_CHARS else name[:LABEL_CHARS - 3] + "..."
-    short = "".join(f"\\x{ord(c):02x}" if ord(c) < 0x20 or 0x7f <= ord(c) < 0xa0 else c for c in short)
-    return short.replace("$", r"\$")
+    return control_escaped(short).replace("$", r"\$")
 
 
 def distribution_plot(groups, values, path, xlabel, limit=None):
@@ -157,7 +161,10 @@ def main(folder):
                       "error of f cos over its tolerance (≤ 1 passes; clipped to [1e-12, 1e12])", limit=1.0)
     distribution_plot(r["groups"], errors, os.path.join(folder, "plots", "relative_error_by_group.png"),
                       "relative error of f cos, max over channels (|result − expected| / max(|expected|, abs))")
-    env = Environment(autoescape=select_autoescape(default=True))
+    # Every string the page shows (group names, ids, paths from the user's files) without control
+    # characters, then HTML-escaped.
+    env = Environment(autoescape=select_autoescape(default=True),
+                      finalize=lambda x: control_escaped(x) if isinstance(x, str) else x)
     html = env.from_string(PAGE).render(r=r, vec=vec)
     with open(os.path.join(folder, "index.html"), "w", encoding="utf-8") as f:
         f.write(html)

@@ -199,6 +199,8 @@ def test_report_labels_escape_control_characters(tmp_path):
     assert code == 0, (out, err)
     assert (tmp_path / "report" / "plots" / "ratio_by_group.png").is_file()
     assert "\x1b" not in err and "\x07" not in err and "Warning" not in err, err
+    page = (tmp_path / "report" / "index.html").read_text(encoding="utf-8")
+    assert "\x1b" not in page and "\x07" not in page and "x\\x1b[31mred\\x07" in page
 
 
 def test_report_of_many_groups_and_long_names(tmp_path):
