@@ -182,20 +182,26 @@ def test_outputs_its_own_tools_would_refuse_are_refused(vectors, tmp_path):
     assert not (tmp_path / "big").exists()
 
 
-def test_report_labels_escape_control_characters(tmp_path):
-    # A group named with an escape sequence: the report is written and nothing raw reaches stderr
-    # (matplotlib warned about the missing glyph, quoting it; the tenth fresh tester's pass).
+def check_with_groups(tmp_path, group_of):
+    # The built-in vectors (one direction pair, no albedo, no scenes) regrouped by group_of(i), the
+    # reference's own results and the check of those: (exit status, stdout, stderr); edited.json and
+    # r.json stay in tmp_path, the report in tmp_path/report.
     code, _, err = run_cli("conformance", "generate", "--directions", 1, "--no-albedo", "--no-scenes", "--out",
                            tmp_path / "v")
     assert code == 0, err
     doc = json.loads((tmp_path / "v" / "vectors.json").read_text())
     for i, v in enumerate(doc["vectors"]):
-        v["group"] = "x\x1b[31mred\x07" if i % 2 else "plain"
+        v["group"] = group_of(i)
     (tmp_path / "edited.json").write_text(json.dumps(doc))
     code, _, err = run_cli("conformance", "reference", tmp_path / "edited.json", "--out", tmp_path / "r.json")
     assert code == 0, err
-    code, out, err = run_cli("conformance", "check", tmp_path / "edited.json", tmp_path / "r.json", "--out",
-                             tmp_path / "report")
+    return run_cli("conformance", "check", tmp_path / "edited.json", tmp_path / "r.json", "--out", tmp_path / "report")
+
+
+def test_report_labels_escape_control_characters(tmp_path):
+    # A group named with an escape sequence: the report is written and nothing raw reaches stderr
+    # (matplotlib warned about the missing glyph, quoting it; the tenth fresh tester's pass).
+    code, out, err = check_with_groups(tmp_path, lambda i: "x\x1b[31mred\x07" if i % 2 else "plain")
     assert code == 0, (out, err)
     assert (tmp_path / "report" / "plots" / "ratio_by_group.png").is_file()
     assert "\x1b" not in err and "\x07" not in err and "Warning" not in err, err
@@ -207,17 +213,8 @@ def test_report_of_many_groups_and_long_names(tmp_path):
     # A vector file with 60 groups, one named in 5000 characters, one "$\frac{$": the HTML report's
     # plots show the 40 worst groups with shortened, escaped labels (the plotting library refused the figure and the whole report
     # was lost; the eighth fresh tester's pass).
-    code, _, err = run_cli("conformance", "generate", "--directions", 1, "--no-albedo", "--no-scenes", "--out",
-                           tmp_path / "v")
-    assert code == 0, err
-    doc = json.loads((tmp_path / "v" / "vectors.json").read_text())
-    for i, v in enumerate(doc["vectors"]):
-        v["group"] = "a" * 5000 if i == 0 else ("$\\frac{$" if i == 1 else f"group-{i % 60}")
-    (tmp_path / "edited.json").write_text(json.dumps(doc))
-    code, _, err = run_cli("conformance", "reference", tmp_path / "edited.json", "--out", tmp_path / "r.json")
-    assert code == 0, err
-    code, out, err = run_cli("conformance", "check", tmp_path / "edited.json", tmp_path / "r.json", "--out",
-                             tmp_path / "report")
+    code, out, err = check_with_groups(
+        tmp_path, lambda i: "a" * 5000 if i == 0 else ("$\\frac{$" if i == 1 else f"group-{i % 60}"))
     assert code == 0, (out, err)
     for name in ("index.html", "plots/ratio_by_group.png", "plots/relative_error_by_group.png"):
         assert (tmp_path / "report" / name).is_file(), name
