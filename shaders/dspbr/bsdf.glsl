@@ -301,9 +301,10 @@ DSPBR_FN DspbrSample dspbr_sample(DSPBR_IN(DspbrBsdf) b, vec3 v_in, vec3 u) {
   } else {
     float ux = clamp((u.x - cum) / p, 0.0f, 0.99999994f);
     DspbrFrame lf = chosen == DSPBR_LOBE_CLEARCOAT ? b.coat : b.core;
-    if (dspbr_on_horizon(dspbr_to_local(lf, v)) || dspbr_on_horizon(dspbr_to_local(b.core, v))) return out_s;
+    vec3 vk = dspbr_to_local(lf, v);
+    if (dspbr_on_horizon(vk) || dspbr_on_horizon(dspbr_to_local(b.core, v))) return out_s;
     vec3 lk, lw;
-    if (!dspbr_lobe_sample(b, chosen, dspbr_to_local(lf, v), vec3(ux, u.y, u.z), eta_i, eta_o, lk, lw)) return out_s;
+    if (!dspbr_lobe_sample(b, chosen, vk, vec3(ux, u.y, u.z), eta_i, eta_o, lk, lw)) return out_s;
     l = normalize(dspbr_to_world(lf, lk));
     uint side = l.z * v.z >= 0.0f ? DSPBR_FLAG_REFLECTION : DSPBR_FLAG_TRANSMISSION;
     if (dspbr_is_delta_lobe(b, chosen)) {

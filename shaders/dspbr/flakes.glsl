@@ -80,23 +80,29 @@ DSPBR_FN float dspbr_pcg32_float_at(DspbrU64 state) { return float(dspbr_pcg32_o
 // only the first two numbers of each flake (its position) and the best flake's other three, and the
 // jumps are independent of each other (the sequential generator is a chain of 40 dependent 64-bit
 // products per cell; 2 us of a car paint's prepare).
-DSPBR_FN DspbrU64 dspbr_lcg_a(int n) {
-  if (n == 2) return dspbr_u64(0x685f98a2u, 0x018fade9u);
-  if (n == 4) return dspbr_u64(0xfb4d3ae3u, 0x9272be11u);
-  if (n == 6) return dspbr_u64(0xf08d02b0u, 0x115f7a79u);
-  if (n == 8) return dspbr_u64(0xb59dda5fu, 0x38413d21u);
-  return dspbr_u64(0xc07a0e3eu, 0x901ef009u);  // n = 10
+struct DspbrLcgStride {
+  DspbrU64 a;  // A_n
+  DspbrU64 c;  // C_n
+};
+DSPBR_FN DspbrLcgStride dspbr_lcg_stride_of(uint a_hi, uint a_lo, uint c_hi, uint c_lo) {
+  DspbrLcgStride t;
+  t.a = dspbr_u64(a_hi, a_lo);
+  t.c = dspbr_u64(c_hi, c_lo);
+  return t;
 }
-DSPBR_FN DspbrU64 dspbr_lcg_c(int n) {
-  if (n == 2) return dspbr_u64(0x5851f42du, 0x4c957f2eu);
-  if (n == 4) return dspbr_u64(0xcbb5f646u, 0x404a560cu);
-  if (n == 6) return dspbr_u64(0x30705b04u, 0x2917ec1au);
-  if (n == 8) return dspbr_u64(0x9a8b7f78u, 0xda6ef4d8u);
-  return dspbr_u64(0xab894868u, 0xb3b04fc6u);  // n = 10
+// (A_n, C_n) of the PCG32 multiplier for the strides n = 2, 4, 6, 8, 10.
+DSPBR_FN DspbrLcgStride dspbr_lcg_stride(int n) {
+  if (n == 2) return dspbr_lcg_stride_of(0x685f98a2u, 0x018fade9u, 0x5851f42du, 0x4c957f2eu);
+  if (n == 4) return dspbr_lcg_stride_of(0xfb4d3ae3u, 0x9272be11u, 0xcbb5f646u, 0x404a560cu);
+  if (n == 6) return dspbr_lcg_stride_of(0xf08d02b0u, 0x115f7a79u, 0x30705b04u, 0x2917ec1au);
+  if (n == 8) return dspbr_lcg_stride_of(0xb59dda5fu, 0x38413d21u, 0x9a8b7f78u, 0xda6ef4d8u);
+  return dspbr_lcg_stride_of(0xc07a0e3eu, 0x901ef009u, 0xab894868u, 0xb3b04fc6u);  // n = 10
 }
-DSPBR_FN DspbrU64 dspbr_lcg_jump(DspbrU64 state, DspbrU64 inc, int n) {
-  return dspbr_u64_add(dspbr_u64_mul(state, dspbr_lcg_a(n)), dspbr_u64_mul(inc, dspbr_lcg_c(n)));
+// The state n steps on, from the stride's C_n inc (a cell's probe forms it once per stride).
+DSPBR_FN DspbrU64 dspbr_lcg_jump(DspbrU64 state, int n, DspbrU64 c_inc) {
+  return dspbr_u64_add(dspbr_u64_mul(state, dspbr_lcg_stride(n).a), c_inc);
 }
+DSPBR_FN DspbrU64 dspbr_lcg_c_inc(DspbrU64 inc, int n) { return dspbr_u64_mul(inc, dspbr_lcg_stride(n).c); }
 
 // Omega_cone = 2 pi (1 - cos theta_cone) (spec "Flake BSDF"); alpha_cone^2 = min(Omega(cos 7 deg) /
 // (4 pi - Omega(cos 7 deg)), r_f^2 / 2) (spec eq. alpha-cone; tan^2(3.5 deg) when unclamped).
@@ -134,10 +140,10 @@ DSPBR_FN void dspbr_flake_probe(int ii, int jj, int res, float gx, float gy, DSP
   int wj = jj < 0 ? jj + res : (jj >= res ? jj - res : jj);
   DspbrPcg32 g = dspbr_pcg32(dspbr_u64(0u, uint(wi)), dspbr_u64(0u, uint(wj)));
   DspbrU64 s = g.state;
-  DspbrU64 c2 = dspbr_u64_mul(g.inc, dspbr_lcg_c(2)), c10 = dspbr_u64_mul(g.inc, dspbr_lcg_c(10));
+  DspbrU64 c2 = dspbr_lcg_c_inc(g.inc, 2), c10 = dspbr_lcg_c_inc(g.inc, 10);
   for (int k = 0; k < 4; ++k) {  // k = 4 flakes per cell, 5 numbers each (spec generate_flake)
     float xi1 = dspbr_pcg32_float_at(s);
-    float xi2 = dspbr_pcg32_float_at(dspbr_u64_add(dspbr_u64_mul(s, dspbr_lcg_a(2)), c2));
+    float xi2 = dspbr_pcg32_float_at(dspbr_lcg_jump(s, 2, c2));
     float dx = gx - (float(ii) + xi1), dy = gy - (float(jj) + xi2);
     float d2 = dx * dx + dy * dy;
     if (d2 < best.d2) {
@@ -145,7 +151,7 @@ DSPBR_FN void dspbr_flake_probe(int ii, int jj, int res, float gx, float gy, DSP
       best.state = s;
       best.inc = g.inc;
     }
-    s = dspbr_u64_add(dspbr_u64_mul(s, dspbr_lcg_a(10)), c10);
+    s = dspbr_lcg_jump(s, 10, c10);
   }
 }
 
@@ -189,9 +195,9 @@ DSPBR_FN DspbrFlake dspbr_flake_at(vec3 p, vec3 n, float coverage, float size_mm
         if (max(abs(di), abs(dj)) == 2) dspbr_flake_probe(i + di, j + dj, res, gx, gy, best);
   }
   // The nearest flake's other numbers: orientation xi_3, xi_4 and opacity O_f(f, xi_5).
-  float xi3 = dspbr_pcg32_float_at(dspbr_lcg_jump(best.state, best.inc, 4));
-  float xi4 = dspbr_pcg32_float_at(dspbr_lcg_jump(best.state, best.inc, 6));
-  float xi5 = dspbr_pcg32_float_at(dspbr_lcg_jump(best.state, best.inc, 8));
+  float xi3 = dspbr_pcg32_float_at(dspbr_lcg_jump(best.state, 4, dspbr_lcg_c_inc(best.inc, 4)));
+  float xi4 = dspbr_pcg32_float_at(dspbr_lcg_jump(best.state, 6, dspbr_lcg_c_inc(best.inc, 6)));
+  float xi5 = dspbr_pcg32_float_at(dspbr_lcg_jump(best.state, 8, dspbr_lcg_c_inc(best.inc, 8)));
   float opacity = xi5 < coverage ? 1.0f : 0.0f;
   // K(r_f, xi_3, xi_4): cos^2 theta = (1 - xi) / (1 - (1 - alpha^2) xi), alpha = alpha_ggx =
   // sqrt(r_f^2 - alpha_cone^2) (spec eq. roughness-distribution).
