@@ -195,6 +195,40 @@ TEST(Conformance, TheReferencePasses) {
   }
 }
 
+// implementation_result (what `dspbr validate` judges the shader library with) on the reference
+// itself, through the Bsdf interface: every quantity judged, the delta lobes and the albedo found
+// without the reference's delta_probability, equal to the expectations; a Lambertian stand-in fails.
+TEST(Conformance, AnImplementationBehindTheBsdfInterfaceIsJudgedOnEveryQuantity) {
+  const auto& vs = small_set();
+  std::vector<Result> rs(vs.size()), wrong(vs.size());
+  std::size_t delta = 0, albedo = 0;
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    const MaterialBsdf b(vector_material(vs[i]), LutSet::builtin(), vector_options(vs[i]));
+    rs[i] = implementation_result(vs[i], b);
+    ASSERT_TRUE(rs[i].delta.has_value());
+    EXPECT_EQ(rs[i].delta->size(), vs[i].delta.size()) << vs[i].id;
+    for (std::size_t k = 0; k < std::min(rs[i].delta->size(), vs[i].delta.size()); ++k)
+      EXPECT_EQ((*rs[i].delta)[k].value.g, vs[i].delta[k].value.g) << vs[i].id;
+    EXPECT_EQ(rs[i].albedo.has_value(), vs[i].albedo.has_value()) << vs[i].id;
+    if (rs[i].albedo && vs[i].albedo) EXPECT_EQ(rs[i].albedo->r, vs[i].albedo->r) << vs[i].id;
+    delta += !vs[i].delta.empty(), albedo += vs[i].albedo.has_value();
+    wrong[i] = implementation_result(vs[i], MaterialBsdf(Material{}, LutSet::builtin(), BsdfOptions{}));
+  }
+  EXPECT_GT(delta, 20u);
+  EXPECT_GT(albedo, 20u);
+  const Check c = check_results(vs, rs);
+  EXPECT_TRUE(c.passed()) << c.failed << " failures";
+  EXPECT_EQ(c.not_supplied, 0u);
+  std::size_t albedo_judged = 0, delta_judged = 0;
+  for (const VectorVerdict& v : c.verdicts) {
+    albedo_judged += v.ratio[int(Quantity::Albedo)].has_value();
+    delta_judged += v.ratio[int(Quantity::Delta)].has_value();
+  }
+  EXPECT_EQ(albedo_judged, albedo);
+  EXPECT_GE(delta_judged, delta);
+  EXPECT_GT(check_results(vs, wrong).failed, vs.size() / 2);
+}
+
 // check --tables: with the renderer tables the recomputed expectations are the generated ones to
 // the last bit (f cos, pdf, delta lobes, albedo: the same quadrature); with the published tables
 // they are what the reference reads from them, so results from those tables fail as written and

@@ -32,15 +32,20 @@ SuiteSettings tiny_settings() {
   return s;
 }
 
+// Adds a test case of component "test" to `cat`.
+void add_case(Catalog& cat, const std::string& name, std::shared_ptr<const Bsdf> b, EnergyClaim claim) {
+  BsdfCase c;
+  c.name = name;
+  c.component = "test";
+  c.bsdf = std::move(b);
+  c.claim = claim;
+  cat.cases.push_back(c);
+}
+
 Catalog doubles_catalog() {
   Catalog cat;
   auto add = [&](const std::string& name, std::shared_ptr<const Bsdf> b, EnergyClaim claim) {
-    BsdfCase c;
-    c.name = name;
-    c.component = "test";
-    c.bsdf = std::move(b);
-    c.claim = claim;
-    cat.cases.push_back(c);
+    add_case(cat, name, std::move(b), claim);
   };
   add("lambert", std::make_shared<LambertLobe>(1.0), EnergyClaim::Preserving);
   add("ggx", std::make_shared<GgxReflectionLobe>(0.3), EnergyClaim::Conserving);
@@ -56,16 +61,19 @@ Catalog doubles_catalog() {
   return cat;
 }
 
+// A failure of check `check` (the start of its line) whose line names `what`.
+bool has_failure(const SuiteResult& r, const std::string& check, const std::string& what) {
+  for (const std::string& f : r.failures)
+    if (f.rfind(check, 0) == 0 && f.find(what) != std::string::npos) return true;
+  return false;
+}
+
 }  // namespace
 
 TEST(ValidateSuite, FlagsEachBrokenDoubleAndWritesTheData) {
   const std::string dir = ::testing::TempDir() + "/validate_suite_a";
   const SuiteResult r = run_suite(doubles_catalog(), nullptr, tiny_settings(), dir);
-  auto failed_with = [&](const std::string& check, const std::string& what) {
-    for (const std::string& f : r.failures)
-      if (f.rfind(check, 0) == 0 && f.find(what) != std::string::npos) return true;
-    return false;
-  };
+  auto failed_with = [&](const std::string& check, const std::string& what) { return has_failure(r, check, what); };
   EXPECT_TRUE(failed_with("furnace: conservation", "gaining lambert"));
   EXPECT_TRUE(failed_with("reciprocity", "non-reciprocal"));
   EXPECT_TRUE(failed_with("stability", "test"));
@@ -386,4 +394,38 @@ TEST(ValidateSuite, PlantedGrazingLossFailsTheFullRun) {
       for (const auto& [check, v] : row["judged"].items())
         EXPECT_NE(v["status"], "NOT JUDGED") << check << " " << row["cos"];
   }
+}
+
+// Another implementation's section (suite.h, OtherImplementation; `dspbr validate`'s shader
+// library): its own furnace, chi-square, stability and conformance verdicts, named apart, each able
+// to fail: a preserving claim on a Lambert of albedo 0.9, a stability case that returns NaN, and a
+// conformance group with a failing vector fail; the correct ones beside them pass.
+TEST(ValidateSuite, AnotherImplementationsVerdictsCountAndCanFail) {
+  OtherImplementation other;
+  other.name = "test implementation";
+  add_case(other.catalog, "white lambert", std::make_shared<LambertLobe>(1.0), EnergyClaim::Preserving);
+  add_case(other.catalog, "lossy lambert", std::make_shared<LambertLobe>(0.9), EnergyClaim::Preserving);
+  other.catalog.stability.push_back({"test", "unguarded", std::make_shared<UnguardedGgx>(0.3), std::nullopt, {}});
+  other.vector_set = "two groups";
+  other.conformance = [] {
+    return std::vector<ConformanceGroup>{{"good", 10, 0, 0.5, "good/00"}, {"bad", 10, 2, 3.0, "bad/07"}};
+  };
+  const SuiteResult r =
+      run_suite(doubles_catalog(), nullptr, tiny_settings(), ::testing::TempDir() + "/validate_suite_other", &other);
+  auto failed_with = [&](const std::string& check, const std::string& what) { return has_failure(r, check, what); };
+  EXPECT_TRUE(failed_with("shader library: furnace: preservation", "lossy lambert"));
+  EXPECT_FALSE(failed_with("shader library: furnace", "white lambert"));
+  EXPECT_TRUE(failed_with("shader library: stability", "test"));
+  EXPECT_TRUE(failed_with("shader library: conformance", "bad: 2 of 10 vectors fail"));
+  EXPECT_FALSE(failed_with("shader library: conformance", "good"));
+  // The reference's own verdicts keep their names.
+  EXPECT_TRUE(failed_with("furnace: conservation", "gaining lambert"));
+  const auto& lib = r.report["shader_library"];
+  EXPECT_EQ(lib["conformance"]["vectors"], 20);
+  EXPECT_EQ(lib["conformance"]["failed"], 2);
+  EXPECT_EQ(lib["energy"]["cases"].size(), 2u);
+  EXPECT_EQ(lib["chi2"]["tests"].size(), 2 * tiny_settings().chi2_cos.size());
+  int failed = 0;
+  for (const auto& row : r.report["summary"]) failed += row["failed"].get<int>();
+  EXPECT_EQ(failed, r.failed_checks);
 }

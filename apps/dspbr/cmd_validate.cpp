@@ -5,11 +5,13 @@
 // Writes DIR/data/report.json and DIR/images/ (C++), then DIR/index.html and DIR/plots/ through
 // scripts/report/make_report.py (matplotlib + jinja2), found relative to the running binary
 // (installed in <prefix>/share/dspbr/report; the build copies it next to build/dspbr).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fmt/format.h>
 #include <memory>
+#include <optional>
 #include <string>
 #include <sys/resource.h>
 #include <tbb/global_control.h>
@@ -17,6 +19,7 @@
 #include "commands.h"
 #include "interrupt_cleanup.h"
 #include "report_script.h"
+#include "validate_shader_library.h"
 #include "dspbr/limits.h"
 #include "dspbr/io/read_file.h"
 #include "dspbr/tables/lut_set.h"
@@ -39,6 +42,7 @@ struct ValidateArgs {
   std::string python = "/usr/bin/python3";
   bool html = true;
   bool allow_failures = false;
+  bool shader_library = true;  // the shader library's section (validate_shader_library.h)
   int threads = 0;  // 0: all cores
 };
 
@@ -102,7 +106,9 @@ void run_validate(const ValidateArgs& a) {
   std::fprintf(stderr, "dspbr validate (%s): %zu cases, %zu stability corners, %zu furnace rows -> %s\n",
                a.quick ? "quick" : "full", cat.cases.size(), cat.stability.size(), cat.furnace_rows.size(),
                a.out.c_str());
-  const validate::SuiteResult r = validate::run_suite(cat, checked, s, out.staging());
+  std::optional<validate::OtherImplementation> library;
+  if (a.shader_library) library = shader_library_checks(cat, a.quick);
+  const validate::SuiteResult r = validate::run_suite(cat, checked, s, out.staging(), library ? &*library : nullptr);
 
   if (a.html) {
     // Timed like the suite's phases (the report's own time is part of the run's).
@@ -125,10 +131,12 @@ void run_validate(const ValidateArgs& a) {
   // Summary on stdout.
   std::printf("validation (%s run, seed %llu): report in %s/%s\n", a.quick ? "quick" : "full",
               static_cast<unsigned long long>(a.seed), a.out.c_str(), a.html ? "index.html" : "data/report.json");
-  std::printf("  %-58s %5s %5s %7s %11s\n", "check", "PASS", "FAIL", "WAIVED", "NOT JUDGED");
+  int width = 58;  // the longest check name
+  for (const auto& c : r.report["summary"]) width = std::max(width, int(c["check"].get<std::string>().size()));
+  std::printf("  %-*s %5s %5s %7s %11s\n", width, "check", "PASS", "FAIL", "WAIVED", "NOT JUDGED");
   int not_judged = 0, total = 0;
   for (const auto& c : r.report["summary"]) {
-    std::printf("  %-58s %5d %5d %7d %11d\n", c["check"].get<std::string>().c_str(), c["passed"].get<int>(),
+    std::printf("  %-*s %5d %5d %7d %11d\n", width, c["check"].get<std::string>().c_str(), c["passed"].get<int>(),
                 c["failed"].get<int>(), c["waived"].get<int>(), c["not_judged"].get<int>());
     not_judged += c["not_judged"].get<int>();
     total += c["total"].get<int>();
@@ -182,6 +190,9 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores); the report does not depend on it")
       ->capture_default_str()
       ->transform(thread_count());
+  cmd->add_flag("--no-shader-library", [args](int64_t) { args->shader_library = false; },
+                "Leave out the section that checks the shader library's C++ compile (shaders/dspbr.h) with the same "
+                "furnace, chi-square and stability checks and the default conformance vectors");
   cmd->add_flag("--allow-failures", args->allow_failures,
                 "Exit with status 0 even when checks fail (waived failures never fail the run)");
   cmd->callback([args] { run_validate(*args); });

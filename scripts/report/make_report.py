@@ -97,10 +97,12 @@ def legend_above(ax, handles, labels, ncol):
     ax.legend(handles, labels, loc="lower left", bbox_to_anchor=(0.0, 1.0), ncol=ncol, fontsize=8, frameon=False)
 
 
-def furnace_plots(rep, figs, part=None):
+def furnace_plots(rep, figs, part=None, energy=None, name="furnace"):
     """One panel per case: E − 1 by the quadrature (its stated error as the bar) and the sampled
-    estimator (±4σ bars), tolerance lines; one legend above the panels."""
-    energy = rep["energy"]
+    estimator (±4σ bars), tolerance lines; one legend above the panels. energy: the furnace data
+    (rep["energy"] by default; the shader library's with name "shader_furnace"). figs None: the
+    tables' data alone, no figure."""
+    energy = rep["energy"] if energy is None else energy
     tol = energy["tolerances"]
     k = tol["sigmas"]
     rows_by_case = {}
@@ -113,6 +115,13 @@ def furnace_plots(rep, figs, part=None):
     for i, (comp, cs) in enumerate(groups.items()):
         if part is not None and i % 2 != part:
             continue  # the other half (drawn by another process)
+        # Every (case, view) row with the band and tolerance each verdict used.
+        table = {"component": comp, "cases": cs,
+                 "rows": [{"case": c["case"], "cos": r["cos"], "judged": r.get("judged", {})}
+                          for c in cs for r in sorted(rows_by_case[c["case"]], key=lambda r: -r["cos"])]}
+        if figs is None:
+            out.append(table)
+            continue
         ncol = min(len(cs), 4)
         nrow = math.ceil(len(cs) / ncol)
         fig, grid = plt.subplots(nrow + 1, ncol, figsize=(max(3.1 * ncol, 6.0), 2.5 * nrow + 0.7), squeeze=False,
@@ -168,15 +177,11 @@ def furnace_plots(rep, figs, part=None):
         keys = [q for q in "snezcp" if q in handles]
         legend_ax.legend([handles[q] for q in keys], [labels[q] for q in keys], loc="center", ncol=2 if ncol == 1 else 3,
                          fontsize=7, frameon=False)
-        f = figs.save(fig, f"furnace_{slug(comp)}",
+        f = figs.save(fig, f"{name}_{slug(comp)}",
                       ["case", "cos", "sampled_r", "sampled_g", "sampled_b", "se_r", "se_g", "se_b", "non_delta_r",
                        "non_delta_g", "non_delta_b", "quadrature_r", "quadrature_g", "quadrature_b",
                        "quadrature_error", "samples", "invalid_fraction", "agreement", "conservation", "preservation"], csv_rows)
-        f["component"] = comp
-        f["cases"] = cs
-        # Every (case, view) row with the band and tolerance each verdict used.
-        f["rows"] = [{"case": c["case"], "cos": r["cos"], "judged": r.get("judged", {})}
-                     for c in cs for r in sorted(rows_by_case[c["case"]], key=lambda r: -r["cos"])]
+        f.update(table)
         out.append(f)
     return out
 
@@ -556,6 +561,8 @@ def run_figure_job(name, out):
         return sphere_plots(rep, figs, out)
     if name.startswith("furnace:"):
         return furnace_plots(rep, figs, int(name[-1]))
+    if name == "shader_furnace":  # the shader library's section
+        return furnace_plots(rep, figs, energy=rep["shader_library"]["energy"], name=name)
     return {"furnace": furnace_plots, "luts": lut_plots, "chi2": chi2_plots, "reciprocity": reciprocity_plot,
             "convergence": convergence_plot, "integrators": integrator_study_plot, "summary": summary_plot}[name](rep, figs)
 
@@ -582,10 +589,14 @@ def main():
         return 1
     # The figure groups are independent: drawn by two processes (most costly first, the furnace
     # plots in two halves). The integrator study (committed data, the same in every run) only in
-    # the full run's report: the quick run stays within seconds.
+    # the full run's report:
     jobs = ["furnace:0", "furnace:1", "luts", "chi2", "spheres", "summary", "convergence", "reciprocity"]
+    # the quick run's report stays within seconds. So do the shader library's furnace figures:
+    # the quick run shows its furnace tables alone.
     if rep.get("mode") != "quick":
         jobs.insert(2, "integrators")
+        if "shader_library" in rep:
+            jobs.insert(2, "shader_furnace")
     with ProcessPoolExecutor(max_workers=2) as pool:
         futures = {k: pool.submit(run_figure_job, k, out) for k in jobs}
         ctx = {k: f.result() for k, f in futures.items()}
@@ -593,6 +604,9 @@ def main():
     halves = [ctx.pop("furnace:0"), ctx.pop("furnace:1")]
     ctx["furnace"] = [f for pair in itertools.zip_longest(*halves) for f in pair if f is not None]
     ctx.setdefault("integrators", None)
+    if "shader_library" in rep and "shader_furnace" not in ctx:  # the quick run: the tables without figures
+        ctx["shader_furnace"] = furnace_plots(rep, None, energy=rep["shader_library"]["energy"], name="shader_furnace")
+    ctx.setdefault("shader_furnace", [])
     ctx.update({
         "rep": rep,
         "statement": energy_statement(rep),

@@ -56,6 +56,7 @@ SMALL = {
     "dspbr validate --out report": ("--quick --no-html", "the full run: minutes"),
     "dspbr validate --threads 1 --out DIR": ("--quick --no-html", "the full run: minutes"),
     "dspbr validate --quick --out DIR": ("--no-html", "the HTML report is made by the README's test of the same run"),
+    "dspbr validate --quick --no-shader-library --out DIR": ("--no-html", "the HTML report is made by the README's test of a quick run"),
 }
 
 

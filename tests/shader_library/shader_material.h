@@ -14,6 +14,7 @@
 #include "dspbr/conformance/vector_set.h"
 #include "dspbr/material.h"
 #include "dspbr/shader/material_mapping.h"
+#include "dspbr/shader/shader_bsdf.h"
 #include "dspbr/validate/chi2.h"
 
 namespace shader_test {
@@ -86,20 +87,7 @@ std::vector<float> delta_samples(const dspbr_shader::DspbrBsdf& b, dspbr_shader:
 
 namespace shader_test {
 
-// The shader library's C++ compile behind the reference's Bsdf interface (double in and out,
-// float inside), so that the validation's checks (chi-square, stability, reciprocity) run on it.
-class ShaderBsdf : public dspbr::Bsdf {
- public:
-  ShaderBsdf(const dspbr::Material& m, const dspbr::BsdfOptions& o);
-  dspbr::Rgb eval(const dspbr::Vec3& v, const dspbr::Vec3& l) const override;
-  double pdf(const dspbr::Vec3& v, const dspbr::Vec3& l) const override;
-  dspbr::BsdfSample sample(const dspbr::Vec3& v, const dspbr::Vec3& u) const override;
-  uint32_t flags() const override;
-  dspbr::Rgb emission(const dspbr::Vec3& v) const;
-  const dspbr_shader::DspbrBsdf& prepared() const { return b_; }
-
- private:
-  dspbr_shader::DspbrBsdf b_;
-};
+// The shader library's C++ compile behind the reference's Bsdf interface (src/dspbr/shader/shader_bsdf.h).
+using dspbr::shader::ShaderBsdf;
 
 }  // namespace shader_test

@@ -154,9 +154,8 @@ std::vector<std::pair<Vec3, Vec3>> extreme_pairs(const Case& c) {
 // direction, weight and probability, and its probability times kSweep is the interval's length, so
 // a run of k identical samples is round(k / (pdf kSweep)) lobes (several when identical lobes are
 // adjacent). Lobes towards the same direction are summed. The probabilities found must not exceed
-// delta_probability(v).
-std::vector<DeltaExpectation> delta_lobes(const MaterialBsdf& b, const Vec3& v) {
-  const double p_delta = b.delta_probability(v);
+// p_delta, the probability of the delta lobes at v (infinite: unknown, not checked).
+std::vector<DeltaExpectation> delta_lobes(const Bsdf& b, const Vec3& v, double p_delta) {
   if (!(p_delta > 0)) return {};
   constexpr int kSweep = 8192;
   std::vector<DeltaExpectation> out;
@@ -223,7 +222,7 @@ double max_channel_difference(const Rgb& a, const Rgb& b) {
 // The directional albedo of the non-delta lobes at v: a product rule over both hemispheres,
 // mu_panels x 4 Gauss-Legendre nodes in cos theta_l and phi_steps midpoints in phi
 // (integral of f |cos theta_l| dl = integral of f mu dmu dphi).
-Rgb albedo_quadrature(const MaterialBsdf& b, const Vec3& v, int mu_panels, int phi_steps) {
+Rgb albedo_quadrature(const Bsdf& b, const Vec3& v, int mu_panels, int phi_steps) {
   static const QuadratureRule rule = gauss_legendre(4);
   Rgb sum{0, 0, 0};
   const double h = 1.0 / mu_panels, dphi = 2 * kPi / phi_steps;
@@ -316,7 +315,7 @@ std::vector<Vector> case_vectors(const Case& c, std::size_t index, const Generat
       x.emission_tolerance = {kFloatAbsolute, kFloatRelative};
     }
     try {
-      x.delta = delta_lobes(ref, x.v);
+      x.delta = delta_lobes(ref, x.v, ref.delta_probability(x.v));
     } catch (const std::logic_error& e) {
       throw std::logic_error(x.id + ": " + e.what());
     }
@@ -601,7 +600,7 @@ void expect_with(std::vector<Vector>& vectors, const Representation& r) {
       const MaterialBsdf b = represented_bsdf(v, vector_material(v), r);
       v.f_cos = b.eval(v.v, v.l) * std::abs(v.l.z);
       v.pdf = b.pdf(v.v, v.l);
-      v.delta = delta_lobes(b, v.v);
+      v.delta = delta_lobes(b, v.v, b.delta_probability(v.v));
       if (v.albedo && r.min_roughness == 0) {  // the finer of generate's two quadratures, with the delta lobes
         Rgb a = albedo_quadrature(b, v.v, 32, 128);
         for (const DeltaExpectation& d : v.delta) a = a + d.value;
@@ -611,6 +610,22 @@ void expect_with(std::vector<Vector>& vectors, const Representation& r) {
       throw std::runtime_error("vector '" + v.id + "': " + e.what());
     }
   });
+}
+
+Result implementation_result(const Vector& x, const Bsdf& b) {
+  Result r;
+  r.id = x.id;
+  r.f_cos = b.eval(x.v, x.l) * std::abs(x.l.z);
+  r.pdf = b.pdf(x.v, x.l);
+  // The sweep only where b says it has a Dirac lobe (8192 samples a vector).
+  r.delta = (b.flags() & kLobeDelta) ? delta_lobes(b, x.v, std::numeric_limits<double>::infinity())
+                                     : std::vector<DeltaExpectation>{};
+  if (x.albedo) {  // generate's finer quadrature, with the delta lobes
+    Rgb a = albedo_quadrature(b, x.v, 32, 128);
+    for (const DeltaExpectation& d : *r.delta) a = a + d.value;
+    r.albedo = a;
+  }
+  return r;
 }
 
 std::vector<Vector> generate_vectors(const GenerateSettings& s) {

@@ -40,6 +40,7 @@ std::vector<Vector> generate_vectors(const GenerateSettings& s);
 }  // namespace dspbr::conformance
 
 #include "dspbr/bsdf/material_bsdf.h"
+#include "dspbr/conformance/results.h"
 
 namespace dspbr::conformance {
 
@@ -55,6 +56,13 @@ struct Evaluation {
   double pdf = 0;
 };
 Evaluation evaluate(const Vector& v, const LutSet& luts);
+
+// What an implementation behind the Bsdf interface gives for vector x, as `conformance check`
+// judges it: f cos and pdf, the delta lobes (the sweep of generate, where b.flags() has a Dirac
+// lobe) and, where x has one, the albedo (generate's finer quadrature plus the delta lobes). The
+// emission is not part of Bsdf: left out. `dspbr validate` judges the shader library's C++ compile
+// with it (src/dspbr/shader/shader_validation.h).
+Result implementation_result(const Vector& x, const Bsdf& b);
 
 // How an implementation represents DSPBR where it differs from the reference by design
 // (`conformance check --tables`, `--min-roughness`).

@@ -95,6 +95,9 @@ struct Builder {
     c.component = comp;
     c.params = params;
     c.bsdf = component(comp, m, opt);
+    c.material = m;
+    c.options = opt;
+    c.options.transmission_compensation = opt.transmission_compensation || compensate;
     c.claim = claim;
     c.note = note;
     const Flake flake = flake_at(opt.position, opt.object_normal, m);
@@ -327,14 +330,14 @@ Catalog dspbr_catalog(const CatalogOptions& opt) {
       Material m = base.m;
       mut(m);
       try {
-        cat.stability.push_back({base.comp, label, b.component(base.comp, m)});
+        cat.stability.push_back({base.comp, label, b.component(base.comp, m), m, {}});
       } catch (const std::exception& e) {
         cat.skipped.push_back(fmt::format("stability {} / {}: rejected: {}", base.comp, label, e.what()));
       }
     }
   }
   for (double g : {-1.0, -0.999999, 0.0, 1e-9, 0.5, 0.999999, 1.0})
-    cat.stability.push_back({"volume_scattering", "g=" + fmt_num(g), std::make_shared<HgPhaseAsBsdf>(g)});
+    cat.stability.push_back({"volume_scattering", "g=" + fmt_num(g), std::make_shared<HgPhaseAsBsdf>(g), std::nullopt, {}});
   // Random materials: every parameter uniform over its range (IOR in [1, 4], flake size in [0, 2] mm).
   for (std::size_t i = 0; i < opt.random_materials; ++i) {
     Pcg32 rng(opt.seed, 0x52414e44ULL + i);
@@ -368,7 +371,7 @@ Catalog dspbr_catalog(const CatalogOptions& opt) {
     m.thinWalled = u() < 0.5;
     m.ior = 1 + 3 * u();
     try {
-      cat.stability.push_back({"random materials", fmt::format("random #{}", i), b.component("material", m)});
+      cat.stability.push_back({"random materials", fmt::format("random #{}", i), b.component("material", m), m, {}});
     } catch (const std::exception& e) {
       cat.skipped.push_back(fmt::format("stability random #{}: rejected: {}", i, e.what()));
     }

@@ -6,10 +6,13 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "dspbr/bsdf/bsdf.h"
+#include "dspbr/bsdf/lobe_assembly.h"
+#include "dspbr/material.h"
 #include "dspbr/tables/lut_set.h"
 #include "dspbr/validate/albedo_quadrature.h"
 
@@ -41,12 +44,18 @@ struct BsdfCase {
   // Where f(v, .) jumps (the flake's cone), for the furnace's quadrature (albedo_quadrature.h);
   // empty: nowhere.
   std::function<std::vector<FeatureCone>(const Vec3& v)> cones;
+  // The whole material and options the case was built from (none: not a material, e.g. the phase
+  // function), so that another implementation of DSPBR can be checked on the same case.
+  std::optional<Material> material;
+  BsdfOptions options;
 };
 
 struct StabilityCase {
   std::string component;  // component or "random materials"
   std::string corner;     // e.g. "roughness=0"
   std::shared_ptr<const Bsdf> bsdf;
+  std::optional<Material> material;  // as BsdfCase::material
+  BsdfOptions options;
 };
 
 struct FurnaceRow {

@@ -65,12 +65,14 @@ struct Verdicts {
   std::vector<std::string> failures, waived;
   json listed = json::array();
   std::vector<int> waiver_uses = std::vector<int>(dspbr_waivers().size(), 0);
+  std::string prefix;  // before each check's name (another implementation's verdicts); waivers match the name alone
 
   static std::string where(const std::string& name, double cos) {
     return std::isfinite(cos) ? fmt::format("{} at cos={}", name, cos) : name;
   }
   // A judged verdict on case `name` (at view cosine `cos`, or kNoView). Returns its status.
-  Status add(const std::string& check, bool ok, const std::string& name, double cos, const std::string& detail) {
+  Status add(const std::string& check_name, bool ok, const std::string& name, double cos, const std::string& detail) {
+    const std::string check = prefix + check_name;
     Count& c = counts[check];
     const std::string what = where(name, cos) + ": " + detail;
     if (ok) {
@@ -79,7 +81,7 @@ struct Verdicts {
     }
     const auto& ws = dspbr_waivers();
     for (std::size_t k = 0; k < ws.size(); ++k)
-      if (waiver_applies(ws[k], check, name, cos, luts)) {
+      if (waiver_applies(ws[k], check_name, name, cos, luts)) {
         ++c.waived;
         ++waiver_uses[k];
         waived.push_back(check + ": " + what + " [waiver " + ws[k].id + "]");
@@ -100,8 +102,9 @@ struct Verdicts {
     return add(check, b.decision == Decision::Pass, name, cos, detail);
   }
   // A verdict the run does not judge (the numbers are still reported), with the reason.
-  Status not_judged(const std::string& check, const std::string& name, double cos, const std::string& detail,
+  Status not_judged(const std::string& check_name, const std::string& name, double cos, const std::string& detail,
                     const std::string& reason) {
+    const std::string check = prefix + check_name;
     ++counts[check].not_judged;
     listed.push_back({{"check", check}, {"what", where(name, cos) + ": " + detail},
                       {"status", status_word(Status::NotJudged)}, {"reason", reason}});
@@ -824,7 +827,36 @@ std::string utc_now() {
   return buf;
 }
 
-SuiteResult run_suite(const Catalog& cat, const LutSet* luts, const SuiteSettings& s, const std::string& dir) {
+namespace {
+
+json cases_json(const Catalog& cat) {
+  json cases = json::array();
+  for (const BsdfCase& c : cat.cases)
+    cases.push_back({{"case", c.name}, {"component", c.component}, {"params", c.params}, {"claim", claim_name(c.claim)},
+                     {"note", c.note}});
+  return cases;
+}
+
+// The conformance verdicts of another implementation: one per group of the vector set.
+json run_other_conformance(const OtherImplementation& other, Verdicts& verdicts) {
+  json groups = json::array();
+  std::size_t vectors = 0, failed = 0;
+  for (const ConformanceGroup& g : other.conformance()) {
+    const Status st = verdicts.add("conformance: vectors within tolerance", g.failed == 0, g.group, kNoView,
+                                   fmt::format("{} of {} vectors fail (worst error / tolerance {:.3g}, {})", g.failed,
+                                               g.vectors, g.worst_ratio, g.worst_id));
+    groups.push_back({{"group", g.group}, {"vectors", g.vectors}, {"failed", g.failed}, {"worst_ratio", g.worst_ratio},
+                      {"worst_id", g.worst_id}, {"verdict", status_word(st)}});
+    vectors += g.vectors;
+    failed += g.failed;
+  }
+  return {{"vector_set", other.vector_set}, {"vectors", vectors}, {"failed", failed}, {"groups", groups}};
+}
+
+}  // namespace
+
+SuiteResult run_suite(const Catalog& cat, const LutSet* luts, const SuiteSettings& s, const std::string& dir,
+                      const OtherImplementation* other) {
   Verdicts verdicts;
   verdicts.luts = cat.luts ? cat.luts : luts;  // waivers of table effects follow the BSDF's tables
   json report;
@@ -838,28 +870,41 @@ SuiteResult run_suite(const Catalog& cat, const LutSet* luts, const SuiteSetting
   report["run"] = {{"date_utc", utc_now()}, {"threads", tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)},
                    {"command_line", s.command_line}};
   report["skipped"] = cat.skipped;
-  json cases = json::array();
-  for (const BsdfCase& c : cat.cases)
-    cases.push_back({{"case", c.name}, {"component", c.component}, {"params", c.params}, {"claim", claim_name(c.claim)},
-                     {"note", c.note}});
-  report["cases"] = cases;
+  report["cases"] = cases_json(cat);
   // Wall-clock time per phase: reported on stderr only (the report stays bit-identical).
   auto timed = [&](const char* name, auto&& f) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::clock_t c0 = std::clock();  // processor time of all threads
-    report[name] = f();
+    json r = f();
     if (s.progress)
       print_phase_time(name, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
                        double(std::clock() - c0) / CLOCKS_PER_SEC);
+    return r;
   };
-  timed("energy", [&] { return run_energy(cat, s, verdicts); });
-  timed("reciprocity", [&] { return run_reciprocity(cat, s, verdicts); });
-  timed("chi2", [&] { return run_chi2(cat, s, verdicts); });
-  timed("stability", [&] { return run_stability(cat, s, verdicts); });
-  timed("tables", [&] { return run_luts(luts, s, verdicts); });
+  report["energy"] = timed("energy", [&] { return run_energy(cat, s, verdicts); });
+  report["reciprocity"] = timed("reciprocity", [&] { return run_reciprocity(cat, s, verdicts); });
+  report["chi2"] = timed("chi2", [&] { return run_chi2(cat, s, verdicts); });
+  report["stability"] = timed("stability", [&] { return run_stability(cat, s, verdicts); });
+  report["tables"] = timed("tables", [&] { return run_luts(luts, s, verdicts); });
   if (!luts) report["skipped"].push_back("tables: no LUT file (luts/dspbr_luts.json) could be loaded");
-  timed("furnace_images", [&] { return run_images(cat, s, dir); });
-  timed("convergence", [&] { return run_convergence(cat, s); });
+  report["furnace_images"] = timed("furnace_images", [&] { return run_images(cat, s, dir); });
+  report["convergence"] = timed("convergence", [&] { return run_convergence(cat, s); });
+  if (other) {
+    // The same checks with the same settings (the chi-square's consistency within the other's
+    // rounding; no histograms), its verdicts named apart.
+    SuiteSettings so = s;
+    so.chi2.consistency_tol = std::max(s.chi2.consistency_tol, other->consistency_tol);
+    so.chi2_histograms = 0;
+    verdicts.prefix = "shader library: ";
+    json lib = {{"name", other->name}, {"cases", cases_json(other->catalog)}, {"left_out", other->left_out},
+                {"consistency_tol", so.chi2.consistency_tol}};
+    lib["energy"] = timed("lib energy", [&] { return run_energy(other->catalog, so, verdicts); });
+    lib["chi2"] = timed("lib chi2", [&] { return run_chi2(other->catalog, so, verdicts); });
+    lib["stability"] = timed("lib stability", [&] { return run_stability(other->catalog, so, verdicts); });
+    lib["conformance"] = timed("lib conformance", [&] { return run_other_conformance(*other, verdicts); });
+    report["shader_library"] = lib;
+    verdicts.prefix.clear();
+  }
   // The table integrators' trade (docs/design/luts.md, "Speed"): the committed study, plotted by the report.
   report["integrator_study"] = {{"source", "luts/integrator_study.csv (dspbr lut --bench-integrators)"},
                                 {"csv", std::string(committed_integrator_study_csv())}};

@@ -5,6 +5,7 @@
 // The HTML report and plots are made from report.json by scripts/report/make_report.py.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -88,10 +89,33 @@ void print_phase_time(const char* name, double wall_s, double cpu_s);
 // have none.
 std::vector<std::string> missing_tables(const LutSet& luts);
 
+// Another implementation of DSPBR checked in the same report (section "shader_library": the shader
+// library's C++ compile, src/dspbr/shader/shader_validation.h): the same furnace, chi-square and
+// stability checks on its own catalog, and its conformance over a vector set, one verdict per group.
+// Its verdicts count under their check's name prefixed with "shader library: ".
+struct ConformanceGroup {
+  std::string group;
+  std::size_t vectors = 0, failed = 0;
+  double worst_ratio = 0;  // the largest error / tolerance of a vector
+  std::string worst_id;    // that vector
+};
+struct OtherImplementation {
+  std::string name;          // e.g. "shader library (C++ compile, float)"
+  Catalog catalog;           // the cases and stability corners it is checked on
+  std::vector<std::string> left_out;  // the reference's cases it is not checked on, and why
+  // Pdf and sample weight against eval and pdf, relative (the chi-square's consistency check):
+  // an implementation in float rounds where the reference does not.
+  double consistency_tol = 1e-6;
+  std::string vector_set;  // what the conformance verdicts judge, e.g. "the default vectors (2384)"
+  std::function<std::vector<ConformanceGroup>()> conformance;  // run and timed by the suite
+};
+
 // Runs everything on `catalog` and the tables in `luts` (null: table checks skipped; also used to
 // place the table-layout waivers) and writes DIR/data/report.json and DIR/images/. Deterministic
 // for a given seed whatever the thread count, except the report's "run" object (date, thread
 // count, command line).
-SuiteResult run_suite(const Catalog& catalog, const LutSet* luts, const SuiteSettings& s, const std::string& dir);
+// With `other`, that implementation's checks as well (report["shader_library"]).
+SuiteResult run_suite(const Catalog& catalog, const LutSet* luts, const SuiteSettings& s, const std::string& dir,
+                      const OtherImplementation* other = nullptr);
 
 }  // namespace dspbr::validate
