@@ -894,6 +894,7 @@ SuiteResult run_suite(const Catalog& cat, const LutSet* luts, const SuiteSetting
     // rounding; no histograms), its verdicts named apart.
     SuiteSettings so = s;
     so.chi2.consistency_tol = std::max(s.chi2.consistency_tol, other->consistency_tol);
+    if (other->chi2_samples_max > 0) so.chi2.samples = std::min(so.chi2.samples, other->chi2_samples_max);
     so.chi2_histograms = 0;
     verdicts.prefix = "shader library: ";
     json lib = {{"name", other->name}, {"cases", cases_json(other->catalog)}, {"left_out", other->left_out},

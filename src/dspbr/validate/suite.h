@@ -106,6 +106,8 @@ struct OtherImplementation {
   // Pdf and sample weight against eval and pdf, relative (the chi-square's consistency check):
   // an implementation in float rounds where the reference does not.
   double consistency_tol = 1e-6;
+  // At most this many samples per chi-square test (0: the reference's count).
+  std::size_t chi2_samples_max = 0;
   std::string vector_set;  // what the conformance verdicts judge, e.g. "the default vectors (2384)"
   std::function<std::vector<ConformanceGroup>()> conformance;  // run and timed by the suite
 };
