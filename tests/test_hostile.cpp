@@ -397,6 +397,27 @@ TEST(Hostile, GltfEmissionBeyondTheLargestNumberIsRefused) {
 // An output path that names a FIFO, a device or a link to one is refused before anything is
 // written and keeps its type (before: rename(2) replaced it by a regular file, /dev/full included
 // when run as root); a link to a regular file is still replaced by the new file, not written through.
+// A file of the set whose place in --out is taken by a folder or a FIFO is bad input, as an --out
+// that is a file: exit 2, nothing written (the eleventh fresh tester's pass: exit 1).
+TEST(Hostile, AFolderWhereAnOutputFileGoesIsBadInput) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(::testing::TempDir()) / "hostile_folder_in_the_way";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "folder" / "dspbr_specialization.h");
+  fs::create_directories(dir / "fifo");
+  ASSERT_EQ(::mkfifo((dir / "fifo" / "dspbr_specialization.h").c_str(), 0600), 0);
+  for (const char* sub : {"folder", "fifo"}) {
+    const ToolRun run = run_dspbr("shader --components sheen --out " + (dir / sub).string());
+    EXPECT_EQ(run.status, 2) << sub << ": " << run.output;
+    EXPECT_NE(run.output.find((dir / sub / "dspbr_specialization.h").string()), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("nothing written"), std::string::npos) << run.output;
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir / sub), fs::directory_iterator()), 1) << sub;
+  }
+  EXPECT_TRUE(fs::is_directory(dir / "folder" / "dspbr_specialization.h"));
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(dir / "fifo" / "dspbr_specialization.h")));
+  fs::remove_all(dir);
+}
+
 TEST(Hostile, OutputsNeverReplaceAFifoOrADevice) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::path(::testing::TempDir()) / "hostile_special_outputs";

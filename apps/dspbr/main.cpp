@@ -20,6 +20,7 @@
 #include "baseline_libm.h"
 #include "commands.h"
 #include "report_script.h"
+#include "dspbr/io/atomic_file.h"
 #include "dspbr/io/message.h"
 #include "dspbr/nearest_name.h"
 #include "dspbr/version.h"
@@ -176,6 +177,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "dspbr: error: %s\n", dspbr::one_line(unknown.empty() ? e.what() : unknown).c_str());
     return 2;
   } catch (const dspbr::cli::UsageError& e) {
+    std::fprintf(stderr, "dspbr: error: %s\n", dspbr::one_line(e.what()).c_str());
+    return 2;
+  } catch (const dspbr::NotReplaceable& e) {  // an output path taken by a folder, FIFO, ...: bad input
     std::fprintf(stderr, "dspbr: error: %s\n", dspbr::one_line(e.what()).c_str());
     return 2;
   } catch (const dspbr::cli::Unavailable& e) {

@@ -25,13 +25,13 @@ void require_replaceable(const std::string& path) {
     const fs::file_status to = fs::status(target, ec);
     if (ec || !fs::exists(to) || fs::is_regular_file(to)) return;
   }
-  throw std::runtime_error("cannot write '" + path + "': it exists and is not a regular file (a folder, FIFO, device, "
+  throw NotReplaceable("cannot write '" + path + "': it exists and is not a regular file (a folder, FIFO, device, "
                            "socket or a link to one); name a file path");
 }
 
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
   const fs::path target(path);
-  if (!target.has_filename()) throw std::runtime_error("cannot write '" + path + "': give a file name, not a folder");
+  if (!target.has_filename()) throw NotReplaceable("cannot write '" + path + "': give a file name, not a folder");
   require_replaceable(path);
   const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;

@@ -121,20 +121,20 @@ std::vector<std::string> OutputFolder::commit() {
       }
       if (!is_real_folder(folder)) {
         s.remove_own();
-        throw std::runtime_error("'" + folder.string() + "' is not a folder (a symbolic link or a file): nothing written");
+        throw NotReplaceable("'" + folder.string() + "' is not a folder (a symbolic link or a file): nothing written");
       }
     }
     // rename(2) replaces a file or a symbolic link, not a folder.
     if (is_real_folder(fs::path(s.dir) / rel)) {
       s.remove_own();
-      throw std::runtime_error("'" + (fs::path(s.dir) / rel).string() + "' is a folder: nothing written");
+      throw NotReplaceable("'" + (fs::path(s.dir) / rel).string() + "' is a folder: nothing written");
     }
     // ... nor should it replace a FIFO, a device or a socket (or a link to one) by a regular file.
     try {
       require_replaceable((fs::path(s.dir) / rel).string());
-    } catch (const std::runtime_error& e) {
+    } catch (const NotReplaceable& e) {
       s.remove_own();
-      throw std::runtime_error(std::string(e.what()) + ": nothing written");
+      throw NotReplaceable(std::string(e.what()) + ": nothing written");
     }
   }
   // All or nothing: every file in place that the set replaces is first hard-linked into a folder

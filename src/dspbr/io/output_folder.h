@@ -32,6 +32,8 @@ class OutputFolder {
   // sub-folders), removes the staging folder; returns the relative paths moved, sorted. All or
   // nothing: throws std::runtime_error naming the file when one cannot be moved, after putting
   // back the files moved before it (docs/limits.md, "Output folders"); the rest is discarded.
+  // NotReplaceable (io/atomic_file.h), before any move, when a file's place is a folder, a FIFO, a
+  // device or a link to one, or a sub-folder's place is not a real folder.
   std::vector<std::string> commit();
 
   // Removes the staging folder and the folders the constructor created (when empty); says what
