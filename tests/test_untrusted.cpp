@@ -418,6 +418,36 @@ TEST(Untrusted, LutForASceneWithoutMaterials) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// A material instance file has one size limit whichever command reads it: --scene refuses what
+// eval --material refuses (the tenth fresh tester's pass: a 19 MB instance passed --scene).
+TEST(Untrusted, AMaterialInstanceHasOneSizeLimit) {
+  const fs::path dir = fresh("instance_limit");
+  const std::string instance = R"({"material": "generic", "values": {"roughness": 0.3}})";
+  write(dir / "big.json", instance.substr(0, instance.size() - 1) + std::string(17 << 20, ' ') + "}");
+  const std::string file = (dir / "big.json").string();
+  for (const std::string& cmd : {"eval --view 0,0,1 --light 0,0,1 --material " + file,
+                                 "lut --scene " + file + " --out " + (dir / "l").string(),
+                                 "shader --scene " + file + " --out " + (dir / "s").string()}) {
+    const ToolRun r = run_dspbr(cmd);
+    EXPECT_EQ(r.status, 2) << cmd << ": " << r.output;
+    EXPECT_NE(r.output.find("big.json is 17.0 MB, larger than the limit of 16.0 MB"), std::string::npos) << r.output;
+  }
+  EXPECT_FALSE(fs::exists(dir / "l") || fs::exists(dir / "s"));
+}
+
+// eval and sample take each parameter once: a second --set of the same one is an error naming
+// both (the eleventh fresh tester's pass: the last value was taken silently); different ones pass.
+TEST(Untrusted, EachParameterIsSetOnce) {
+  for (const char* cmd : {"eval --light 0,0,1", "sample --u 0.5,0.5,0.5"}) {
+    const ToolRun twice = run_dspbr(std::string(cmd) + " --view 0,0,1 --set roughness=0.3 --set metallic=1 --set roughness=0.5");
+    EXPECT_EQ(twice.status, 2) << twice.output;
+    EXPECT_EQ(twice.output, "dspbr: error: --set roughness=0.5: roughness is already set by --set roughness=0.3; give "
+                            "each parameter once\n");
+    const ToolRun once = run_dspbr(std::string(cmd) + " --view 0,0,1 --set roughness=0.3 --set metallic=1");
+    EXPECT_EQ(once.status, 0) << once.output;
+  }
+}
+
 // A stray comma in a list option is refused, whole value quoted (found by the third fresh tester's
 // pass: eval/shader --components, fit --only and check --groups/--components took "a," as "a").
 TEST(Untrusted, StrayCommasInListsAreRefused) {

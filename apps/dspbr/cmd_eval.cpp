@@ -12,6 +12,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -105,11 +106,16 @@ Material build_material(const EvalArgs& a) {
       throw UsageError(e.what());
     }
   }
+  std::map<std::string, std::string> given;  // id -> its --set, for a parameter given twice
   for (const std::string& s : a.sets) {
     const auto eq = s.find('=');
     if (eq == std::string::npos || eq == 0)
       throw UsageError("--set expects id=value (e.g. --set roughness=0.3), got '" + s + "'");
     const std::string id = s.substr(0, eq), value = s.substr(eq + 1);
+    // Two values for one parameter are a mistake, not an override (the eleventh fresh tester's
+    // pass: the last one was taken silently).
+    if (!given.emplace(id, s).second)
+      throw UsageError("--set " + s + ": " + id + " is already set by --set " + given[id] + "; give each parameter once");
     try {
       set_material_parameter(m, id, parse_parameter_text(id, value));
     } catch (const std::exception& e) {
@@ -170,7 +176,7 @@ Json flags_json(uint32_t f) {
 void add_common_options(CLI::App* cmd, EvalArgs& a) {
   cmd->add_option("--material", a.material_file,
                   "Material instance file {\"material\": TYPE, \"values\": {...}} (default: generic defaults)");
-  cmd->add_option("--set", a.sets, "Set a parameter by its JSON id: id=value (colours r,g,b); repeatable")
+  cmd->add_option("--set", a.sets, "Set a parameter by its JSON id: id=value (colours r,g,b); repeatable, once per parameter")
       ->take_all();
   cmd->add_option("--view", a.view, "View direction v as x,y,z (local frame, normal +z)")->required();
   cmd->add_option("--sheen", a.sheen, "Sheen visibility: main (spec Lambda fit) or ash (alternative)")

@@ -82,16 +82,18 @@ std::string RegularFile::read(std::uint64_t max_bytes) const {
   return out;
 }
 
+void require_at_most(const std::string& path, std::uint64_t size, std::uint64_t max_bytes) {
+  if (size > max_bytes)
+    fail(path, " is " + bytes_text(size) + ", larger than the limit of " + bytes_text(max_bytes) +
+                   " for this kind of file (docs/limits.md)");
+}
+
 std::string read_file(const std::string& path, std::uint64_t max_bytes) {
   const RegularFile f(path);
   // The size from fstat, and again while reading (a file that grows meanwhile).
-  auto too_large = [&](std::uint64_t n) {
-    fail(path, " is " + bytes_text(n) + ", larger than the limit of " + bytes_text(max_bytes) +
-                   " for this kind of file (docs/limits.md)");
-  };
-  if (f.size() > max_bytes) too_large(f.size());
+  require_at_most(path, f.size(), max_bytes);
   std::string out = f.read(max_bytes + 1);
-  if (out.size() > max_bytes) too_large(out.size());
+  require_at_most(path, out.size(), max_bytes);
   return out;
 }
 

@@ -35,6 +35,9 @@ class RegularFile {
 // The whole file, a regular file of at most `max_bytes` (else "<path> is 2.1 GB, larger than the
 // limit of 16 MB for this kind of file (docs/limits.md)").
 std::string read_file(const std::string& path, std::uint64_t max_bytes);
+// Throws read_file's "<path> is ..., larger than the limit of ..." when size > max_bytes: for a
+// file read under one limit and found to be a kind with a smaller one.
+void require_at_most(const std::string& path, std::uint64_t size, std::uint64_t max_bytes);
 
 // A byte count as the messages write it: "22.8 MB", "16.0 MB", "512 bytes".
 std::string bytes_text(std::uint64_t n);

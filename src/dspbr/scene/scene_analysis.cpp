@@ -39,6 +39,7 @@ void finish(MaterialAnalysis& a, SceneAnalysis& s, bool compensation) {
 
 SceneAnalysis analyze_scene(const std::string& path, bool transmission_compensation) {
   std::string bytes = read_file(path, limits::kGltfBytes);
+  const std::uint64_t size = bytes.size();
   SceneAnalysis s;
   s.path = path;
   s.transmission_compensation = transmission_compensation;
@@ -50,7 +51,9 @@ SceneAnalysis analyze_scene(const std::string& path, bool transmission_compensat
     std::string().swap(bytes);  // the document holds it all now
   }
   if (!glb && doc.is_object() && doc.contains("material") && !doc.contains("asset")) {
-    // A material instance file.
+    // A material instance file: the limit of one, whichever command reads it (`eval --material`
+    // too; the tenth fresh tester's pass: a 19 MB instance was refused there and read here).
+    require_at_most(path, size, limits::kDocumentBytes);
     const ParamDefs defs = default_param_defs();
     MaterialAnalysis a;
     a.name = doc["material"].is_string() ? doc["material"].get<std::string>() : "material";
