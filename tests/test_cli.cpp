@@ -103,6 +103,13 @@ TEST(Cli, UnknownOptionsAndParametersGetTheNearestName) {
                      "unknown material parameter 'rougness'; did you mean 'roughness'?");
   // --opt=value forms are names too; a known option with a value passes through to CLI11.
   expect_usage_error("eval --veiw=0,0,1 --light 0,0,1", "did you mean '--view'?");
+  // A name in another case is offered itself, before longer names it begins (the tenth fresh
+  // tester's pass: 'ggx_e' was offered 'GGX_E_avg').
+  expect_usage_error("lut --out x --tables GGX_E --size ggx_e=16x16", "unknown table 'ggx_e'; did you mean 'GGX_E'?");
+  expect_usage_error("lut --out x --tables ggx_e_AVG", "unknown table 'ggx_e_AVG'; did you mean 'GGX_E_avg'?");
+  // --size takes no spaces, anywhere (they were trimmed around the numbers only).
+  for (const char* size : {"' GGX_E=16x16'", "'GGX_E=16 x16'", "'GGX_E= 16x16'"})
+    expect_usage_error(std::string("lut --out x --tables GGX_E --size ") + size, "holds a space: give NAME=SIZE without spaces");
 }
 
 // Colour parameters take one number (grey) or three, on the command line as in files.

@@ -91,6 +91,10 @@ LutOptions to_options(const LutArgs& a) {
     }
   }
   for (const std::string& s : a.sizes) {
+    // One policy for spaces: none (they were trimmed around the numbers but not around the name;
+    // the tenth fresh tester's pass).
+    if (s.find_first_of(" \t\n\r\f\v") != std::string::npos)
+      throw UsageError("--size: '" + s + "' holds a space: give NAME=SIZE without spaces, e.g. GGX_E=64x64");
     const auto eq = s.find('=');
     if (eq == std::string::npos) throw UsageError("--size: '" + s + "' is not NAME=SIZE, e.g. GGX_E=64x64");
     const std::string name = s.substr(0, eq);

@@ -10,9 +10,9 @@ namespace dspbr {
 // Levenshtein distance: insertions, deletions and substitutions of one character.
 std::size_t edit_distance(const std::string& a, const std::string& b);
 
-// The name of `names` nearest to `word` when at most `max_edits` edits away (the first of equals);
-// else the first name that `word` (3 characters or more) begins, ignoring case ('sheen' ->
-// 'sheenColor'); else "".
+// The name of `names` that is `word` in another case ('ggx_e' -> 'GGX_E'); else the one nearest
+// to `word` when at most `max_edits` edits away (the first of equals); else the first name that
+// `word` (3 characters or more) begins, ignoring case ('sheen' -> 'sheenColor'); else "".
 std::string nearest_name(const std::string& word, const std::vector<std::string>& names, std::size_t max_edits = 2);
 
 // "; did you mean 'NAME'?" for the nearest_name of word, else "" (appended to an error message).
