@@ -360,6 +360,19 @@ TEST(ShaderLibrary, DirectionsOfAnyLengthAsUnitOnes) {
   const vec3 vu = vec3(0.3f, 0.2f, 0.9f) / std::sqrt(0.94f), lu = vec3(-0.3f, -0.2f, 0.9f) / std::sqrt(0.94f);
   const vec3 f_unit = dspbr_shader::dspbr_eval(mb.prepared(), vu, lu);
   ASSERT_GT(f_unit.x, 0.0f);
+  // So are material normals: a normal map's (0, 0.6, 0.8) at any length gives the same BSDF (one
+  // below about 1e-19 was +z).
+  Material tilted = metal;
+  tilted.normal = {0, 0.6, 0.8};
+  const vec3 f_tilted = dspbr_shader::dspbr_eval(shader_test::ShaderBsdf(tilted, BsdfOptions{}).prepared(), vu, lu);
+  ASSERT_GT(f_tilted.x, 0.0f);
+  for (float scale : {1e-30f, 1e-37f, 1e20f, 3e38f}) {  // (below 1e-38 the input itself is denormal)
+    dspbr_shader::DspbrMaterial m = shader_test::to_shader_material(tilted);
+    m.normal = m.normal * scale;
+    const dspbr_shader::DspbrBsdf b = dspbr_shader::dspbr_prepare(m, dspbr_shader::dspbr_identity_frame(), dspbr_shader::dspbr_default_options());
+    EXPECT_NEAR(dspbr_shader::dspbr_eval(b, vu, lu).x, f_tilted.x, 1e-5f * f_tilted.x) << "normal x " << scale;
+    EXPECT_NEAR(b.core.n.y, 0.6f, 1e-6f) << scale;
+  }
   for (float scale : {1e-30f, 1e-40f, 1e20f, 1e30f, 3e38f}) {
     EXPECT_NEAR(dspbr_shader::dspbr_eval(mb.prepared(), vu * scale, lu * scale).x, f_unit.x, 1e-5f * f_unit.x) << scale;
     EXPECT_NEAR(dspbr_shader::dspbr_pdf(mb.prepared(), vu * scale, lu * scale), dspbr_shader::dspbr_pdf(mb.prepared(), vu, lu),

@@ -95,17 +95,17 @@ DSPBR_CONST float dspbr_unit_tolerance = 1e-5f;
 // Any other finite non-zero one is divided by its largest |component| first, so that its squared
 // length neither overflows nor underflows (the eleventh fresh tester's pass: v of length 1e20 or
 // 1e-30 had no value).
-DSPBR_FN vec3 dspbr_unit_direction(vec3 w) {
-  float len2 = dot(w, w);
-  if (abs(len2 - 1.0f) <= dspbr_unit_tolerance) return w;
+// w / |w| with w divided by its largest |component| first; `otherwise` for a zero, NaN or infinite w.
+DSPBR_FN vec3 dspbr_scaled_unit(vec3 w, vec3 otherwise) {
   float m = max(max(abs(w.x), abs(w.y)), abs(w.z));
-  if (!(m > 0.0f) || isinf(m) || isnan(w.x + w.y + w.z)) return vec3(0.0f, 0.0f, 0.0f);
+  if (!(m > 0.0f) || isinf(m) || isnan(w.x + w.y + w.z)) return otherwise;
   vec3 s = w / m;
   return s / length(s);
 }
-// A material normal made unit; a zero, NaN or infinite one is +z (the unperturbed normal).
-DSPBR_FN vec3 dspbr_unit_normal(vec3 n) {
-  float len = length(n);
-  if (!(len > 0.0f) || isinf(len)) return vec3(0.0f, 0.0f, 1.0f);
-  return n / len;
+DSPBR_FN vec3 dspbr_unit_direction(vec3 w) {
+  if (abs(dot(w, w) - 1.0f) <= dspbr_unit_tolerance) return w;
+  return dspbr_scaled_unit(w, vec3(0.0f, 0.0f, 0.0f));
 }
+// A material normal made unit, scaled first as a direction is (a normal map's normal of length
+// below about 1e-19 was +z); a zero, NaN or infinite one is +z (the unperturbed normal).
+DSPBR_FN vec3 dspbr_unit_normal(vec3 n) { return dspbr_scaled_unit(n, vec3(0.0f, 0.0f, 1.0f)); }
