@@ -852,11 +852,42 @@ float dspbr_lut_interp_dspbr_Sheen_ash_E(float x0, float x1) {
   float r3 = i + 2 < 32 ? q3 : 2.0f * r2 - r1;
   return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
 }
+float dspbr_GGX_E_missing_at(int r, int c) { return 1.0f - dspbr_GGX_E_at(r, c); }
+float dspbr_lut_row_dspbr_GGX_E_missing(int r, int j, float f) {
+  float p1 = dspbr_GGX_E_missing_at(r, j), p2 = dspbr_GGX_E_missing_at(r, j + 1);
+  float q0 = dspbr_GGX_E_missing_at(r, j > 0 ? j - 1 : 0), q3 = dspbr_GGX_E_missing_at(r, j + 2 < 64 ? j + 2 : 64 - 1);
+  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;
+  float p3 = j + 2 < 64 ? q3 : 2.0f * p2 - p1;
+  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
+}
+float dspbr_lut_interp_dspbr_GGX_E_missing(float x0, float x1) {
+  float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 63.0f;
+  int i = int(c0);
+  if (i < 0) i = 0;
+  if (i > 30) i = 30;
+  int j = int(c1);
+  if (j < 0) j = 0;
+  if (j > 62) j = 62;
+  float f0 = c0 - float(i), f1 = c1 - float(j);
+  float r1 = dspbr_lut_row_dspbr_GGX_E_missing(i, j, f1), r2 = dspbr_lut_row_dspbr_GGX_E_missing(i + 1, j, f1);
+  float q0 = dspbr_lut_row_dspbr_GGX_E_missing(i > 0 ? i - 1 : 0, j, f1);
+  float q3 = dspbr_lut_row_dspbr_GGX_E_missing(i + 2 < 32 ? i + 2 : 32 - 1, j, f1);
+  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;
+  float r3 = i + 2 < 32 ? q3 : 2.0f * r2 - r1;
+  return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
+}
 // E_m(mu; r): single-scattering GGX albedo, in [0, 1]. The cubic's undershoot (overshoot) is clamped
 // here, in beta and in the sheen albedos, so that every albedo composed from them is >= 0.
 float dspbr_ggx_E(float cos_theta, float roughness) {
   float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
   return dspbr_lut_clampf(dspbr_lut_interp_dspbr_GGX_E(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(cos_theta, r * r))), 0.0f, 1.0f);
+}
+// 1 - E_m(mu; r), in [0, 1], to full float precision where E_m is near 1 (1 - dspbr_ggx_E keeps about
+// 1e-7 absolute: at roughness ~1e-3 that is all of 1 - E_m near normal incidence).
+float dspbr_ggx_E_missing(float cos_theta, float roughness) {
+  float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
+  return dspbr_lut_clampf(dspbr_lut_interp_dspbr_GGX_E_missing(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(cos_theta, r * r))), 0.0f, 1.0f);
 }
 // 1 - E_m,avg(r), stored as a logarithm (it vanishes like r^4).
 float dspbr_ggx_E_avg_missing(float roughness) {
@@ -908,8 +939,8 @@ float dspbr_sheen_ash_E(float cos_theta, float alpha_b) {
 float dspbr_ms_lobe(float cos_v, float cos_l, float roughness) {
   float missing = dspbr_ggx_E_avg_missing(roughness);
   if (missing <= 1e-9f) return 0.0f;
-  float mv = dspbr_lut_clampf(1.0f - dspbr_ggx_E(cos_v, roughness), 0.0f, 1.0f);
-  float ml = dspbr_lut_clampf(1.0f - dspbr_ggx_E(cos_l, roughness), 0.0f, 1.0f);
+  float mv = dspbr_ggx_E_missing(cos_v, roughness);
+  float ml = dspbr_ggx_E_missing(cos_l, roughness);
   return mv * ml / (3.14159265f * missing);
 }
 // B_c / rho = (1 - E(mu_v)) (1 - E(mu_l)) / (pi (1 - E_avg)) (spec eq. b_c); 0 when 1 - E_avg <= 1e-9.

@@ -64,8 +64,9 @@ static void check_non_negative_on_a_grid(void) {
     for (int j = 0; j < n; ++j) {
       const float mu = (float)i / (n - 1), r = (float)j / (n - 1);
       const float v[] = {dspbr_ggx_E(mu, r), dspbr_base_E(mu, r, 0.0f), dspbr_base_E(mu, r, 0.02f),
-                         dspbr_ggx_beta(mu, r), dspbr_sheen_E(mu, r), dspbr_sheen_ash_E(mu, r)};
-      for (int k = 0; k < 6; ++k) worst = v[k] < worst ? v[k] : worst;
+                         dspbr_ggx_beta(mu, r), dspbr_sheen_E(mu, r), dspbr_sheen_ash_E(mu, r),
+                         dspbr_ggx_E_missing(mu, r)};
+      for (int k = 0; k < 7; ++k) worst = v[k] < worst ? v[k] : worst;
     }
   }
   ++calls;
@@ -85,6 +86,7 @@ int main(void) {
       if (a < 4) x[a] = bad[b];
       const float z = bad[b];
       if (a < 2) CHECK("dspbr_ggx_E", x, 0.0f, dspbr_ggx_E(x[0], x[1]), UNIT_LO, UNIT_HI);
+      if (a < 2) CHECK("dspbr_ggx_E_missing", x, 0.0f, dspbr_ggx_E_missing(x[0], x[1]), 0.0f, 1.0f);
       if (a < 1) CHECK("dspbr_ggx_E_avg", x, 0.0f, dspbr_ggx_E_avg(x[0]), UNIT_LO, UNIT_HI);
       if (a < 1) CHECK("dspbr_ggx_E_avg_missing", x, 0.0f, dspbr_ggx_E_avg_missing(x[0]), 0.0f, UNIT_HI);
       if (a < 3) CHECK("dspbr_fresnel_ms", x, 0.0f, dspbr_fresnel_ms(x[0], x[1], x[2]), 0.0f, 1.0f);

@@ -5,6 +5,10 @@
 
 // E_m(mu; r).
 DSPBR_FN float dspbr_ggx_E(float cos_theta, float roughness) { return dspbr_fit_ggx_E(cos_theta, roughness); }
+// 1 - E_m(mu; r) (the fits' own precision: no better than 1 - E_m).
+DSPBR_FN float dspbr_ggx_E_missing(float cos_theta, float roughness) {
+  return clamp(1.0f - dspbr_fit_ggx_E(cos_theta, roughness), 0.0f, 1.0f);
+}
 // 1 - E_m,avg(r) and E_m,avg(r).
 DSPBR_FN float dspbr_ggx_E_avg_missing(float roughness) { return dspbr_fit_ggx_E_avg_loss(roughness); }
 DSPBR_FN float dspbr_ggx_E_avg(float roughness) { return dspbr_fit_ggx_E_avg(roughness); }

@@ -94,9 +94,9 @@ std::string interp_function_3d(const WarpedTable& t) {
       id, n0, n1, n2, flit(n0 - 1), flit(n1 - 1), flit(n2 - 1), n0 - 2, n1 - 2, n2 - 2);
 }
 
-// Catmull-Rom interpolation function of one table: dspbr_lut_interp_<name>(x0[, x1[, x2]]).
-std::string interp_function(const WarpedTable& t) {
-  const std::string id = ident(t);
+// Catmull-Rom interpolation function of one table: dspbr_lut_interp_<name>(x0[, x1[, x2]]); `id`
+// names the functions and the sample accessor <id>_at it reads (ident(t): the table's own).
+std::string interp_function(const WarpedTable& t, const std::string& id) {
   std::ostringstream o;
   const int n0 = t.axes[0].size;
   if (t.axes.size() == 1) {
@@ -158,11 +158,21 @@ std::string api_functions(const RendererLuts& L) {
   const auto& s = L.sheen_E;
   const auto& sa = L.sheen_ash_E;
   std::ostringstream o;
+  // 1 - E_m interpolated from 1 - each sample: exact in float for samples near 1 (Sterbenz), where
+  // 1 - dspbr_ggx_E keeps only ~1e-7 absolute.
+  o << "float " << ident(e) << "_missing_at(int r, int c) { return 1.0f - " << ident(e) << "_at(r, c); }\n"
+    << interp_function(e, ident(e) + "_missing");
   o << "// E_m(mu; r): single-scattering GGX albedo, in [0, 1]. The cubic's undershoot (overshoot) is clamped\n"
     << "// here, in beta and in the sheen albedos, so that every albedo composed from them is >= 0.\n"
     << "float dspbr_ggx_E(float cos_theta, float roughness) {\n"
     << "  float r = clamp(roughness, 0.0f, 1.0f);\n"
     << "  return clamp(dspbr_lut_interp_dspbr_GGX_E(" << warp_expr(e.axes[0].warp, "r", "") << ", "
+    << warp_expr(e.axes[1].warp, "cos_theta", "r * r") << "), 0.0f, 1.0f);\n}\n"
+    << "// 1 - E_m(mu; r), in [0, 1], to full float precision where E_m is near 1 (1 - dspbr_ggx_E keeps about\n"
+    << "// 1e-7 absolute: at roughness ~1e-3 that is all of 1 - E_m near normal incidence).\n"
+    << "float dspbr_ggx_E_missing(float cos_theta, float roughness) {\n"
+    << "  float r = clamp(roughness, 0.0f, 1.0f);\n"
+    << "  return clamp(dspbr_lut_interp_" << ident(e) << "_missing(" << warp_expr(e.axes[0].warp, "r", "") << ", "
     << warp_expr(e.axes[1].warp, "cos_theta", "r * r") << "), 0.0f, 1.0f);\n}\n"
     << "// 1 - E_m,avg(r), stored as a logarithm (it vanishes like r^4).\n"
     << "float dspbr_ggx_E_avg_missing(float roughness) {\n"
@@ -209,8 +219,8 @@ std::string api_functions(const RendererLuts& L) {
     << "float dspbr_ms_lobe(float cos_v, float cos_l, float roughness) {\n"
     << "  float missing = dspbr_ggx_E_avg_missing(roughness);\n"
     << "  if (missing <= 1e-9f) return 0.0f;\n"
-    << "  float mv = clamp(1.0f - dspbr_ggx_E(cos_v, roughness), 0.0f, 1.0f);\n"
-    << "  float ml = clamp(1.0f - dspbr_ggx_E(cos_l, roughness), 0.0f, 1.0f);\n"
+    << "  float mv = dspbr_ggx_E_missing(cos_v, roughness);\n"
+    << "  float ml = dspbr_ggx_E_missing(cos_l, roughness);\n"
     << "  return mv * ml / (3.14159265f * missing);\n}\n"
     << "// B_c / rho = (1 - E(mu_v)) (1 - E(mu_l)) / (pi (1 - E_avg)) (spec eq. b_c); 0 when 1 - E_avg <= 1e-9.\n"
     << "float dspbr_diffuse_bc(float cos_v, float cos_l, float roughness, float f0) {\n"
@@ -485,7 +495,7 @@ std::string file_text(const RendererLuts& L, LookupDialect dialect, const std::s
     o << "#endif\n";
   }
   std::string body = f.helpers;
-  for (const char* n : f.tables) body += interp_function(*L.table(n));
+  for (const char* n : f.tables) body += interp_function(*L.table(n), ident(*L.table(n)));
   body += f.api;
   // Every clamp of the generated code is the NaN-safe dspbr_lut_clampf (GLSL/HLSL clamp leave NaN undefined).
   body = std::regex_replace(body, std::regex("\\bclamp\\("), "dspbr_lut_clampf(");
