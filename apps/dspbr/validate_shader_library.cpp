@@ -46,7 +46,9 @@ std::vector<validate::ConformanceGroup> vectors_on_the_library(const conformance
     const conformance::VectorVerdict& v = check.verdicts[i];
     ++g.vectors;
     if (v.supplied && !v.passed) ++g.failed;
-    const double ratio = std::isnan(v.worst_ratio) ? INFINITY : v.worst_ratio;
+    // A non-finite result's ratio as the checker's for a negative one: failing, and finite in the
+    // report's JSON (which refuses non-finite numbers).
+    const double ratio = std::isfinite(v.worst_ratio) ? v.worst_ratio : conformance::kNegativeRatio;
     if (g.worst_id.empty() || ratio > g.worst_ratio) g.worst_ratio = ratio, g.worst_id = vectors[i].id;
   }
   std::vector<validate::ConformanceGroup> out;

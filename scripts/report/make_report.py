@@ -588,11 +588,10 @@ def main():
     if rep is None:
         return 1
     # The figure groups are independent: drawn by two processes (most costly first, the furnace
-    # plots in two halves). The integrator study (committed data, the same in every run) only in
-    # the full run's report:
+    # plots in two halves). The integrator study (committed data, the same in every run) and the
+    # shader library's furnace figures only in the full run's report: the quick run stays within
+    # seconds (it shows the library's furnace tables alone).
     jobs = ["furnace:0", "furnace:1", "luts", "chi2", "spheres", "summary", "convergence", "reciprocity"]
-    # the quick run's report stays within seconds. So do the shader library's furnace figures:
-    # the quick run shows its furnace tables alone.
     if rep.get("mode") != "quick":
         jobs.insert(2, "integrators")
         if "shader_library" in rep:

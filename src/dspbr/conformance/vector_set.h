@@ -61,7 +61,7 @@ Evaluation evaluate(const Vector& v, const LutSet& luts);
 // judges it: f cos and pdf, the delta lobes (the sweep of generate, where b.flags() has a Dirac
 // lobe) and, where x has one, the albedo (generate's finer quadrature plus the delta lobes). The
 // emission is not part of Bsdf: left out. `dspbr validate` judges the shader library's C++ compile
-// with it (src/dspbr/shader/shader_validation.h).
+// with it (apps/dspbr/validate_shader_library.h).
 Result implementation_result(const Vector& x, const Bsdf& b);
 
 // How an implementation represents DSPBR where it differs from the reference by design

@@ -90,7 +90,7 @@ void print_phase_time(const char* name, double wall_s, double cpu_s);
 std::vector<std::string> missing_tables(const LutSet& luts);
 
 // Another implementation of DSPBR checked in the same report (section "shader_library": the shader
-// library's C++ compile, src/dspbr/shader/shader_validation.h): the same furnace, chi-square and
+// library's C++ compile, apps/dspbr/validate_shader_library.h): the same furnace, chi-square and
 // stability checks on its own catalog, and its conformance over a vector set, one verdict per group.
 // Its verdicts count under their check's name prefixed with "shader library: ".
 struct ConformanceGroup {
