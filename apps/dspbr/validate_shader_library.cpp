@@ -3,8 +3,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <cmath>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,23 +34,13 @@ std::vector<validate::ConformanceGroup> vectors_on_the_library(const conformance
     results[i] = conformance::implementation_result(x, b);
     if (x.emission) results[i].emission = b.emission(x.v);
   });
+  // Per group as `dspbr conformance check` tallies them (its report's "groups").
   const conformance::Check check = conformance::check_results(vectors, results);
-  std::map<std::string, validate::ConformanceGroup> groups;
-  std::vector<std::string> order;
-  for (std::size_t i = 0; i < vectors.size(); ++i) {
-    const std::string& name = vectors[i].group;
-    if (!groups.count(name)) order.push_back(name), groups[name].group = name;
-    validate::ConformanceGroup& g = groups[name];
-    const conformance::VectorVerdict& v = check.verdicts[i];
-    ++g.vectors;
-    if (v.supplied && !v.passed) ++g.failed;
-    // A non-finite result's ratio as the checker's for a negative one: failing, and finite in the
-    // report's JSON (which refuses non-finite numbers).
-    const double ratio = std::isfinite(v.worst_ratio) ? v.worst_ratio : conformance::kNegativeRatio;
-    if (g.worst_id.empty() || ratio > g.worst_ratio) g.worst_ratio = ratio, g.worst_id = vectors[i].id;
-  }
   std::vector<validate::ConformanceGroup> out;
-  for (const std::string& name : order) out.push_back(groups[name]);
+  const nlohmann::ordered_json report = conformance::check_report(vectors, results, check, nlohmann::ordered_json::object(), 0);
+  for (const auto& g : report["groups"])
+    out.push_back({g["name"].get<std::string>(), g["vectors"].get<std::size_t>(), g["failed"].get<std::size_t>(),
+                   g["worst_ratio"].get<double>(), g["worst_id"].get<std::string>()});
   return out;
 }
 

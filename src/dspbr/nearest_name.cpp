@@ -21,15 +21,16 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 }
 
 std::string nearest_name(const std::string& word, const std::vector<std::string>& names, std::size_t max_edits) {
-  const auto lower = [](unsigned char c) { return static_cast<char>(std::tolower(c)); };
-  const auto same_but_case = [&](const std::string& n) {
-    return n.size() == word.size() &&
+  // `n` begins with `word`, ignoring case (n at least as long).
+  const auto begins_with_word = [&](const std::string& n) {
+    const auto lower = [](unsigned char c) { return static_cast<char>(std::tolower(c)); };
+    return n.size() >= word.size() &&
            std::equal(word.begin(), word.end(), n.begin(), [&](char a, char b) { return lower(a) == lower(b); });
   };
   // The name itself in another case first (the tenth fresh tester's pass: 'ggx_e' was offered
   // 'GGX_E_avg', three case changes being more edits than allowed).
   for (const std::string& n : names)
-    if (same_but_case(n)) return n;
+    if (n.size() == word.size() && begins_with_word(n)) return n;
   std::string nearest;
   std::size_t best = max_edits + 1;
   for (const std::string& n : names) {
@@ -38,9 +39,7 @@ std::string nearest_name(const std::string& word, const std::vector<std::string>
   }
   if (!nearest.empty() || word.size() < 3) return nearest;
   for (const std::string& n : names)
-    if (n.size() > word.size() &&
-        std::equal(word.begin(), word.end(), n.begin(), [&](char a, char b) { return lower(a) == lower(b); }))
-      return n;
+    if (n.size() > word.size() && begins_with_word(n)) return n;
   return nearest;
 }
 

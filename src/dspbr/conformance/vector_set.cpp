@@ -239,6 +239,16 @@ Rgb albedo_quadrature(const Bsdf& b, const Vec3& v, int mu_panels, int phi_steps
   return sum;
 }
 
+// generate's finer albedo quadrature (32 panels x 128 azimuths), the one a vector's albedo is
+// (generate, expect_with and implementation_result alike) ...
+Rgb fine_albedo_quadrature(const Bsdf& b, const Vec3& v) { return albedo_quadrature(b, v, 32, 128); }
+// ... with the delta lobes at v added.
+Rgb albedo_with_delta_lobes(const Rgb& non_delta, const std::vector<DeltaExpectation>& delta) {
+  Rgb a = non_delta;
+  for (const DeltaExpectation& d : delta) a = a + d.value;
+  return a;
+}
+
 // The material with every number rounded to single precision: what an implementation in float
 // reads (the tolerance's input part, docs/conformance.md "Tolerances").
 Material float_rounded(Material m) {
@@ -323,12 +333,10 @@ std::vector<Vector> case_vectors(const Case& c, std::size_t index, const Generat
     if (k == 0 && s.albedo) {
       // Product Gauss-Legendre quadrature at two resolutions; kept where they agree within
       // kAlbedoAgreement, judged within twice their difference plus the tables' error.
-      const Rgb coarse = albedo_quadrature(ref, x.v, 16, 64), fine = albedo_quadrature(ref, x.v, 32, 128);
+      const Rgb coarse = albedo_quadrature(ref, x.v, 16, 64), fine = fine_albedo_quadrature(ref, x.v);
       const double err = max_channel_difference(coarse, fine);
       if (err <= kAlbedoAgreement) {
-        Rgb a = fine;
-        for (const DeltaExpectation& d : x.delta) a = a + d.value;
-        x.albedo = a;
+        x.albedo = albedo_with_delta_lobes(fine, x.delta);
         x.albedo_tolerance = {kTableError + 2 * err + kFloatAbsolute, kFloatRelative};
       }
     }
@@ -601,11 +609,7 @@ void expect_with(std::vector<Vector>& vectors, const Representation& r) {
       v.f_cos = b.eval(v.v, v.l) * std::abs(v.l.z);
       v.pdf = b.pdf(v.v, v.l);
       v.delta = delta_lobes(b, v.v, b.delta_probability(v.v));
-      if (v.albedo && r.min_roughness == 0) {  // the finer of generate's two quadratures, with the delta lobes
-        Rgb a = albedo_quadrature(b, v.v, 32, 128);
-        for (const DeltaExpectation& d : v.delta) a = a + d.value;
-        v.albedo = a;
-      }
+      if (v.albedo && r.min_roughness == 0) v.albedo = albedo_with_delta_lobes(fine_albedo_quadrature(b, v.v), v.delta);
     } catch (const std::exception& e) {
       throw std::runtime_error("vector '" + v.id + "': " + e.what());
     }
@@ -620,11 +624,7 @@ Result implementation_result(const Vector& x, const Bsdf& b) {
   // The sweep only where b says it has a Dirac lobe (8192 samples a vector).
   r.delta = (b.flags() & kLobeDelta) ? delta_lobes(b, x.v, std::numeric_limits<double>::infinity())
                                      : std::vector<DeltaExpectation>{};
-  if (x.albedo) {  // generate's finer quadrature, with the delta lobes
-    Rgb a = albedo_quadrature(b, x.v, 32, 128);
-    for (const DeltaExpectation& d : *r.delta) a = a + d.value;
-    r.albedo = a;
-  }
+  if (x.albedo) r.albedo = albedo_with_delta_lobes(fine_albedo_quadrature(b, x.v), *r.delta);
   return r;
 }
 
