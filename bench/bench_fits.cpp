@@ -192,4 +192,24 @@ void BM_LookupGeneratedC(benchmark::State& state) {
 }
 BENCHMARK(BM_LookupGeneratedC);
 
+// What a dielectric base reads per direction: 1 - E_m and beta, as two calls and as the one call
+// that computes their coordinates and roughness taps once.
+void BM_LookupGeneratedMissingBeta(benchmark::State& state) {
+  const Inputs& in = inputs();
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) {
+      benchmark::DoNotOptimize(dspbr_ggx_E_missing(in.mu[i], in.r[i]));
+      benchmark::DoNotOptimize(dspbr_ggx_beta(in.mu[i], in.r[i]));
+    }
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_LookupGeneratedMissingBeta);
+void BM_LookupGeneratedMissingBetaPair(benchmark::State& state) {
+  const Inputs& in = inputs();
+  for (auto _ : state)
+    for (size_t i = 0; i < in.mu.size(); ++i) benchmark::DoNotOptimize(dspbr_ggx_E_missing_beta(in.mu[i], in.r[i]));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(in.mu.size()));
+}
+BENCHMARK(BM_LookupGeneratedMissingBetaPair);
+
 }  // namespace

@@ -4418,125 +4418,197 @@ float dspbr_lut_glass_ior_warp(float ior, float cos_theta, float k) {
   float km = k * m * m;
   return 0.5f * xf + 0.5f * log(1.0f + xf / km) / log(1.0f + 1.0f / km);
 }
-float dspbr_lut_row_dspbr_Glass_E(int p, int r, int j, float f) {
-  float p1 = dspbr_Glass_E_at(p, r, j), p2 = dspbr_Glass_E_at(p, r, j + 1);
-  float q0 = dspbr_Glass_E_at(p, r, j > 0 ? j - 1 : 0), q3 = dspbr_Glass_E_at(p, r, j + 2 < 64 ? j + 2 : 64 - 1);
-  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;
-  float p3 = j + 2 < 64 ? q3 : 2.0f * p2 - p1;
-  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
-}
-float dspbr_lut_plane_dspbr_Glass_E(int p, int i, int j, float f1, float f2) {
-  float r1 = dspbr_lut_row_dspbr_Glass_E(p, i, j, f2), r2 = dspbr_lut_row_dspbr_Glass_E(p, i + 1, j, f2);
-  float q0 = dspbr_lut_row_dspbr_Glass_E(p, i > 0 ? i - 1 : 0, j, f2);
-  float q3 = dspbr_lut_row_dspbr_Glass_E(p, i + 2 < 16 ? i + 2 : 16 - 1, j, f2);
-  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;
-  float r3 = i + 2 < 16 ? q3 : 2.0f * r2 - r1;
-  return dspbr_lut_catmull_rom(f1, r0, r1, r2, r3);
-}
 float dspbr_lut_interp_dspbr_Glass_E(float x0, float x1, float x2) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 15.0f;
+  int k0 = int(c0);
+  if (k0 < 0) k0 = 0;
+  if (k0 > 14) k0 = 14;
+  float f0 = c0 - float(k0), g0 = f0 * f0, h0 = g0 * f0;
+  float w00 = 0.5f * (2.0f * g0 - h0 - f0), w01 = 0.5f * (3.0f * h0 - 5.0f * g0 + 2.0f);
+  float w02 = 0.5f * (4.0f * g0 - 3.0f * h0 + f0), w03 = 0.5f * (h0 - g0);
+  if (k0 == 0) {
+    w01 += 2.0f * w00;
+    w02 -= w00;
+    w00 = 0.0f;
+  }
+  if (k0 == 14) {
+    w02 += 2.0f * w03;
+    w01 -= w03;
+    w03 = 0.0f;
+  }
+  int k00 = k0 > 0 ? k0 - 1 : 0, k01 = k0, k02 = k0 + 1, k03 = k0 + 2 < 16 ? k0 + 2 : 15;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 15.0f;
+  int k1 = int(c1);
+  if (k1 < 0) k1 = 0;
+  if (k1 > 14) k1 = 14;
+  float f1 = c1 - float(k1), g1 = f1 * f1, h1 = g1 * f1;
+  float w10 = 0.5f * (2.0f * g1 - h1 - f1), w11 = 0.5f * (3.0f * h1 - 5.0f * g1 + 2.0f);
+  float w12 = 0.5f * (4.0f * g1 - 3.0f * h1 + f1), w13 = 0.5f * (h1 - g1);
+  if (k1 == 0) {
+    w11 += 2.0f * w10;
+    w12 -= w10;
+    w10 = 0.0f;
+  }
+  if (k1 == 14) {
+    w12 += 2.0f * w13;
+    w11 -= w13;
+    w13 = 0.0f;
+  }
+  int k10 = k1 > 0 ? k1 - 1 : 0, k11 = k1, k12 = k1 + 1, k13 = k1 + 2 < 16 ? k1 + 2 : 15;
   float c2 = dspbr_lut_clampf(x2, 0.0f, 1.0f) * 63.0f;
-  int p = int(c0);
-  if (p < 0) p = 0;
-  if (p > 14) p = 14;
-  int i = int(c1);
-  if (i < 0) i = 0;
-  if (i > 14) i = 14;
-  int j = int(c2);
-  if (j < 0) j = 0;
-  if (j > 62) j = 62;
-  float f0 = c0 - float(p), f1 = c1 - float(i), f2 = c2 - float(j);
-  float s1 = dspbr_lut_plane_dspbr_Glass_E(p, i, j, f1, f2), s2 = dspbr_lut_plane_dspbr_Glass_E(p + 1, i, j, f1, f2);
-  float q0 = dspbr_lut_plane_dspbr_Glass_E(p > 0 ? p - 1 : 0, i, j, f1, f2);
-  float q3 = dspbr_lut_plane_dspbr_Glass_E(p + 2 < 16 ? p + 2 : 16 - 1, i, j, f1, f2);
-  float s0 = p > 0 ? q0 : 2.0f * s1 - s2;
-  float s3 = p + 2 < 16 ? q3 : 2.0f * s2 - s1;
-  return dspbr_lut_catmull_rom(f0, s0, s1, s2, s3);
-}
-float dspbr_lut_row_dspbr_Glass_inv_E(int p, int r, int j, float f) {
-  float p1 = dspbr_Glass_inv_E_at(p, r, j), p2 = dspbr_Glass_inv_E_at(p, r, j + 1);
-  float q0 = dspbr_Glass_inv_E_at(p, r, j > 0 ? j - 1 : 0), q3 = dspbr_Glass_inv_E_at(p, r, j + 2 < 64 ? j + 2 : 64 - 1);
-  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;
-  float p3 = j + 2 < 64 ? q3 : 2.0f * p2 - p1;
-  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
-}
-float dspbr_lut_plane_dspbr_Glass_inv_E(int p, int i, int j, float f1, float f2) {
-  float r1 = dspbr_lut_row_dspbr_Glass_inv_E(p, i, j, f2), r2 = dspbr_lut_row_dspbr_Glass_inv_E(p, i + 1, j, f2);
-  float q0 = dspbr_lut_row_dspbr_Glass_inv_E(p, i > 0 ? i - 1 : 0, j, f2);
-  float q3 = dspbr_lut_row_dspbr_Glass_inv_E(p, i + 2 < 16 ? i + 2 : 16 - 1, j, f2);
-  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;
-  float r3 = i + 2 < 16 ? q3 : 2.0f * r2 - r1;
-  return dspbr_lut_catmull_rom(f1, r0, r1, r2, r3);
+  int k2 = int(c2);
+  if (k2 < 0) k2 = 0;
+  if (k2 > 62) k2 = 62;
+  float f2 = c2 - float(k2), g2 = f2 * f2, h2 = g2 * f2;
+  float w20 = 0.5f * (2.0f * g2 - h2 - f2), w21 = 0.5f * (3.0f * h2 - 5.0f * g2 + 2.0f);
+  float w22 = 0.5f * (4.0f * g2 - 3.0f * h2 + f2), w23 = 0.5f * (h2 - g2);
+  if (k2 == 0) {
+    w21 += 2.0f * w20;
+    w22 -= w20;
+    w20 = 0.0f;
+  }
+  if (k2 == 62) {
+    w22 += 2.0f * w23;
+    w21 -= w23;
+    w23 = 0.0f;
+  }
+  int k20 = k2 > 0 ? k2 - 1 : 0, k21 = k2, k22 = k2 + 1, k23 = k2 + 2 < 64 ? k2 + 2 : 63;
+  return ((((((dspbr_Glass_E_at(k00, k10, k20) * w20 + dspbr_Glass_E_at(k00, k10, k21) * w21) + (dspbr_Glass_E_at(k00, k10, k22) * w22 + dspbr_Glass_E_at(k00, k10, k23) * w23)) * w10 + ((dspbr_Glass_E_at(k00, k11, k20) * w20 + dspbr_Glass_E_at(k00, k11, k21) * w21) + (dspbr_Glass_E_at(k00, k11, k22) * w22 + dspbr_Glass_E_at(k00, k11, k23) * w23)) * w11) + (((dspbr_Glass_E_at(k00, k12, k20) * w20 + dspbr_Glass_E_at(k00, k12, k21) * w21) + (dspbr_Glass_E_at(k00, k12, k22) * w22 + dspbr_Glass_E_at(k00, k12, k23) * w23)) * w12 + ((dspbr_Glass_E_at(k00, k13, k20) * w20 + dspbr_Glass_E_at(k00, k13, k21) * w21) + (dspbr_Glass_E_at(k00, k13, k22) * w22 + dspbr_Glass_E_at(k00, k13, k23) * w23)) * w13)) * w00 + ((((dspbr_Glass_E_at(k01, k10, k20) * w20 + dspbr_Glass_E_at(k01, k10, k21) * w21) + (dspbr_Glass_E_at(k01, k10, k22) * w22 + dspbr_Glass_E_at(k01, k10, k23) * w23)) * w10 + ((dspbr_Glass_E_at(k01, k11, k20) * w20 + dspbr_Glass_E_at(k01, k11, k21) * w21) + (dspbr_Glass_E_at(k01, k11, k22) * w22 + dspbr_Glass_E_at(k01, k11, k23) * w23)) * w11) + (((dspbr_Glass_E_at(k01, k12, k20) * w20 + dspbr_Glass_E_at(k01, k12, k21) * w21) + (dspbr_Glass_E_at(k01, k12, k22) * w22 + dspbr_Glass_E_at(k01, k12, k23) * w23)) * w12 + ((dspbr_Glass_E_at(k01, k13, k20) * w20 + dspbr_Glass_E_at(k01, k13, k21) * w21) + (dspbr_Glass_E_at(k01, k13, k22) * w22 + dspbr_Glass_E_at(k01, k13, k23) * w23)) * w13)) * w01) + (((((dspbr_Glass_E_at(k02, k10, k20) * w20 + dspbr_Glass_E_at(k02, k10, k21) * w21) + (dspbr_Glass_E_at(k02, k10, k22) * w22 + dspbr_Glass_E_at(k02, k10, k23) * w23)) * w10 + ((dspbr_Glass_E_at(k02, k11, k20) * w20 + dspbr_Glass_E_at(k02, k11, k21) * w21) + (dspbr_Glass_E_at(k02, k11, k22) * w22 + dspbr_Glass_E_at(k02, k11, k23) * w23)) * w11) + (((dspbr_Glass_E_at(k02, k12, k20) * w20 + dspbr_Glass_E_at(k02, k12, k21) * w21) + (dspbr_Glass_E_at(k02, k12, k22) * w22 + dspbr_Glass_E_at(k02, k12, k23) * w23)) * w12 + ((dspbr_Glass_E_at(k02, k13, k20) * w20 + dspbr_Glass_E_at(k02, k13, k21) * w21) + (dspbr_Glass_E_at(k02, k13, k22) * w22 + dspbr_Glass_E_at(k02, k13, k23) * w23)) * w13)) * w02 + ((((dspbr_Glass_E_at(k03, k10, k20) * w20 + dspbr_Glass_E_at(k03, k10, k21) * w21) + (dspbr_Glass_E_at(k03, k10, k22) * w22 + dspbr_Glass_E_at(k03, k10, k23) * w23)) * w10 + ((dspbr_Glass_E_at(k03, k11, k20) * w20 + dspbr_Glass_E_at(k03, k11, k21) * w21) + (dspbr_Glass_E_at(k03, k11, k22) * w22 + dspbr_Glass_E_at(k03, k11, k23) * w23)) * w11) + (((dspbr_Glass_E_at(k03, k12, k20) * w20 + dspbr_Glass_E_at(k03, k12, k21) * w21) + (dspbr_Glass_E_at(k03, k12, k22) * w22 + dspbr_Glass_E_at(k03, k12, k23) * w23)) * w12 + ((dspbr_Glass_E_at(k03, k13, k20) * w20 + dspbr_Glass_E_at(k03, k13, k21) * w21) + (dspbr_Glass_E_at(k03, k13, k22) * w22 + dspbr_Glass_E_at(k03, k13, k23) * w23)) * w13)) * w03));
 }
 float dspbr_lut_interp_dspbr_Glass_inv_E(float x0, float x1, float x2) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 15.0f;
+  int k0 = int(c0);
+  if (k0 < 0) k0 = 0;
+  if (k0 > 14) k0 = 14;
+  float f0 = c0 - float(k0), g0 = f0 * f0, h0 = g0 * f0;
+  float w00 = 0.5f * (2.0f * g0 - h0 - f0), w01 = 0.5f * (3.0f * h0 - 5.0f * g0 + 2.0f);
+  float w02 = 0.5f * (4.0f * g0 - 3.0f * h0 + f0), w03 = 0.5f * (h0 - g0);
+  if (k0 == 0) {
+    w01 += 2.0f * w00;
+    w02 -= w00;
+    w00 = 0.0f;
+  }
+  if (k0 == 14) {
+    w02 += 2.0f * w03;
+    w01 -= w03;
+    w03 = 0.0f;
+  }
+  int k00 = k0 > 0 ? k0 - 1 : 0, k01 = k0, k02 = k0 + 1, k03 = k0 + 2 < 16 ? k0 + 2 : 15;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 15.0f;
+  int k1 = int(c1);
+  if (k1 < 0) k1 = 0;
+  if (k1 > 14) k1 = 14;
+  float f1 = c1 - float(k1), g1 = f1 * f1, h1 = g1 * f1;
+  float w10 = 0.5f * (2.0f * g1 - h1 - f1), w11 = 0.5f * (3.0f * h1 - 5.0f * g1 + 2.0f);
+  float w12 = 0.5f * (4.0f * g1 - 3.0f * h1 + f1), w13 = 0.5f * (h1 - g1);
+  if (k1 == 0) {
+    w11 += 2.0f * w10;
+    w12 -= w10;
+    w10 = 0.0f;
+  }
+  if (k1 == 14) {
+    w12 += 2.0f * w13;
+    w11 -= w13;
+    w13 = 0.0f;
+  }
+  int k10 = k1 > 0 ? k1 - 1 : 0, k11 = k1, k12 = k1 + 1, k13 = k1 + 2 < 16 ? k1 + 2 : 15;
   float c2 = dspbr_lut_clampf(x2, 0.0f, 1.0f) * 63.0f;
-  int p = int(c0);
-  if (p < 0) p = 0;
-  if (p > 14) p = 14;
-  int i = int(c1);
-  if (i < 0) i = 0;
-  if (i > 14) i = 14;
-  int j = int(c2);
-  if (j < 0) j = 0;
-  if (j > 62) j = 62;
-  float f0 = c0 - float(p), f1 = c1 - float(i), f2 = c2 - float(j);
-  float s1 = dspbr_lut_plane_dspbr_Glass_inv_E(p, i, j, f1, f2), s2 = dspbr_lut_plane_dspbr_Glass_inv_E(p + 1, i, j, f1, f2);
-  float q0 = dspbr_lut_plane_dspbr_Glass_inv_E(p > 0 ? p - 1 : 0, i, j, f1, f2);
-  float q3 = dspbr_lut_plane_dspbr_Glass_inv_E(p + 2 < 16 ? p + 2 : 16 - 1, i, j, f1, f2);
-  float s0 = p > 0 ? q0 : 2.0f * s1 - s2;
-  float s3 = p + 2 < 16 ? q3 : 2.0f * s2 - s1;
-  return dspbr_lut_catmull_rom(f0, s0, s1, s2, s3);
-}
-float dspbr_lut_row_dspbr_Glass_E_avg(int r, int j, float f) {
-  float p1 = dspbr_Glass_E_avg_at(r, j), p2 = dspbr_Glass_E_avg_at(r, j + 1);
-  float q0 = dspbr_Glass_E_avg_at(r, j > 0 ? j - 1 : 0), q3 = dspbr_Glass_E_avg_at(r, j + 2 < 32 ? j + 2 : 32 - 1);
-  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;
-  float p3 = j + 2 < 32 ? q3 : 2.0f * p2 - p1;
-  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
+  int k2 = int(c2);
+  if (k2 < 0) k2 = 0;
+  if (k2 > 62) k2 = 62;
+  float f2 = c2 - float(k2), g2 = f2 * f2, h2 = g2 * f2;
+  float w20 = 0.5f * (2.0f * g2 - h2 - f2), w21 = 0.5f * (3.0f * h2 - 5.0f * g2 + 2.0f);
+  float w22 = 0.5f * (4.0f * g2 - 3.0f * h2 + f2), w23 = 0.5f * (h2 - g2);
+  if (k2 == 0) {
+    w21 += 2.0f * w20;
+    w22 -= w20;
+    w20 = 0.0f;
+  }
+  if (k2 == 62) {
+    w22 += 2.0f * w23;
+    w21 -= w23;
+    w23 = 0.0f;
+  }
+  int k20 = k2 > 0 ? k2 - 1 : 0, k21 = k2, k22 = k2 + 1, k23 = k2 + 2 < 64 ? k2 + 2 : 63;
+  return ((((((dspbr_Glass_inv_E_at(k00, k10, k20) * w20 + dspbr_Glass_inv_E_at(k00, k10, k21) * w21) + (dspbr_Glass_inv_E_at(k00, k10, k22) * w22 + dspbr_Glass_inv_E_at(k00, k10, k23) * w23)) * w10 + ((dspbr_Glass_inv_E_at(k00, k11, k20) * w20 + dspbr_Glass_inv_E_at(k00, k11, k21) * w21) + (dspbr_Glass_inv_E_at(k00, k11, k22) * w22 + dspbr_Glass_inv_E_at(k00, k11, k23) * w23)) * w11) + (((dspbr_Glass_inv_E_at(k00, k12, k20) * w20 + dspbr_Glass_inv_E_at(k00, k12, k21) * w21) + (dspbr_Glass_inv_E_at(k00, k12, k22) * w22 + dspbr_Glass_inv_E_at(k00, k12, k23) * w23)) * w12 + ((dspbr_Glass_inv_E_at(k00, k13, k20) * w20 + dspbr_Glass_inv_E_at(k00, k13, k21) * w21) + (dspbr_Glass_inv_E_at(k00, k13, k22) * w22 + dspbr_Glass_inv_E_at(k00, k13, k23) * w23)) * w13)) * w00 + ((((dspbr_Glass_inv_E_at(k01, k10, k20) * w20 + dspbr_Glass_inv_E_at(k01, k10, k21) * w21) + (dspbr_Glass_inv_E_at(k01, k10, k22) * w22 + dspbr_Glass_inv_E_at(k01, k10, k23) * w23)) * w10 + ((dspbr_Glass_inv_E_at(k01, k11, k20) * w20 + dspbr_Glass_inv_E_at(k01, k11, k21) * w21) + (dspbr_Glass_inv_E_at(k01, k11, k22) * w22 + dspbr_Glass_inv_E_at(k01, k11, k23) * w23)) * w11) + (((dspbr_Glass_inv_E_at(k01, k12, k20) * w20 + dspbr_Glass_inv_E_at(k01, k12, k21) * w21) + (dspbr_Glass_inv_E_at(k01, k12, k22) * w22 + dspbr_Glass_inv_E_at(k01, k12, k23) * w23)) * w12 + ((dspbr_Glass_inv_E_at(k01, k13, k20) * w20 + dspbr_Glass_inv_E_at(k01, k13, k21) * w21) + (dspbr_Glass_inv_E_at(k01, k13, k22) * w22 + dspbr_Glass_inv_E_at(k01, k13, k23) * w23)) * w13)) * w01) + (((((dspbr_Glass_inv_E_at(k02, k10, k20) * w20 + dspbr_Glass_inv_E_at(k02, k10, k21) * w21) + (dspbr_Glass_inv_E_at(k02, k10, k22) * w22 + dspbr_Glass_inv_E_at(k02, k10, k23) * w23)) * w10 + ((dspbr_Glass_inv_E_at(k02, k11, k20) * w20 + dspbr_Glass_inv_E_at(k02, k11, k21) * w21) + (dspbr_Glass_inv_E_at(k02, k11, k22) * w22 + dspbr_Glass_inv_E_at(k02, k11, k23) * w23)) * w11) + (((dspbr_Glass_inv_E_at(k02, k12, k20) * w20 + dspbr_Glass_inv_E_at(k02, k12, k21) * w21) + (dspbr_Glass_inv_E_at(k02, k12, k22) * w22 + dspbr_Glass_inv_E_at(k02, k12, k23) * w23)) * w12 + ((dspbr_Glass_inv_E_at(k02, k13, k20) * w20 + dspbr_Glass_inv_E_at(k02, k13, k21) * w21) + (dspbr_Glass_inv_E_at(k02, k13, k22) * w22 + dspbr_Glass_inv_E_at(k02, k13, k23) * w23)) * w13)) * w02 + ((((dspbr_Glass_inv_E_at(k03, k10, k20) * w20 + dspbr_Glass_inv_E_at(k03, k10, k21) * w21) + (dspbr_Glass_inv_E_at(k03, k10, k22) * w22 + dspbr_Glass_inv_E_at(k03, k10, k23) * w23)) * w10 + ((dspbr_Glass_inv_E_at(k03, k11, k20) * w20 + dspbr_Glass_inv_E_at(k03, k11, k21) * w21) + (dspbr_Glass_inv_E_at(k03, k11, k22) * w22 + dspbr_Glass_inv_E_at(k03, k11, k23) * w23)) * w11) + (((dspbr_Glass_inv_E_at(k03, k12, k20) * w20 + dspbr_Glass_inv_E_at(k03, k12, k21) * w21) + (dspbr_Glass_inv_E_at(k03, k12, k22) * w22 + dspbr_Glass_inv_E_at(k03, k12, k23) * w23)) * w12 + ((dspbr_Glass_inv_E_at(k03, k13, k20) * w20 + dspbr_Glass_inv_E_at(k03, k13, k21) * w21) + (dspbr_Glass_inv_E_at(k03, k13, k22) * w22 + dspbr_Glass_inv_E_at(k03, k13, k23) * w23)) * w13)) * w03));
 }
 float dspbr_lut_interp_dspbr_Glass_E_avg(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  int k0 = int(c0);
+  if (k0 < 0) k0 = 0;
+  if (k0 > 30) k0 = 30;
+  float f0 = c0 - float(k0), g0 = f0 * f0, h0 = g0 * f0;
+  float w00 = 0.5f * (2.0f * g0 - h0 - f0), w01 = 0.5f * (3.0f * h0 - 5.0f * g0 + 2.0f);
+  float w02 = 0.5f * (4.0f * g0 - 3.0f * h0 + f0), w03 = 0.5f * (h0 - g0);
+  if (k0 == 0) {
+    w01 += 2.0f * w00;
+    w02 -= w00;
+    w00 = 0.0f;
+  }
+  if (k0 == 30) {
+    w02 += 2.0f * w03;
+    w01 -= w03;
+    w03 = 0.0f;
+  }
+  int k00 = k0 > 0 ? k0 - 1 : 0, k01 = k0, k02 = k0 + 1, k03 = k0 + 2 < 32 ? k0 + 2 : 31;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
-  int i = int(c0);
-  if (i < 0) i = 0;
-  if (i > 30) i = 30;
-  int j = int(c1);
-  if (j < 0) j = 0;
-  if (j > 30) j = 30;
-  float f0 = c0 - float(i), f1 = c1 - float(j);
-  float r1 = dspbr_lut_row_dspbr_Glass_E_avg(i, j, f1), r2 = dspbr_lut_row_dspbr_Glass_E_avg(i + 1, j, f1);
-  float q0 = dspbr_lut_row_dspbr_Glass_E_avg(i > 0 ? i - 1 : 0, j, f1);
-  float q3 = dspbr_lut_row_dspbr_Glass_E_avg(i + 2 < 32 ? i + 2 : 32 - 1, j, f1);
-  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;
-  float r3 = i + 2 < 32 ? q3 : 2.0f * r2 - r1;
-  return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
-}
-float dspbr_lut_row_dspbr_Glass_inv_E_avg(int r, int j, float f) {
-  float p1 = dspbr_Glass_inv_E_avg_at(r, j), p2 = dspbr_Glass_inv_E_avg_at(r, j + 1);
-  float q0 = dspbr_Glass_inv_E_avg_at(r, j > 0 ? j - 1 : 0), q3 = dspbr_Glass_inv_E_avg_at(r, j + 2 < 32 ? j + 2 : 32 - 1);
-  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;
-  float p3 = j + 2 < 32 ? q3 : 2.0f * p2 - p1;
-  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
+  int k1 = int(c1);
+  if (k1 < 0) k1 = 0;
+  if (k1 > 30) k1 = 30;
+  float f1 = c1 - float(k1), g1 = f1 * f1, h1 = g1 * f1;
+  float w10 = 0.5f * (2.0f * g1 - h1 - f1), w11 = 0.5f * (3.0f * h1 - 5.0f * g1 + 2.0f);
+  float w12 = 0.5f * (4.0f * g1 - 3.0f * h1 + f1), w13 = 0.5f * (h1 - g1);
+  if (k1 == 0) {
+    w11 += 2.0f * w10;
+    w12 -= w10;
+    w10 = 0.0f;
+  }
+  if (k1 == 30) {
+    w12 += 2.0f * w13;
+    w11 -= w13;
+    w13 = 0.0f;
+  }
+  int k10 = k1 > 0 ? k1 - 1 : 0, k11 = k1, k12 = k1 + 1, k13 = k1 + 2 < 32 ? k1 + 2 : 31;
+  return ((((dspbr_Glass_E_avg_at(k00, k10) * w10 + dspbr_Glass_E_avg_at(k00, k11) * w11) + (dspbr_Glass_E_avg_at(k00, k12) * w12 + dspbr_Glass_E_avg_at(k00, k13) * w13)) * w00 + ((dspbr_Glass_E_avg_at(k01, k10) * w10 + dspbr_Glass_E_avg_at(k01, k11) * w11) + (dspbr_Glass_E_avg_at(k01, k12) * w12 + dspbr_Glass_E_avg_at(k01, k13) * w13)) * w01) + (((dspbr_Glass_E_avg_at(k02, k10) * w10 + dspbr_Glass_E_avg_at(k02, k11) * w11) + (dspbr_Glass_E_avg_at(k02, k12) * w12 + dspbr_Glass_E_avg_at(k02, k13) * w13)) * w02 + ((dspbr_Glass_E_avg_at(k03, k10) * w10 + dspbr_Glass_E_avg_at(k03, k11) * w11) + (dspbr_Glass_E_avg_at(k03, k12) * w12 + dspbr_Glass_E_avg_at(k03, k13) * w13)) * w03));
 }
 float dspbr_lut_interp_dspbr_Glass_inv_E_avg(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  int k0 = int(c0);
+  if (k0 < 0) k0 = 0;
+  if (k0 > 30) k0 = 30;
+  float f0 = c0 - float(k0), g0 = f0 * f0, h0 = g0 * f0;
+  float w00 = 0.5f * (2.0f * g0 - h0 - f0), w01 = 0.5f * (3.0f * h0 - 5.0f * g0 + 2.0f);
+  float w02 = 0.5f * (4.0f * g0 - 3.0f * h0 + f0), w03 = 0.5f * (h0 - g0);
+  if (k0 == 0) {
+    w01 += 2.0f * w00;
+    w02 -= w00;
+    w00 = 0.0f;
+  }
+  if (k0 == 30) {
+    w02 += 2.0f * w03;
+    w01 -= w03;
+    w03 = 0.0f;
+  }
+  int k00 = k0 > 0 ? k0 - 1 : 0, k01 = k0, k02 = k0 + 1, k03 = k0 + 2 < 32 ? k0 + 2 : 31;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
-  int i = int(c0);
-  if (i < 0) i = 0;
-  if (i > 30) i = 30;
-  int j = int(c1);
-  if (j < 0) j = 0;
-  if (j > 30) j = 30;
-  float f0 = c0 - float(i), f1 = c1 - float(j);
-  float r1 = dspbr_lut_row_dspbr_Glass_inv_E_avg(i, j, f1), r2 = dspbr_lut_row_dspbr_Glass_inv_E_avg(i + 1, j, f1);
-  float q0 = dspbr_lut_row_dspbr_Glass_inv_E_avg(i > 0 ? i - 1 : 0, j, f1);
-  float q3 = dspbr_lut_row_dspbr_Glass_inv_E_avg(i + 2 < 32 ? i + 2 : 32 - 1, j, f1);
-  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;
-  float r3 = i + 2 < 32 ? q3 : 2.0f * r2 - r1;
-  return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
+  int k1 = int(c1);
+  if (k1 < 0) k1 = 0;
+  if (k1 > 30) k1 = 30;
+  float f1 = c1 - float(k1), g1 = f1 * f1, h1 = g1 * f1;
+  float w10 = 0.5f * (2.0f * g1 - h1 - f1), w11 = 0.5f * (3.0f * h1 - 5.0f * g1 + 2.0f);
+  float w12 = 0.5f * (4.0f * g1 - 3.0f * h1 + f1), w13 = 0.5f * (h1 - g1);
+  if (k1 == 0) {
+    w11 += 2.0f * w10;
+    w12 -= w10;
+    w10 = 0.0f;
+  }
+  if (k1 == 30) {
+    w12 += 2.0f * w13;
+    w11 -= w13;
+    w13 = 0.0f;
+  }
+  int k10 = k1 > 0 ? k1 - 1 : 0, k11 = k1, k12 = k1 + 1, k13 = k1 + 2 < 32 ? k1 + 2 : 31;
+  return ((((dspbr_Glass_inv_E_avg_at(k00, k10) * w10 + dspbr_Glass_inv_E_avg_at(k00, k11) * w11) + (dspbr_Glass_inv_E_avg_at(k00, k12) * w12 + dspbr_Glass_inv_E_avg_at(k00, k13) * w13)) * w00 + ((dspbr_Glass_inv_E_avg_at(k01, k10) * w10 + dspbr_Glass_inv_E_avg_at(k01, k11) * w11) + (dspbr_Glass_inv_E_avg_at(k01, k12) * w12 + dspbr_Glass_inv_E_avg_at(k01, k13) * w13)) * w01) + (((dspbr_Glass_inv_E_avg_at(k02, k10) * w10 + dspbr_Glass_inv_E_avg_at(k02, k11) * w11) + (dspbr_Glass_inv_E_avg_at(k02, k12) * w12 + dspbr_Glass_inv_E_avg_at(k02, k13) * w13)) * w02 + ((dspbr_Glass_inv_E_avg_at(k03, k10) * w10 + dspbr_Glass_inv_E_avg_at(k03, k11) * w11) + (dspbr_Glass_inv_E_avg_at(k03, k12) * w12 + dspbr_Glass_inv_E_avg_at(k03, k13) * w13)) * w03));
 }
 // Schlick F_0 of the interface, ((ior - 1) / (ior + 1))^2, ior clamped to [1, 3] as the
 // tables clamp it (kGlassMaxIor; NaN: 1).

@@ -721,161 +721,249 @@ float dspbr_Sheen_ash_E_at(int r, int c) { return dspbr_Sheen_ash_E_table[r * 32
 
 // NaN-safe clamp: NaN maps to lo (every comparison with NaN is false), +-inf to the nearer end.
 float dspbr_lut_clampf(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
-float dspbr_lut_catmull_rom(float f, float p0, float p1, float p2, float p3) {
-  float f2 = f * f, f3 = f2 * f;
-  return 0.5f * ((-f3 + 2.0f * f2 - f) * p0 + (3.0f * f3 - 5.0f * f2 + 2.0f) * p1 +
-                 (-3.0f * f3 + 4.0f * f2 + f) * p2 + (f3 - f2) * p3);
-}
 // ggx_cos warp x = t^p: t = mu / (mu + alpha sqrt(1 - mu^2)) (t = 1 when alpha = 0).
 float dspbr_lut_ggx_cos_t(float cos_theta, float alpha) {
   float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
   float d = mu + alpha * sqrt(max(1.0f - mu * mu, 0.0f));
   return d > 0.0f ? mu / d : 1.0f;
 }
-float dspbr_lut_row_dspbr_GGX_E(int r, int j, float f) {
-  float p1 = dspbr_GGX_E_at(r, j), p2 = dspbr_GGX_E_at(r, j + 1);
-  float q0 = dspbr_GGX_E_at(r, j > 0 ? j - 1 : 0), q3 = dspbr_GGX_E_at(r, j + 2 < 64 ? j + 2 : 64 - 1);
-  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;
-  float p3 = j + 2 < 64 ? q3 : 2.0f * p2 - p1;
-  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
-}
 float dspbr_lut_interp_dspbr_GGX_E(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  int k0 = int(c0);
+  if (k0 < 0) k0 = 0;
+  if (k0 > 30) k0 = 30;
+  float f0 = c0 - float(k0), g0 = f0 * f0, h0 = g0 * f0;
+  float w00 = 0.5f * (2.0f * g0 - h0 - f0), w01 = 0.5f * (3.0f * h0 - 5.0f * g0 + 2.0f);
+  float w02 = 0.5f * (4.0f * g0 - 3.0f * h0 + f0), w03 = 0.5f * (h0 - g0);
+  if (k0 == 0) {
+    w01 += 2.0f * w00;
+    w02 -= w00;
+    w00 = 0.0f;
+  }
+  if (k0 == 30) {
+    w02 += 2.0f * w03;
+    w01 -= w03;
+    w03 = 0.0f;
+  }
+  int k00 = k0 > 0 ? k0 - 1 : 0, k01 = k0, k02 = k0 + 1, k03 = k0 + 2 < 32 ? k0 + 2 : 31;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 63.0f;
-  int i = int(c0);
-  if (i < 0) i = 0;
-  if (i > 30) i = 30;
-  int j = int(c1);
-  if (j < 0) j = 0;
-  if (j > 62) j = 62;
-  float f0 = c0 - float(i), f1 = c1 - float(j);
-  float r1 = dspbr_lut_row_dspbr_GGX_E(i, j, f1), r2 = dspbr_lut_row_dspbr_GGX_E(i + 1, j, f1);
-  float q0 = dspbr_lut_row_dspbr_GGX_E(i > 0 ? i - 1 : 0, j, f1);
-  float q3 = dspbr_lut_row_dspbr_GGX_E(i + 2 < 32 ? i + 2 : 32 - 1, j, f1);
-  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;
-  float r3 = i + 2 < 32 ? q3 : 2.0f * r2 - r1;
-  return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
-}
-float dspbr_lut_row_dspbr_GGX_beta(int r, int j, float f) {
-  float p1 = dspbr_GGX_beta_at(r, j), p2 = dspbr_GGX_beta_at(r, j + 1);
-  float q0 = dspbr_GGX_beta_at(r, j > 0 ? j - 1 : 0), q3 = dspbr_GGX_beta_at(r, j + 2 < 32 ? j + 2 : 32 - 1);
-  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;
-  float p3 = j + 2 < 32 ? q3 : 2.0f * p2 - p1;
-  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
+  int k1 = int(c1);
+  if (k1 < 0) k1 = 0;
+  if (k1 > 62) k1 = 62;
+  float f1 = c1 - float(k1), g1 = f1 * f1, h1 = g1 * f1;
+  float w10 = 0.5f * (2.0f * g1 - h1 - f1), w11 = 0.5f * (3.0f * h1 - 5.0f * g1 + 2.0f);
+  float w12 = 0.5f * (4.0f * g1 - 3.0f * h1 + f1), w13 = 0.5f * (h1 - g1);
+  if (k1 == 0) {
+    w11 += 2.0f * w10;
+    w12 -= w10;
+    w10 = 0.0f;
+  }
+  if (k1 == 62) {
+    w12 += 2.0f * w13;
+    w11 -= w13;
+    w13 = 0.0f;
+  }
+  int k10 = k1 > 0 ? k1 - 1 : 0, k11 = k1, k12 = k1 + 1, k13 = k1 + 2 < 64 ? k1 + 2 : 63;
+  return ((((dspbr_GGX_E_at(k00, k10) * w10 + dspbr_GGX_E_at(k00, k11) * w11) + (dspbr_GGX_E_at(k00, k12) * w12 + dspbr_GGX_E_at(k00, k13) * w13)) * w00 + ((dspbr_GGX_E_at(k01, k10) * w10 + dspbr_GGX_E_at(k01, k11) * w11) + (dspbr_GGX_E_at(k01, k12) * w12 + dspbr_GGX_E_at(k01, k13) * w13)) * w01) + (((dspbr_GGX_E_at(k02, k10) * w10 + dspbr_GGX_E_at(k02, k11) * w11) + (dspbr_GGX_E_at(k02, k12) * w12 + dspbr_GGX_E_at(k02, k13) * w13)) * w02 + ((dspbr_GGX_E_at(k03, k10) * w10 + dspbr_GGX_E_at(k03, k11) * w11) + (dspbr_GGX_E_at(k03, k12) * w12 + dspbr_GGX_E_at(k03, k13) * w13)) * w03));
 }
 float dspbr_lut_interp_dspbr_GGX_beta(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  int k0 = int(c0);
+  if (k0 < 0) k0 = 0;
+  if (k0 > 30) k0 = 30;
+  float f0 = c0 - float(k0), g0 = f0 * f0, h0 = g0 * f0;
+  float w00 = 0.5f * (2.0f * g0 - h0 - f0), w01 = 0.5f * (3.0f * h0 - 5.0f * g0 + 2.0f);
+  float w02 = 0.5f * (4.0f * g0 - 3.0f * h0 + f0), w03 = 0.5f * (h0 - g0);
+  if (k0 == 0) {
+    w01 += 2.0f * w00;
+    w02 -= w00;
+    w00 = 0.0f;
+  }
+  if (k0 == 30) {
+    w02 += 2.0f * w03;
+    w01 -= w03;
+    w03 = 0.0f;
+  }
+  int k00 = k0 > 0 ? k0 - 1 : 0, k01 = k0, k02 = k0 + 1, k03 = k0 + 2 < 32 ? k0 + 2 : 31;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
-  int i = int(c0);
-  if (i < 0) i = 0;
-  if (i > 30) i = 30;
-  int j = int(c1);
-  if (j < 0) j = 0;
-  if (j > 30) j = 30;
-  float f0 = c0 - float(i), f1 = c1 - float(j);
-  float r1 = dspbr_lut_row_dspbr_GGX_beta(i, j, f1), r2 = dspbr_lut_row_dspbr_GGX_beta(i + 1, j, f1);
-  float q0 = dspbr_lut_row_dspbr_GGX_beta(i > 0 ? i - 1 : 0, j, f1);
-  float q3 = dspbr_lut_row_dspbr_GGX_beta(i + 2 < 32 ? i + 2 : 32 - 1, j, f1);
-  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;
-  float r3 = i + 2 < 32 ? q3 : 2.0f * r2 - r1;
-  return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
+  int k1 = int(c1);
+  if (k1 < 0) k1 = 0;
+  if (k1 > 30) k1 = 30;
+  float f1 = c1 - float(k1), g1 = f1 * f1, h1 = g1 * f1;
+  float w10 = 0.5f * (2.0f * g1 - h1 - f1), w11 = 0.5f * (3.0f * h1 - 5.0f * g1 + 2.0f);
+  float w12 = 0.5f * (4.0f * g1 - 3.0f * h1 + f1), w13 = 0.5f * (h1 - g1);
+  if (k1 == 0) {
+    w11 += 2.0f * w10;
+    w12 -= w10;
+    w10 = 0.0f;
+  }
+  if (k1 == 30) {
+    w12 += 2.0f * w13;
+    w11 -= w13;
+    w13 = 0.0f;
+  }
+  int k10 = k1 > 0 ? k1 - 1 : 0, k11 = k1, k12 = k1 + 1, k13 = k1 + 2 < 32 ? k1 + 2 : 31;
+  return ((((dspbr_GGX_beta_at(k00, k10) * w10 + dspbr_GGX_beta_at(k00, k11) * w11) + (dspbr_GGX_beta_at(k00, k12) * w12 + dspbr_GGX_beta_at(k00, k13) * w13)) * w00 + ((dspbr_GGX_beta_at(k01, k10) * w10 + dspbr_GGX_beta_at(k01, k11) * w11) + (dspbr_GGX_beta_at(k01, k12) * w12 + dspbr_GGX_beta_at(k01, k13) * w13)) * w01) + (((dspbr_GGX_beta_at(k02, k10) * w10 + dspbr_GGX_beta_at(k02, k11) * w11) + (dspbr_GGX_beta_at(k02, k12) * w12 + dspbr_GGX_beta_at(k02, k13) * w13)) * w02 + ((dspbr_GGX_beta_at(k03, k10) * w10 + dspbr_GGX_beta_at(k03, k11) * w11) + (dspbr_GGX_beta_at(k03, k12) * w12 + dspbr_GGX_beta_at(k03, k13) * w13)) * w03));
 }
 float dspbr_lut_interp_dspbr_GGX_E_avg(float x) {
-  float c = dspbr_lut_clampf(x, 0.0f, 1.0f) * 31.0f;
-  int i = int(c);
-  if (i < 0) i = 0;
-  if (i > 30) i = 30;
-  float f = c - float(i);
-  float p1 = dspbr_GGX_E_avg_at(i), p2 = dspbr_GGX_E_avg_at(i + 1);
-  float q0 = dspbr_GGX_E_avg_at(i > 0 ? i - 1 : 0), q3 = dspbr_GGX_E_avg_at(i + 2 < 32 ? i + 2 : 32 - 1);
-  float p0 = i > 0 ? q0 : 2.0f * p1 - p2;
-  float p3 = i + 2 < 32 ? q3 : 2.0f * p2 - p1;
-  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
+  float c0 = dspbr_lut_clampf(x, 0.0f, 1.0f) * 31.0f;
+  int k0 = int(c0);
+  if (k0 < 0) k0 = 0;
+  if (k0 > 30) k0 = 30;
+  float f0 = c0 - float(k0), g0 = f0 * f0, h0 = g0 * f0;
+  float w00 = 0.5f * (2.0f * g0 - h0 - f0), w01 = 0.5f * (3.0f * h0 - 5.0f * g0 + 2.0f);
+  float w02 = 0.5f * (4.0f * g0 - 3.0f * h0 + f0), w03 = 0.5f * (h0 - g0);
+  if (k0 == 0) {
+    w01 += 2.0f * w00;
+    w02 -= w00;
+    w00 = 0.0f;
+  }
+  if (k0 == 30) {
+    w02 += 2.0f * w03;
+    w01 -= w03;
+    w03 = 0.0f;
+  }
+  int k00 = k0 > 0 ? k0 - 1 : 0, k01 = k0, k02 = k0 + 1, k03 = k0 + 2 < 32 ? k0 + 2 : 31;
+  return ((dspbr_GGX_E_avg_at(k00) * w00 + dspbr_GGX_E_avg_at(k01) * w01) + (dspbr_GGX_E_avg_at(k02) * w02 + dspbr_GGX_E_avg_at(k03) * w03));
 }
 float dspbr_lut_interp_dspbr_GGX_B_avg(float x) {
-  float c = dspbr_lut_clampf(x, 0.0f, 1.0f) * 31.0f;
-  int i = int(c);
-  if (i < 0) i = 0;
-  if (i > 30) i = 30;
-  float f = c - float(i);
-  float p1 = dspbr_GGX_B_avg_at(i), p2 = dspbr_GGX_B_avg_at(i + 1);
-  float q0 = dspbr_GGX_B_avg_at(i > 0 ? i - 1 : 0), q3 = dspbr_GGX_B_avg_at(i + 2 < 32 ? i + 2 : 32 - 1);
-  float p0 = i > 0 ? q0 : 2.0f * p1 - p2;
-  float p3 = i + 2 < 32 ? q3 : 2.0f * p2 - p1;
-  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
-}
-float dspbr_lut_row_dspbr_Sheen_E(int r, int j, float f) {
-  float p1 = dspbr_Sheen_E_at(r, j), p2 = dspbr_Sheen_E_at(r, j + 1);
-  float q0 = dspbr_Sheen_E_at(r, j > 0 ? j - 1 : 0), q3 = dspbr_Sheen_E_at(r, j + 2 < 32 ? j + 2 : 32 - 1);
-  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;
-  float p3 = j + 2 < 32 ? q3 : 2.0f * p2 - p1;
-  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
+  float c0 = dspbr_lut_clampf(x, 0.0f, 1.0f) * 31.0f;
+  int k0 = int(c0);
+  if (k0 < 0) k0 = 0;
+  if (k0 > 30) k0 = 30;
+  float f0 = c0 - float(k0), g0 = f0 * f0, h0 = g0 * f0;
+  float w00 = 0.5f * (2.0f * g0 - h0 - f0), w01 = 0.5f * (3.0f * h0 - 5.0f * g0 + 2.0f);
+  float w02 = 0.5f * (4.0f * g0 - 3.0f * h0 + f0), w03 = 0.5f * (h0 - g0);
+  if (k0 == 0) {
+    w01 += 2.0f * w00;
+    w02 -= w00;
+    w00 = 0.0f;
+  }
+  if (k0 == 30) {
+    w02 += 2.0f * w03;
+    w01 -= w03;
+    w03 = 0.0f;
+  }
+  int k00 = k0 > 0 ? k0 - 1 : 0, k01 = k0, k02 = k0 + 1, k03 = k0 + 2 < 32 ? k0 + 2 : 31;
+  return ((dspbr_GGX_B_avg_at(k00) * w00 + dspbr_GGX_B_avg_at(k01) * w01) + (dspbr_GGX_B_avg_at(k02) * w02 + dspbr_GGX_B_avg_at(k03) * w03));
 }
 float dspbr_lut_interp_dspbr_Sheen_E(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  int k0 = int(c0);
+  if (k0 < 0) k0 = 0;
+  if (k0 > 30) k0 = 30;
+  float f0 = c0 - float(k0), g0 = f0 * f0, h0 = g0 * f0;
+  float w00 = 0.5f * (2.0f * g0 - h0 - f0), w01 = 0.5f * (3.0f * h0 - 5.0f * g0 + 2.0f);
+  float w02 = 0.5f * (4.0f * g0 - 3.0f * h0 + f0), w03 = 0.5f * (h0 - g0);
+  if (k0 == 0) {
+    w01 += 2.0f * w00;
+    w02 -= w00;
+    w00 = 0.0f;
+  }
+  if (k0 == 30) {
+    w02 += 2.0f * w03;
+    w01 -= w03;
+    w03 = 0.0f;
+  }
+  int k00 = k0 > 0 ? k0 - 1 : 0, k01 = k0, k02 = k0 + 1, k03 = k0 + 2 < 32 ? k0 + 2 : 31;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
-  int i = int(c0);
-  if (i < 0) i = 0;
-  if (i > 30) i = 30;
-  int j = int(c1);
-  if (j < 0) j = 0;
-  if (j > 30) j = 30;
-  float f0 = c0 - float(i), f1 = c1 - float(j);
-  float r1 = dspbr_lut_row_dspbr_Sheen_E(i, j, f1), r2 = dspbr_lut_row_dspbr_Sheen_E(i + 1, j, f1);
-  float q0 = dspbr_lut_row_dspbr_Sheen_E(i > 0 ? i - 1 : 0, j, f1);
-  float q3 = dspbr_lut_row_dspbr_Sheen_E(i + 2 < 32 ? i + 2 : 32 - 1, j, f1);
-  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;
-  float r3 = i + 2 < 32 ? q3 : 2.0f * r2 - r1;
-  return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
-}
-float dspbr_lut_row_dspbr_Sheen_ash_E(int r, int j, float f) {
-  float p1 = dspbr_Sheen_ash_E_at(r, j), p2 = dspbr_Sheen_ash_E_at(r, j + 1);
-  float q0 = dspbr_Sheen_ash_E_at(r, j > 0 ? j - 1 : 0), q3 = dspbr_Sheen_ash_E_at(r, j + 2 < 32 ? j + 2 : 32 - 1);
-  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;
-  float p3 = j + 2 < 32 ? q3 : 2.0f * p2 - p1;
-  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
+  int k1 = int(c1);
+  if (k1 < 0) k1 = 0;
+  if (k1 > 30) k1 = 30;
+  float f1 = c1 - float(k1), g1 = f1 * f1, h1 = g1 * f1;
+  float w10 = 0.5f * (2.0f * g1 - h1 - f1), w11 = 0.5f * (3.0f * h1 - 5.0f * g1 + 2.0f);
+  float w12 = 0.5f * (4.0f * g1 - 3.0f * h1 + f1), w13 = 0.5f * (h1 - g1);
+  if (k1 == 0) {
+    w11 += 2.0f * w10;
+    w12 -= w10;
+    w10 = 0.0f;
+  }
+  if (k1 == 30) {
+    w12 += 2.0f * w13;
+    w11 -= w13;
+    w13 = 0.0f;
+  }
+  int k10 = k1 > 0 ? k1 - 1 : 0, k11 = k1, k12 = k1 + 1, k13 = k1 + 2 < 32 ? k1 + 2 : 31;
+  return ((((dspbr_Sheen_E_at(k00, k10) * w10 + dspbr_Sheen_E_at(k00, k11) * w11) + (dspbr_Sheen_E_at(k00, k12) * w12 + dspbr_Sheen_E_at(k00, k13) * w13)) * w00 + ((dspbr_Sheen_E_at(k01, k10) * w10 + dspbr_Sheen_E_at(k01, k11) * w11) + (dspbr_Sheen_E_at(k01, k12) * w12 + dspbr_Sheen_E_at(k01, k13) * w13)) * w01) + (((dspbr_Sheen_E_at(k02, k10) * w10 + dspbr_Sheen_E_at(k02, k11) * w11) + (dspbr_Sheen_E_at(k02, k12) * w12 + dspbr_Sheen_E_at(k02, k13) * w13)) * w02 + ((dspbr_Sheen_E_at(k03, k10) * w10 + dspbr_Sheen_E_at(k03, k11) * w11) + (dspbr_Sheen_E_at(k03, k12) * w12 + dspbr_Sheen_E_at(k03, k13) * w13)) * w03));
 }
 float dspbr_lut_interp_dspbr_Sheen_ash_E(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  int k0 = int(c0);
+  if (k0 < 0) k0 = 0;
+  if (k0 > 30) k0 = 30;
+  float f0 = c0 - float(k0), g0 = f0 * f0, h0 = g0 * f0;
+  float w00 = 0.5f * (2.0f * g0 - h0 - f0), w01 = 0.5f * (3.0f * h0 - 5.0f * g0 + 2.0f);
+  float w02 = 0.5f * (4.0f * g0 - 3.0f * h0 + f0), w03 = 0.5f * (h0 - g0);
+  if (k0 == 0) {
+    w01 += 2.0f * w00;
+    w02 -= w00;
+    w00 = 0.0f;
+  }
+  if (k0 == 30) {
+    w02 += 2.0f * w03;
+    w01 -= w03;
+    w03 = 0.0f;
+  }
+  int k00 = k0 > 0 ? k0 - 1 : 0, k01 = k0, k02 = k0 + 1, k03 = k0 + 2 < 32 ? k0 + 2 : 31;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 31.0f;
-  int i = int(c0);
-  if (i < 0) i = 0;
-  if (i > 30) i = 30;
-  int j = int(c1);
-  if (j < 0) j = 0;
-  if (j > 30) j = 30;
-  float f0 = c0 - float(i), f1 = c1 - float(j);
-  float r1 = dspbr_lut_row_dspbr_Sheen_ash_E(i, j, f1), r2 = dspbr_lut_row_dspbr_Sheen_ash_E(i + 1, j, f1);
-  float q0 = dspbr_lut_row_dspbr_Sheen_ash_E(i > 0 ? i - 1 : 0, j, f1);
-  float q3 = dspbr_lut_row_dspbr_Sheen_ash_E(i + 2 < 32 ? i + 2 : 32 - 1, j, f1);
-  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;
-  float r3 = i + 2 < 32 ? q3 : 2.0f * r2 - r1;
-  return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
+  int k1 = int(c1);
+  if (k1 < 0) k1 = 0;
+  if (k1 > 30) k1 = 30;
+  float f1 = c1 - float(k1), g1 = f1 * f1, h1 = g1 * f1;
+  float w10 = 0.5f * (2.0f * g1 - h1 - f1), w11 = 0.5f * (3.0f * h1 - 5.0f * g1 + 2.0f);
+  float w12 = 0.5f * (4.0f * g1 - 3.0f * h1 + f1), w13 = 0.5f * (h1 - g1);
+  if (k1 == 0) {
+    w11 += 2.0f * w10;
+    w12 -= w10;
+    w10 = 0.0f;
+  }
+  if (k1 == 30) {
+    w12 += 2.0f * w13;
+    w11 -= w13;
+    w13 = 0.0f;
+  }
+  int k10 = k1 > 0 ? k1 - 1 : 0, k11 = k1, k12 = k1 + 1, k13 = k1 + 2 < 32 ? k1 + 2 : 31;
+  return ((((dspbr_Sheen_ash_E_at(k00, k10) * w10 + dspbr_Sheen_ash_E_at(k00, k11) * w11) + (dspbr_Sheen_ash_E_at(k00, k12) * w12 + dspbr_Sheen_ash_E_at(k00, k13) * w13)) * w00 + ((dspbr_Sheen_ash_E_at(k01, k10) * w10 + dspbr_Sheen_ash_E_at(k01, k11) * w11) + (dspbr_Sheen_ash_E_at(k01, k12) * w12 + dspbr_Sheen_ash_E_at(k01, k13) * w13)) * w01) + (((dspbr_Sheen_ash_E_at(k02, k10) * w10 + dspbr_Sheen_ash_E_at(k02, k11) * w11) + (dspbr_Sheen_ash_E_at(k02, k12) * w12 + dspbr_Sheen_ash_E_at(k02, k13) * w13)) * w02 + ((dspbr_Sheen_ash_E_at(k03, k10) * w10 + dspbr_Sheen_ash_E_at(k03, k11) * w11) + (dspbr_Sheen_ash_E_at(k03, k12) * w12 + dspbr_Sheen_ash_E_at(k03, k13) * w13)) * w03));
 }
 float dspbr_GGX_E_missing_at(int r, int c) { return 1.0f - dspbr_GGX_E_at(r, c); }
-float dspbr_lut_row_dspbr_GGX_E_missing(int r, int j, float f) {
-  float p1 = dspbr_GGX_E_missing_at(r, j), p2 = dspbr_GGX_E_missing_at(r, j + 1);
-  float q0 = dspbr_GGX_E_missing_at(r, j > 0 ? j - 1 : 0), q3 = dspbr_GGX_E_missing_at(r, j + 2 < 64 ? j + 2 : 64 - 1);
-  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;
-  float p3 = j + 2 < 64 ? q3 : 2.0f * p2 - p1;
-  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);
-}
 float dspbr_lut_interp_dspbr_GGX_E_missing(float x0, float x1) {
   float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
+  int k0 = int(c0);
+  if (k0 < 0) k0 = 0;
+  if (k0 > 30) k0 = 30;
+  float f0 = c0 - float(k0), g0 = f0 * f0, h0 = g0 * f0;
+  float w00 = 0.5f * (2.0f * g0 - h0 - f0), w01 = 0.5f * (3.0f * h0 - 5.0f * g0 + 2.0f);
+  float w02 = 0.5f * (4.0f * g0 - 3.0f * h0 + f0), w03 = 0.5f * (h0 - g0);
+  if (k0 == 0) {
+    w01 += 2.0f * w00;
+    w02 -= w00;
+    w00 = 0.0f;
+  }
+  if (k0 == 30) {
+    w02 += 2.0f * w03;
+    w01 -= w03;
+    w03 = 0.0f;
+  }
+  int k00 = k0 > 0 ? k0 - 1 : 0, k01 = k0, k02 = k0 + 1, k03 = k0 + 2 < 32 ? k0 + 2 : 31;
   float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 63.0f;
-  int i = int(c0);
-  if (i < 0) i = 0;
-  if (i > 30) i = 30;
-  int j = int(c1);
-  if (j < 0) j = 0;
-  if (j > 62) j = 62;
-  float f0 = c0 - float(i), f1 = c1 - float(j);
-  float r1 = dspbr_lut_row_dspbr_GGX_E_missing(i, j, f1), r2 = dspbr_lut_row_dspbr_GGX_E_missing(i + 1, j, f1);
-  float q0 = dspbr_lut_row_dspbr_GGX_E_missing(i > 0 ? i - 1 : 0, j, f1);
-  float q3 = dspbr_lut_row_dspbr_GGX_E_missing(i + 2 < 32 ? i + 2 : 32 - 1, j, f1);
-  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;
-  float r3 = i + 2 < 32 ? q3 : 2.0f * r2 - r1;
-  return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);
+  int k1 = int(c1);
+  if (k1 < 0) k1 = 0;
+  if (k1 > 62) k1 = 62;
+  float f1 = c1 - float(k1), g1 = f1 * f1, h1 = g1 * f1;
+  float w10 = 0.5f * (2.0f * g1 - h1 - f1), w11 = 0.5f * (3.0f * h1 - 5.0f * g1 + 2.0f);
+  float w12 = 0.5f * (4.0f * g1 - 3.0f * h1 + f1), w13 = 0.5f * (h1 - g1);
+  if (k1 == 0) {
+    w11 += 2.0f * w10;
+    w12 -= w10;
+    w10 = 0.0f;
+  }
+  if (k1 == 62) {
+    w12 += 2.0f * w13;
+    w11 -= w13;
+    w13 = 0.0f;
+  }
+  int k10 = k1 > 0 ? k1 - 1 : 0, k11 = k1, k12 = k1 + 1, k13 = k1 + 2 < 64 ? k1 + 2 : 63;
+  return ((((dspbr_GGX_E_missing_at(k00, k10) * w10 + dspbr_GGX_E_missing_at(k00, k11) * w11) + (dspbr_GGX_E_missing_at(k00, k12) * w12 + dspbr_GGX_E_missing_at(k00, k13) * w13)) * w00 + ((dspbr_GGX_E_missing_at(k01, k10) * w10 + dspbr_GGX_E_missing_at(k01, k11) * w11) + (dspbr_GGX_E_missing_at(k01, k12) * w12 + dspbr_GGX_E_missing_at(k01, k13) * w13)) * w01) + (((dspbr_GGX_E_missing_at(k02, k10) * w10 + dspbr_GGX_E_missing_at(k02, k11) * w11) + (dspbr_GGX_E_missing_at(k02, k12) * w12 + dspbr_GGX_E_missing_at(k02, k13) * w13)) * w02 + ((dspbr_GGX_E_missing_at(k03, k10) * w10 + dspbr_GGX_E_missing_at(k03, k11) * w11) + (dspbr_GGX_E_missing_at(k03, k12) * w12 + dspbr_GGX_E_missing_at(k03, k13) * w13)) * w03));
 }
 // E_m(mu; r): single-scattering GGX albedo, in [0, 1]. The cubic's undershoot (overshoot) is clamped
 // here, in beta and in the sheen albedos, so that every albedo composed from them is >= 0.
@@ -900,6 +988,77 @@ float dspbr_ggx_beta(float cos_theta, float roughness) {
   float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
   float m = 1.0f - mu, m2 = m * m;
   return max(m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(mu, r * r))), 0.0f);
+}
+struct DspbrGgxMissingBeta {
+  float missing;
+  float beta;
+};
+// 1 - E_m(mu; r) and beta(mu; r) at once, equal to dspbr_ggx_E_missing and dspbr_ggx_beta: the
+// albedo of a dielectric base, E = f0 E_m + (1 - f0) beta E_m + F_ms (1 - E_m), reads both.
+DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, float roughness) {
+  float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
+  float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
+  float xr = dspbr_lut_clampf(r, 0.0f, 1.0f);
+  float xc = sqrt(dspbr_lut_ggx_cos_t(mu, r * r));
+  float cer = dspbr_lut_clampf(xr, 0.0f, 1.0f) * 31.0f;
+  int ker = int(cer);
+  if (ker < 0) ker = 0;
+  if (ker > 30) ker = 30;
+  float fer = cer - float(ker), ger = fer * fer, her = ger * fer;
+  float wer0 = 0.5f * (2.0f * ger - her - fer), wer1 = 0.5f * (3.0f * her - 5.0f * ger + 2.0f);
+  float wer2 = 0.5f * (4.0f * ger - 3.0f * her + fer), wer3 = 0.5f * (her - ger);
+  if (ker == 0) {
+    wer1 += 2.0f * wer0;
+    wer2 -= wer0;
+    wer0 = 0.0f;
+  }
+  if (ker == 30) {
+    wer2 += 2.0f * wer3;
+    wer1 -= wer3;
+    wer3 = 0.0f;
+  }
+  int ker0 = ker > 0 ? ker - 1 : 0, ker1 = ker, ker2 = ker + 1, ker3 = ker + 2 < 32 ? ker + 2 : 31;
+  float cec = dspbr_lut_clampf(xc, 0.0f, 1.0f) * 63.0f;
+  int kec = int(cec);
+  if (kec < 0) kec = 0;
+  if (kec > 62) kec = 62;
+  float fec = cec - float(kec), gec = fec * fec, hec = gec * fec;
+  float wec0 = 0.5f * (2.0f * gec - hec - fec), wec1 = 0.5f * (3.0f * hec - 5.0f * gec + 2.0f);
+  float wec2 = 0.5f * (4.0f * gec - 3.0f * hec + fec), wec3 = 0.5f * (hec - gec);
+  if (kec == 0) {
+    wec1 += 2.0f * wec0;
+    wec2 -= wec0;
+    wec0 = 0.0f;
+  }
+  if (kec == 62) {
+    wec2 += 2.0f * wec3;
+    wec1 -= wec3;
+    wec3 = 0.0f;
+  }
+  int kec0 = kec > 0 ? kec - 1 : 0, kec1 = kec, kec2 = kec + 1, kec3 = kec + 2 < 64 ? kec + 2 : 63;
+  float cbc = dspbr_lut_clampf(xc, 0.0f, 1.0f) * 31.0f;
+  int kbc = int(cbc);
+  if (kbc < 0) kbc = 0;
+  if (kbc > 30) kbc = 30;
+  float fbc = cbc - float(kbc), gbc = fbc * fbc, hbc = gbc * fbc;
+  float wbc0 = 0.5f * (2.0f * gbc - hbc - fbc), wbc1 = 0.5f * (3.0f * hbc - 5.0f * gbc + 2.0f);
+  float wbc2 = 0.5f * (4.0f * gbc - 3.0f * hbc + fbc), wbc3 = 0.5f * (hbc - gbc);
+  if (kbc == 0) {
+    wbc1 += 2.0f * wbc0;
+    wbc2 -= wbc0;
+    wbc0 = 0.0f;
+  }
+  if (kbc == 30) {
+    wbc2 += 2.0f * wbc3;
+    wbc1 -= wbc3;
+    wbc3 = 0.0f;
+  }
+  int kbc0 = kbc > 0 ? kbc - 1 : 0, kbc1 = kbc, kbc2 = kbc + 1, kbc3 = kbc + 2 < 32 ? kbc + 2 : 31;
+  DspbrGgxMissingBeta a;
+  a.missing = dspbr_lut_clampf(((((dspbr_GGX_E_missing_at(ker0, kec0) * wec0 + dspbr_GGX_E_missing_at(ker0, kec1) * wec1) + (dspbr_GGX_E_missing_at(ker0, kec2) * wec2 + dspbr_GGX_E_missing_at(ker0, kec3) * wec3)) * wer0 + ((dspbr_GGX_E_missing_at(ker1, kec0) * wec0 + dspbr_GGX_E_missing_at(ker1, kec1) * wec1) + (dspbr_GGX_E_missing_at(ker1, kec2) * wec2 + dspbr_GGX_E_missing_at(ker1, kec3) * wec3)) * wer1) + (((dspbr_GGX_E_missing_at(ker2, kec0) * wec0 + dspbr_GGX_E_missing_at(ker2, kec1) * wec1) + (dspbr_GGX_E_missing_at(ker2, kec2) * wec2 + dspbr_GGX_E_missing_at(ker2, kec3) * wec3)) * wer2 + ((dspbr_GGX_E_missing_at(ker3, kec0) * wec0 + dspbr_GGX_E_missing_at(ker3, kec1) * wec1) + (dspbr_GGX_E_missing_at(ker3, kec2) * wec2 + dspbr_GGX_E_missing_at(ker3, kec3) * wec3)) * wer3)), 0.0f, 1.0f);
+  float m = 1.0f - mu, m2 = m * m;
+  a.beta = max(m2 * m2 * m + ((((dspbr_GGX_beta_at(ker0, kbc0) * wbc0 + dspbr_GGX_beta_at(ker0, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker0, kbc2) * wbc2 + dspbr_GGX_beta_at(ker0, kbc3) * wbc3)) * wer0 + ((dspbr_GGX_beta_at(ker1, kbc0) * wbc0 + dspbr_GGX_beta_at(ker1, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker1, kbc2) * wbc2 + dspbr_GGX_beta_at(ker1, kbc3) * wbc3)) * wer1) + (((dspbr_GGX_beta_at(ker2, kbc0) * wbc0 + dspbr_GGX_beta_at(ker2, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker2, kbc2) * wbc2 + dspbr_GGX_beta_at(ker2, kbc3) * wbc3)) * wer2 + ((dspbr_GGX_beta_at(ker3, kbc0) * wbc0 + dspbr_GGX_beta_at(ker3, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker3, kbc2) * wbc2 + dspbr_GGX_beta_at(ker3, kbc3) * wbc3)) * wer3)), 0.0f);
+  return a;
 }
 float dspbr_lut_ggx_B(float cos_theta, float roughness) {
   return dspbr_ggx_beta(cos_theta, roughness) * dspbr_ggx_E(cos_theta, roughness);

@@ -17,6 +17,17 @@ DSPBR_FN float dspbr_ggx_beta(float cos_theta, float roughness) {
   float e = dspbr_fit_ggx_E(cos_theta, roughness);
   return e > 0.0f ? dspbr_fit_detail_ggx_E5(cos_theta, roughness) / e : 0.0f;
 }
+// 1 - E_m and beta at once.
+struct DspbrGgxMissingBeta {
+  float missing;
+  float beta;
+};
+DSPBR_FN DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, float roughness) {
+  DspbrGgxMissingBeta a;
+  a.missing = dspbr_ggx_E_missing(cos_theta, roughness);
+  a.beta = dspbr_ggx_beta(cos_theta, roughness);
+  return a;
+}
 // E_avg(r, f0).
 DSPBR_FN float dspbr_base_E_avg(float roughness, float f0) { return dspbr_fit_base_E_avg(roughness, clamp(f0, 0.0f, 1.0f)); }
 // E_b(mu; alpha_b) of the two sheen models.

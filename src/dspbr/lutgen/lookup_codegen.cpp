@@ -50,102 +50,77 @@ std::string warp_expr(const Warp& w, const std::string& v, const std::string& al
 
 std::string ident(const WarpedTable& t) { return "dspbr_" + t.name; }
 
-// Rank 3: rows along the fastest axis, planes across the rows, then across the planes.
-std::string interp_function_3d(const WarpedTable& t) {
-  const std::string id = ident(t);
-  const int n0 = t.axes[0].size, n1 = t.axes[1].size, n2 = t.axes[2].size;
+// The Catmull-Rom taps of one axis (GLSL syntax): cell k<v> of n samples holding the coordinate x
+// (clamped to [0, 1]), the four sample indices k<v>0..k<v>3 (clamped to the table) and their
+// weights w<v>0..w<v>3, the linear extension beyond each end (p_-1 = 2 p_0 - p_1, p_n = 2 p_n-1 -
+// p_n-2) folded into the weights: the same cubic as tables/warped_table.cpp's catmull_rom_taps.
+std::string taps_text(const std::string& v, const std::string& x, int n) {
   return fmt::format(
-      "float dspbr_lut_row_{0}(int p, int r, int j, float f) {{\n"
-      "  float p1 = {0}_at(p, r, j), p2 = {0}_at(p, r, j + 1);\n"
-      "  float q0 = {0}_at(p, r, j > 0 ? j - 1 : 0), q3 = {0}_at(p, r, j + 2 < {3} ? j + 2 : {3} - 1);\n"
-      "  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;\n"
-      "  float p3 = j + 2 < {3} ? q3 : 2.0f * p2 - p1;\n"
-      "  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);\n"
-      "}}\n"
-      "float dspbr_lut_plane_{0}(int p, int i, int j, float f1, float f2) {{\n"
-      "  float r1 = dspbr_lut_row_{0}(p, i, j, f2), r2 = dspbr_lut_row_{0}(p, i + 1, j, f2);\n"
-      "  float q0 = dspbr_lut_row_{0}(p, i > 0 ? i - 1 : 0, j, f2);\n"
-      "  float q3 = dspbr_lut_row_{0}(p, i + 2 < {2} ? i + 2 : {2} - 1, j, f2);\n"
-      "  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;\n"
-      "  float r3 = i + 2 < {2} ? q3 : 2.0f * r2 - r1;\n"
-      "  return dspbr_lut_catmull_rom(f1, r0, r1, r2, r3);\n"
-      "}}\n"
-      "float dspbr_lut_interp_{0}(float x0, float x1, float x2) {{\n"
-      "  float c0 = clamp(x0, 0.0f, 1.0f) * {4};\n"
-      "  float c1 = clamp(x1, 0.0f, 1.0f) * {5};\n"
-      "  float c2 = clamp(x2, 0.0f, 1.0f) * {6};\n"
-      "  int p = int(c0);\n"
-      "  if (p < 0) p = 0;\n"
-      "  if (p > {7}) p = {7};\n"
-      "  int i = int(c1);\n"
-      "  if (i < 0) i = 0;\n"
-      "  if (i > {8}) i = {8};\n"
-      "  int j = int(c2);\n"
-      "  if (j < 0) j = 0;\n"
-      "  if (j > {9}) j = {9};\n"
-      "  float f0 = c0 - float(p), f1 = c1 - float(i), f2 = c2 - float(j);\n"
-      "  float s1 = dspbr_lut_plane_{0}(p, i, j, f1, f2), s2 = dspbr_lut_plane_{0}(p + 1, i, j, f1, f2);\n"
-      "  float q0 = dspbr_lut_plane_{0}(p > 0 ? p - 1 : 0, i, j, f1, f2);\n"
-      "  float q3 = dspbr_lut_plane_{0}(p + 2 < {1} ? p + 2 : {1} - 1, i, j, f1, f2);\n"
-      "  float s0 = p > 0 ? q0 : 2.0f * s1 - s2;\n"
-      "  float s3 = p + 2 < {1} ? q3 : 2.0f * s2 - s1;\n"
-      "  return dspbr_lut_catmull_rom(f0, s0, s1, s2, s3);\n"
-      "}}\n",
-      id, n0, n1, n2, flit(n0 - 1), flit(n1 - 1), flit(n2 - 1), n0 - 2, n1 - 2, n2 - 2);
+      "  float c{0} = clamp({1}, 0.0f, 1.0f) * {2};\n"
+      "  int k{0} = int(c{0});\n"
+      "  if (k{0} < 0) k{0} = 0;\n"
+      "  if (k{0} > {3}) k{0} = {3};\n"
+      "  float f{0} = c{0} - float(k{0}), g{0} = f{0} * f{0}, h{0} = g{0} * f{0};\n"
+      "  float w{0}0 = 0.5f * (2.0f * g{0} - h{0} - f{0}), w{0}1 = 0.5f * (3.0f * h{0} - 5.0f * g{0} + 2.0f);\n"
+      "  float w{0}2 = 0.5f * (4.0f * g{0} - 3.0f * h{0} + f{0}), w{0}3 = 0.5f * (h{0} - g{0});\n"
+      "  if (k{0} == 0) {{\n    w{0}1 += 2.0f * w{0}0;\n    w{0}2 -= w{0}0;\n    w{0}0 = 0.0f;\n  }}\n"
+      "  if (k{0} == {3}) {{\n    w{0}2 += 2.0f * w{0}3;\n    w{0}1 -= w{0}3;\n    w{0}3 = 0.0f;\n  }}\n"
+      "  int k{0}0 = k{0} > 0 ? k{0} - 1 : 0, k{0}1 = k{0}, k{0}2 = k{0} + 1, k{0}3 = k{0} + 2 < {4} ? k{0} + 2 : {5};\n",
+      v, x, flit(n - 1), n - 2, n, n - 1);
 }
 
-// Catmull-Rom interpolation function of one table: dspbr_lut_interp_<name>(x0[, x1[, x2]]); `id`
-// names the functions and the sample accessor <id>_at it reads (ident(t): the table's own).
+// The weighted sum over the taps of every axis (tap variables `axes`, slowest first) of the samples
+// `at`(indices), as a balanced tree of products: sum_a w_a0 (sum_b w_b0 (...)).
+std::string taps_sum(const std::string& at, const std::vector<std::string>& axes, const std::string& indices = "") {
+  if (axes.empty()) return at + "(" + indices + ")";
+  const std::string& v = axes.front();
+  const std::vector<std::string> rest(axes.begin() + 1, axes.end());
+  std::string term[4];
+  for (int q = 0; q < 4; ++q)
+    term[q] = fmt::format("{} * w{}{}", taps_sum(at, rest, indices + (indices.empty() ? "" : ", ") + fmt::format("k{}{}", v, q)), v, q);
+  return fmt::format("(({} + {}) + ({} + {}))", term[0], term[1], term[2], term[3]);
+}
+
+// Catmull-Rom interpolation function of one table: dspbr_lut_interp_<id>(x0[, x1[, x2]]) over the
+// sample accessor <id>_at (ident(t): the table's own).
 std::string interp_function(const WarpedTable& t, const std::string& id) {
-  std::ostringstream o;
-  const int n0 = t.axes[0].size;
-  if (t.axes.size() == 1) {
-    o << fmt::format(
-        "float dspbr_lut_interp_{0}(float x) {{\n"
-        "  float c = clamp(x, 0.0f, 1.0f) * {1};\n"
-        "  int i = int(c);\n"
-        "  if (i < 0) i = 0;\n"
-      "  if (i > {2}) i = {2};\n"
-        "  float f = c - float(i);\n"
-        "  float p1 = {0}_at(i), p2 = {0}_at(i + 1);\n"
-        "  float q0 = {0}_at(i > 0 ? i - 1 : 0), q3 = {0}_at(i + 2 < {3} ? i + 2 : {3} - 1);\n"
-        "  float p0 = i > 0 ? q0 : 2.0f * p1 - p2;\n"
-        "  float p3 = i + 2 < {3} ? q3 : 2.0f * p2 - p1;\n"
-        "  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);\n"
-        "}}\n",
-        id, flit(n0 - 1), n0 - 2, n0);
-    return o.str();
+  std::string args, taps;
+  std::vector<std::string> axes;
+  for (size_t d = 0; d < t.axes.size(); ++d) {
+    const std::string x = t.axes.size() == 1 ? "x" : "x" + std::to_string(d);
+    args += (d ? ", float " : "float ") + x;
+    axes.push_back(std::to_string(d));
+    taps += taps_text(axes.back(), x, t.axes[d].size);
   }
-  if (t.axes.size() == 3) return interp_function_3d(t);
-  const int n1 = t.axes[1].size;
-  o << fmt::format(
-      "float dspbr_lut_row_{0}(int r, int j, float f) {{\n"
-      "  float p1 = {0}_at(r, j), p2 = {0}_at(r, j + 1);\n"
-      "  float q0 = {0}_at(r, j > 0 ? j - 1 : 0), q3 = {0}_at(r, j + 2 < {1} ? j + 2 : {1} - 1);\n"
-      "  float p0 = j > 0 ? q0 : 2.0f * p1 - p2;\n"
-      "  float p3 = j + 2 < {1} ? q3 : 2.0f * p2 - p1;\n"
-      "  return dspbr_lut_catmull_rom(f, p0, p1, p2, p3);\n"
-      "}}\n",
-      id, n1);
-  o << fmt::format(
-      "float dspbr_lut_interp_{0}(float x0, float x1) {{\n"
-      "  float c0 = clamp(x0, 0.0f, 1.0f) * {1};\n"
-      "  float c1 = clamp(x1, 0.0f, 1.0f) * {2};\n"
-      "  int i = int(c0);\n"
-      "  if (i < 0) i = 0;\n"
-      "  if (i > {3}) i = {3};\n"
-      "  int j = int(c1);\n"
-      "  if (j < 0) j = 0;\n"
-      "  if (j > {4}) j = {4};\n"
-      "  float f0 = c0 - float(i), f1 = c1 - float(j);\n"
-      "  float r1 = dspbr_lut_row_{0}(i, j, f1), r2 = dspbr_lut_row_{0}(i + 1, j, f1);\n"
-      "  float q0 = dspbr_lut_row_{0}(i > 0 ? i - 1 : 0, j, f1);\n"
-      "  float q3 = dspbr_lut_row_{0}(i + 2 < {5} ? i + 2 : {5} - 1, j, f1);\n"
-      "  float r0 = i > 0 ? q0 : 2.0f * r1 - r2;\n"
-      "  float r3 = i + 2 < {5} ? q3 : 2.0f * r2 - r1;\n"
-      "  return dspbr_lut_catmull_rom(f0, r0, r1, r2, r3);\n"
-      "}}\n",
-      id, flit(n0 - 1), flit(n1 - 1), n0 - 2, n1 - 2, n0);
+  return fmt::format("float dspbr_lut_interp_{0}({1}) {{\n{2}  return {3};\n}}\n", id, args, taps,
+                     taps_sum(id + "_at", axes));
+}
+
+// dspbr_ggx_E_missing_beta: 1 - E_m and beta at one (mu, r), as dspbr_ggx_E_missing and dspbr_ggx_beta
+// give them (the same expressions), with their warped coordinates and roughness taps computed once
+// where the two tables share an axis.
+std::string ggx_missing_beta_function(const WarpedTable& e, const WarpedTable& b) {
+  auto same = [](const WarpedAxis& x, const WarpedAxis& y) { return x.size == y.size && x.warp.describe() == y.warp.describe(); };
+  std::ostringstream o;
+  o << "struct DspbrGgxMissingBeta {\n  float missing;\n  float beta;\n};\n"
+    << "// 1 - E_m(mu; r) and beta(mu; r) at once, equal to dspbr_ggx_E_missing and dspbr_ggx_beta: the\n"
+    << "// albedo of a dielectric base, E = f0 E_m + (1 - f0) beta E_m + F_ms (1 - E_m), reads both.\n"
+    << "DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, float roughness) {\n"
+    << "  float r = clamp(roughness, 0.0f, 1.0f);\n"
+    << "  float mu = clamp(cos_theta, 0.0f, 1.0f);\n"
+    << "  float xr = " << warp_expr(e.axes[0].warp, "r", "") << ";\n"
+    << "  float xc = " << warp_expr(e.axes[1].warp, "mu", "r * r") << ";\n"
+    << taps_text("er", "xr", e.axes[0].size) << taps_text("ec", "xc", e.axes[1].size);
+  const bool rows = same(e.axes[0], b.axes[0]);
+  const bool cos_warp = e.axes[1].warp.describe() == b.axes[1].warp.describe();
+  if (!rows) o << "  float yr = " << warp_expr(b.axes[0].warp, "r", "") << ";\n" << taps_text("br", "yr", b.axes[0].size);
+  if (!cos_warp) o << "  float yc = " << warp_expr(b.axes[1].warp, "mu", "r * r") << ";\n";
+  o << taps_text("bc", cos_warp ? "xc" : "yc", b.axes[1].size)
+    << "  DspbrGgxMissingBeta a;\n"
+    << "  a.missing = clamp(" << taps_sum(ident(e) + "_missing_at", {"er", "ec"}) << ", 0.0f, 1.0f);\n"
+    << "  float m = 1.0f - mu, m2 = m * m;\n"
+    << "  a.beta = max(m2 * m2 * m + " << taps_sum(ident(b) + "_at", {rows ? "er" : "br", "bc"}) << ", 0.0f);\n"
+    << "  return a;\n}\n";
   return o.str();
 }
 
@@ -185,6 +160,7 @@ std::string api_functions(const RendererLuts& L) {
     << "  float m = 1.0f - mu, m2 = m * m;\n"
     << "  return max(m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(" << warp_expr(b.axes[0].warp, "r", "") << ", "
     << warp_expr(b.axes[1].warp, "mu", "r * r") << "), 0.0f);\n}\n"
+    << ggx_missing_beta_function(e, b)
     << "float dspbr_lut_ggx_B(float cos_theta, float roughness) {\n"
     << "  return dspbr_ggx_beta(cos_theta, roughness) * dspbr_ggx_E(cos_theta, roughness);\n}\n"
     << "// F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = 20/21 f0 + 1/21 f90 (spec eq. multiscatter);\n"
@@ -247,11 +223,6 @@ std::string api_functions(const RendererLuts& L) {
 const char* kHelpers =
     "// NaN-safe clamp: NaN maps to lo (every comparison with NaN is false), +-inf to the nearer end.\n"
     "float dspbr_lut_clampf(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }\n"
-    "float dspbr_lut_catmull_rom(float f, float p0, float p1, float p2, float p3) {\n"
-    "  float f2 = f * f, f3 = f2 * f;\n"
-    "  return 0.5f * ((-f3 + 2.0f * f2 - f) * p0 + (3.0f * f3 - 5.0f * f2 + 2.0f) * p1 +\n"
-    "                 (-3.0f * f3 + 4.0f * f2 + f) * p2 + (f3 - f2) * p3);\n"
-    "}\n"
     "// ggx_cos warp x = t^p: t = mu / (mu + alpha sqrt(1 - mu^2)) (t = 1 when alpha = 0).\n"
     "float dspbr_lut_ggx_cos_t(float cos_theta, float alpha) {\n"
     "  float mu = clamp(cos_theta, 0.0f, 1.0f);\n"
@@ -358,7 +329,8 @@ std::string to_c(const std::string& glsl) {
   for (const auto& [from, to] : fns) s = std::regex_replace(s, std::regex(std::string("\\b") + from + "\\("), std::string(to) + "(");
   s = std::regex_replace(s, std::regex("\\bfloat\\("), "(float)(");
   s = std::regex_replace(s, std::regex("\\bint\\("), "(int)(");
-  s = std::regex_replace(s, std::regex("(^|\\n)float "), "$1static inline float ");
+  s = std::regex_replace(s, std::regex("(^|\\n)(float|Dspbr\\w+) (\\w+)\\("), "$1static inline $2 $3(");
+  s = std::regex_replace(s, std::regex("(^|\\n)struct (\\w+) \\{([^}]*)\\};"), "$1typedef struct $2 {$3} $2;");
   return s;
 }
 
