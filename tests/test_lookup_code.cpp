@@ -89,6 +89,34 @@ TEST(LookupCode, CHeaderMatchesTheLibrary) {
   }
 }
 
+TEST(LookupCode, MissingAndBetaAtOnceAreTheTwoCallsAndTheLibrarys) {
+  // dspbr_ggx_E_missing_beta shares the two lookups' coordinates and roughness taps: the same
+  // values as the two calls (in every dialect), and, composed into E(mu; r, f0), the library's
+  // Base_E (an independent check of beta). Also out of range and NaN, where both clamp alike.
+  const dspbr::RendererLuts& L = committed();
+  std::vector<Args> args = random_args(2000);
+  for (float x : {-1.0f, 2.0f, NAN, INFINITY, -INFINITY}) args.push_back({x, 0.5f, x, 0.5f, 0.5f, 0.5f});
+  auto same = [](float a, float b, const char* what) {
+    EXPECT_TRUE(std::isfinite(a)) << what;
+    EXPECT_NEAR(a, b, 2e-7f * std::max(1.0f, std::abs(b))) << what;
+  };
+  for (const Args& a : args) {
+    const DspbrGgxMissingBeta c = dspbr_ggx_E_missing_beta(a.mu, a.r);
+    same(c.missing, dspbr_ggx_E_missing(a.mu, a.r), "C missing");
+    same(c.beta, dspbr_ggx_beta(a.mu, a.r), "C beta");
+    const glsl::DspbrGgxMissingBeta g = glsl::dspbr_ggx_E_missing_beta(a.mu, a.r);
+    same(g.missing, glsl::dspbr_ggx_E_missing(a.mu, a.r), "GLSL missing");
+    same(g.beta, glsl::dspbr_ggx_beta(a.mu, a.r), "GLSL beta");
+    const hlsl::DspbrGgxMissingBeta h = hlsl::dspbr_ggx_E_missing_beta(a.mu, a.r);
+    same(h.missing, hlsl::dspbr_ggx_E_missing(a.mu, a.r), "HLSL missing");
+    same(h.beta, hlsl::dspbr_ggx_beta(a.mu, a.r), "HLSL beta");
+    if (!(a.mu >= 0 && a.mu <= 1 && a.r >= 0 && a.r <= 1)) continue;
+    const double em = 1.0 - c.missing, f0 = a.f0;
+    const double e = f0 * em + (1 - f0) * c.beta * em + dspbr_fresnel_ms(a.f0, 1.0f, dspbr_ggx_E_avg(a.r)) * c.missing;
+    expect_float_close(e, L.E_base(a.mu, a.r, a.f0), "E from the pair", 1e-5);
+  }
+}
+
 TEST(LookupCode, CompensationTermsFollowTheSpecFormulas) {
   const float mv = 0.3f, ml = 0.7f, r = 0.6f, f0 = 0.04f;
   const double pi = 3.14159265358979;
