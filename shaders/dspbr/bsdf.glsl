@@ -66,9 +66,10 @@ DSPBR_FN vec3 dspbr_flip_z(vec3 w) { return vec3(w.x, w.y, -w.z); }
 DSPBR_CONST float dspbr_horizon_cos = 1e-9f;
 DSPBR_FN bool dspbr_on_horizon(vec3 w) { return !(abs(w.z) >= dspbr_horizon_cos); }
 
-// f of lobe k (no layer factor) for v, l in the side's coordinates; av, al: the tables at v and l.
-DSPBR_FN vec3 dspbr_lobe_eval(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, float eta_i, float eta_o, DspbrAlbedos av,
-                              DspbrAlbedos al) {
+// f of lobe k (no layer factor) for v, l in the side's coordinates (vc, lc: the same in the core
+// frame); av, al: the tables at v and l.
+DSPBR_FN vec3 dspbr_lobe_eval(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, vec3 vc, vec3 lc, float eta_i, float eta_o,
+                              DspbrAlbedos av, DspbrAlbedos al) {
   if (DSPBR_HAS_CLEARCOAT != 0 && k == DSPBR_LOBE_CLEARCOAT) {
     // The coat reflects: nothing towards the other side of the core's surface.
     if (!(dot(l, b.core.n) > 0.0f)) return dspbr_splat(0.0f);
@@ -76,7 +77,6 @@ DSPBR_FN vec3 dspbr_lobe_eval(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, floa
     if (dspbr_on_horizon(vk) || dspbr_on_horizon(lk)) return dspbr_splat(0.0f);
     return dspbr_reflection_eval(b, k, vk, lk, eta_i, eta_o);
   }
-  vec3 vc = dspbr_to_local(b.core, v), lc = dspbr_to_local(b.core, l);
   if (k == DSPBR_LOBE_CORE_REFLECTION) return dspbr_reflection_eval(b, k, vc, lc, eta_i, eta_o);
   if (k == DSPBR_LOBE_MULTISCATTER) return dspbr_multiscatter_eval(b, vc, lc, av, al);
   if (DSPBR_HAS_VOLUMETRIC_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && !b.thin_walled)
@@ -91,13 +91,12 @@ DSPBR_FN vec3 dspbr_lobe_eval(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, floa
   return dspbr_splat(0.0f);
 }
 
-// The density with which lobe k samples l.
-DSPBR_FN float dspbr_lobe_pdf(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, float eta_i, float eta_o) {
+// The density with which lobe k samples l (vc, lc: v and l in the core frame).
+DSPBR_FN float dspbr_lobe_pdf(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, vec3 vc, vec3 lc, float eta_i, float eta_o) {
   if (DSPBR_HAS_CLEARCOAT != 0 && k == DSPBR_LOBE_CLEARCOAT) {
     vec3 vk = dspbr_to_local(b.coat, v), lk = dspbr_to_local(b.coat, l);
     return dspbr_on_horizon(vk) || dspbr_on_horizon(lk) ? 0.0f : dspbr_ggx_reflection_pdf(b.coat_ggx, vk, lk);
   }
-  vec3 vc = dspbr_to_local(b.core, v), lc = dspbr_to_local(b.core, l);
   if (k == DSPBR_LOBE_CORE_REFLECTION) return dspbr_ggx_reflection_pdf(b.ggx, vc, lc);
   if (DSPBR_HAS_VOLUMETRIC_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && !b.thin_walled)
     return dspbr_volumetric_pdf(b, vc, lc, eta_i, eta_o);
@@ -166,21 +165,24 @@ DSPBR_FN DspbrAlbedos dspbr_albedos_at(DSPBR_IN(DspbrBsdf) b, vec3 w) { return d
 
 // f(v, l) and the mixture pdf on one side (v in front, side coordinates; av: the tables at v).
 DSPBR_FN vec3 dspbr_eval_side(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, float eta_i, float eta_o, DspbrAlbedos av) {
-  if (dspbr_on_horizon(dspbr_to_local(b.core, v)) || dspbr_on_horizon(dspbr_to_local(b.core, l))) return dspbr_splat(0.0f);
-  DspbrAlbedos al = dspbr_albedos_at(b, l);
+  // v and l in the core frame, once for every lobe.
+  vec3 vc = dspbr_to_local(b.core, v), lc = dspbr_to_local(b.core, l);
+  if (dspbr_on_horizon(vc) || dspbr_on_horizon(lc)) return dspbr_splat(0.0f);
+  DspbrAlbedos al = dspbr_albedos(b, lc.z);
   DspbrLayers f = dspbr_layers(b, v, l, av, al);
   vec3 sum = dspbr_splat(0.0f);
   for (int k = 0; k < DSPBR_LOBE_COUNT; ++k)
     if (dspbr_has_lobe(b, k) && !dspbr_is_delta_lobe(b, k))
-      sum += dspbr_lobe_eval(b, k, v, l, eta_i, eta_o, av, al) * dspbr_layer_of(f, k);
+      sum += dspbr_lobe_eval(b, k, v, l, vc, lc, eta_i, eta_o, av, al) * dspbr_layer_of(f, k);
   return vec3(dspbr_flush_tiny(sum.x), dspbr_flush_tiny(sum.y), dspbr_flush_tiny(sum.z));
 }
 DSPBR_FN float dspbr_pdf_side(DSPBR_IN(DspbrBsdf) b, DspbrSelection sel, vec3 v, vec3 l, float eta_i, float eta_o) {
   float p = 0.0f;
-  if (dspbr_on_horizon(dspbr_to_local(b.core, v)) || dspbr_on_horizon(dspbr_to_local(b.core, l))) return p;
+  vec3 vc = dspbr_to_local(b.core, v), lc = dspbr_to_local(b.core, l);
+  if (dspbr_on_horizon(vc) || dspbr_on_horizon(lc)) return p;
   for (int k = 0; k < DSPBR_LOBE_COUNT; ++k)
     if (dspbr_has_lobe(b, k) && !dspbr_is_delta_lobe(b, k) && sel.p[k] > 0.0f)
-      p += sel.p[k] * dspbr_lobe_pdf(b, k, v, l, eta_i, eta_o);
+      p += sel.p[k] * dspbr_lobe_pdf(b, k, v, l, vc, lc, eta_i, eta_o);
   return p;
 }
 

@@ -113,6 +113,8 @@ DSPBR_FN DspbrFrame dspbr_core_frame(DSPBR_IN(DspbrMaterial) m) {
   vec3 n = dspbr_unit_normal(m.normal);
   DspbrFrame base = dspbr_frame_from_normal_tangent(n, vec3(1.0f, 0.0f, 0.0f));
   float beta = 2.0f * dspbr_pi * m.anisotropyRotation;
+  // beta = 0 (no rotation, the default) is base itself: no sine and cosine to compute.
+  if (beta == 0.0f) return base;
   DspbrFrame f;
   f.n = n;
   f.t = normalize(base.t * cos(beta) - cross(n, base.t) * sin(beta));
@@ -146,11 +148,14 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DSPBR_IN(DspbrMaterial) m, DspbrFrame frame, DS
   DspbrBsdf b;
   b.frame = frame;
   b.core = dspbr_core_frame(m);
-  b.coat = dspbr_frame_from_normal_tangent(dspbr_unit_normal(m.clearcoatNormal), vec3(1.0f, 0.0f, 0.0f));
   b.thin_walled = m.thinWalled;
   b.alpha_cut = dspbr_clamp_nan(m.cutoutOpacity, 0.0f, 1.0f);
   // A component compiled out (features.glsl) has weight 0, as in the reference's component masks.
   b.clearcoat = DSPBR_HAS_CLEARCOAT != 0 ? m.clearcoat : 0.0f;
+  // The coat's frame is read only where the clearcoat weighs (its lobe, its layer factor, and the
+  // emission's attenuation, times c): without a clearcoat the frame is not built.
+  b.coat = b.clearcoat > 0.0f ? dspbr_frame_from_normal_tangent(dspbr_unit_normal(m.clearcoatNormal), vec3(1.0f, 0.0f, 0.0f))
+                              : dspbr_identity_frame();
   // Dispersion belongs to the volumetric transparent part (src/dspbr/component.cpp): eta(lambda) only
   // behind a volume boundary that transmits, as the reference (it bent thin walls and opaque
   // dielectrics too; the eighth fresh tester's pass).
