@@ -301,6 +301,50 @@ TEST(ShaderLibrary, FlakeUnderAPointAsTheReference) {
   EXPECT_LE(differ, points / 400) << differ << " of " << points << " points";
 }
 
+TEST(ShaderLibrary, FlakeSearchSkipsOnlyCellsThatCannotWin) {
+  // dspbr_flake_nearest draws the point's own cell first and then only the cells whose square is
+  // nearer than the best flake so far. The independent value: every flake of the 5x5 block drawn
+  // in the spec's scan order (cells row by row, 3x3 before the ring), the first strictly nearer one
+  // kept. Same flake, bit for bit, at random points, on cell corners and edges (p = 0 puts the
+  // point on a corner of the grid), and for the grid sizes of 0.02 mm to 40 mm flakes.
+  using namespace dspbr_shader;
+  Pcg32 rng(29, 5);
+  auto u = [&] { return float(rng.next_double()); };
+  int points = 0;
+  for (float size : {0.02f, 0.3f, 2.0f, 40.0f})
+    for (int k = 0; k < 4000; ++k) {
+      vec3 p(2 * u() - 1, 2 * u() - 1, 2 * u() - 1);
+      if (k % 8 == 0) p = vec3(0.0f, 0.0f, 0.0f);
+      if (k % 8 == 1) p.x = 0.0f;
+      const vec3 n(2 * u() - 1, 2 * u() - 1, 2 * u() - 1);
+      const DspbrFlakeGrid g = dspbr_flake_grid(p, n, size);
+      ASSERT_TRUE(g.valid);
+      const DspbrFlakeBest got = dspbr_flake_nearest(g);
+      DspbrFlakeBest want;
+      want.d2 = 3.402823466e38f;
+      want.rank = 0;
+      want.state = dspbr_u64(0u, 0u);
+      want.inc = dspbr_u64(0u, 0u);
+      // The scan: the 3x3 block row by row, then the 5x5 ring row by row; ranks in scan order
+      // make the probe keep the first of equally near flakes, as a strict comparison would.
+      int rank = 0;
+      for (int di = -1; di <= 1; ++di)
+        for (int dj = -1; dj <= 1; ++dj, rank += 4) dspbr_flake_probe(g.i + di, g.j + dj, g.res, g.gx, g.gy, rank, want);
+      for (int di = -2; di <= 2; ++di)
+        for (int dj = -2; dj <= 2; ++dj)
+          if (std::max(std::abs(di), std::abs(dj)) == 2) {
+            dspbr_flake_probe(g.i + di, g.j + dj, g.res, g.gx, g.gy, rank, want);
+            rank += 4;
+          }
+      ++points;
+      EXPECT_EQ(got.d2, want.d2) << "size " << size << " point " << k;
+      EXPECT_EQ(got.state.hi, want.state.hi);
+      EXPECT_EQ(got.state.lo, want.state.lo);
+      EXPECT_EQ(got.inc.lo, want.inc.lo);
+    }
+  EXPECT_EQ(points, 16000);
+}
+
 TEST(ShaderLibrary, ThinFilmInFourierSpaceAsTheQuadrature) {
   // The C++ compile evaluates a film's R in Fourier space over the generated sensitivity table
   // (luts/dspbr_thin_film_lookup.h); the reference's per-wavelength quadrature (double, 1/64 nm

@@ -128,13 +128,25 @@ DSPBR_FN float dspbr_frac(float x) {
 DSPBR_FN float dspbr_sgn(float x) { return x < 0.0f ? -1.0f : 1.0f; }
 
 // The flakes of grid cell (ii, jj) (unwrapped; hashed modulo res) against the best found so far:
-// its squared distance, and the state and increment of its cell's generator at its first number.
+// its squared distance, its rank in the spec's scan (cells row by row, the 3x3 block before the
+// 5x5 ring, 4 flakes each: the first of equally near flakes wins, as in the scan), and the state
+// and increment of its cell's generator at its first number.
 struct DspbrFlakeBest {
   float d2;
+  int rank;
   DspbrU64 state;
   DspbrU64 inc;
 };
-DSPBR_FN void dspbr_flake_probe(int ii, int jj, int res, float gx, float gy, DSPBR_INOUT(DspbrFlakeBest) best) {
+// A cell that cannot hold a flake nearer than the best is not drawn: its flakes lie in the cell
+// (xi in [0, 1)), so the squared distance from (gx, gy) to the cell's square, computed as the
+// flakes' is (float rounding is monotonic), bounds theirs from below. The factor 1.000001 leaves
+// room for a compiler that fuses the flakes' sum into a multiply-add and not the bound's.
+DSPBR_FN bool dspbr_flake_cell_beyond(int ii, int jj, int i, int j, float gx, float gy, DspbrFlakeBest best) {
+  float bx = ii > i ? gx - float(ii) : (ii < i ? gx - float(ii + 1) : 0.0f);
+  float by = jj > j ? gy - float(jj) : (jj < j ? gy - float(jj + 1) : 0.0f);
+  return bx * bx + by * by > best.d2 * 1.000001f;
+}
+DSPBR_FN void dspbr_flake_probe(int ii, int jj, int res, float gx, float gy, int rank, DSPBR_INOUT(DspbrFlakeBest) best) {
   // The cell modulo res (|offset| <= 2 < res: one wrap; no % of a negative number).
   int wi = ii < 0 ? ii + res : (ii >= res ? ii - res : ii);
   int wj = jj < 0 ? jj + res : (jj >= res ? jj - res : jj);
@@ -146,8 +158,9 @@ DSPBR_FN void dspbr_flake_probe(int ii, int jj, int res, float gx, float gy, DSP
     float xi2 = dspbr_pcg32_float_at(dspbr_lcg_jump(s, 2, c2));
     float dx = gx - (float(ii) + xi1), dy = gy - (float(jj) + xi2);
     float d2 = dx * dx + dy * dy;
-    if (d2 < best.d2) {
+    if (d2 < best.d2 || (d2 == best.d2 && rank + k < best.rank)) {
       best.d2 = d2;
+      best.rank = rank + k;
       best.state = s;
       best.inc = g.inc;
     }
@@ -155,17 +168,25 @@ DSPBR_FN void dspbr_flake_probe(int ii, int jj, int res, float gx, float gy, DSP
   }
 }
 
+// The shading point on the flake grid: res cells per side, the point's grid coordinates (gx, gy)
+// and its cell (i, j); valid false without flakes (size 0) or for a point that is not finite.
+struct DspbrFlakeGrid {
+  bool valid;
+  int res;
+  float gx;
+  float gy;
+  int i;
+  int j;
+};
 // p: the shading point in object space (m); n: the bumped normal in object space.
-DSPBR_FN DspbrFlake dspbr_flake_at(vec3 p, vec3 n, float coverage, float size_mm, float r_f) {
-  DspbrFlake out_f;
-  out_f.opacity = 0.0f;
-  out_f.normal = vec3(0.0f, 0.0f, 1.0f);
-  if (!(size_mm > 0.0f) || isnan(p.x + p.y + p.z) || isinf(p.x + p.y + p.z)) return out_f;
+DSPBR_FN DspbrFlakeGrid dspbr_flake_grid(vec3 p, vec3 n, float size_mm) {
+  DspbrFlakeGrid g;
+  g.valid = size_mm > 0.0f && !isnan(p.x + p.y + p.z) && !isinf(p.x + p.y + p.z);
   // res = max(4, ceil(sqrt(N / 4))), N = 1 / (3 sqrt(3) / 2 (s_f / 2000)^2) flakes per m^2, capped
   // at 2^23 cells per side (float resolves no finer grid at p in [-1, 1] m).
   float r = size_mm / 2000.0f;
   float count = 1.0f / (1.5f * sqrt(3.0f) * r * r);
-  int res = int(min(max(4.0f, ceil(sqrt(count / 4.0f))), 8388608.0f));
+  g.res = g.valid ? int(min(max(4.0f, ceil(sqrt(count / 4.0f))), 8388608.0f)) : 4;
   // Triplanar mapping T_map(p, n) (spec eq. tr-mapping).
   float ax = abs(n.x), ay = abs(n.y), az = abs(n.z), u, v;
   if (ax > ay && ax > az) {
@@ -178,22 +199,53 @@ DSPBR_FN DspbrFlake dspbr_flake_at(vec3 p, vec3 n, float coverage, float size_mm
     u = dspbr_frac(dspbr_sgn(p.z) * p.x + 0.5f);
     v = dspbr_frac(p.y + 0.5f);
   }
-  float gx = u * float(res), gy = v * float(res);
-  int i = min(int(floor(gx)), res - 1), j = min(int(floor(gy)), res - 1);
+  g.gx = g.valid ? u * float(g.res) : 0.5f;
+  g.gy = g.valid ? v * float(g.res) : 0.5f;
+  g.i = min(int(floor(g.gx)), g.res - 1);
+  g.j = min(int(floor(g.gy)), g.res - 1);
+  return g;
+}
+// The Voronoi-nearest flake of the cells around the point (spec Listing "flakes"): the first of
+// the nearest in the spec's scan of the 3x3 block (and of the 5x5 ring where the block cannot be
+// sure), found without drawing the cells that cannot hold it.
+DSPBR_FN DspbrFlakeBest dspbr_flake_nearest(DspbrFlakeGrid g) {
+  int i = g.i, j = g.j, res = g.res;
+  float gx = g.gx, gy = g.gy;
   DspbrFlakeBest best;
   best.d2 = 3.402823466e38f;
+  best.rank = 0;
   best.state = dspbr_u64(0u, 0u);
   best.inc = dspbr_u64(0u, 0u);
+  // The point's own cell first (rank 16: the centre of the 3x3 scan), then its neighbours that
+  // can still hold a nearer flake.
+  dspbr_flake_probe(i, j, res, gx, gy, 16, best);
   for (int di = -1; di <= 1; ++di)
-    for (int dj = -1; dj <= 1; ++dj) dspbr_flake_probe(i + di, j + dj, res, gx, gy, best);
+    for (int dj = -1; dj <= 1; ++dj)
+      if ((di != 0 || dj != 0) && !dspbr_flake_cell_beyond(i + di, j + dj, i, j, gx, gy, best))
+        dspbr_flake_probe(i + di, j + dj, res, gx, gy, 4 * (3 * (di + 1) + dj + 1), best);
   // The 3x3 block is exact unless the nearest flake is farther than its border; 5x5 always is.
   float fx = gx - float(i), fy = gy - float(j);
   float margin = 1.0f + min(min(fx, 1.0f - fx), min(fy, 1.0f - fy));
   if (best.d2 > margin * margin) {
+    int ring = 36;
     for (int di = -2; di <= 2; ++di)
       for (int dj = -2; dj <= 2; ++dj)
-        if (max(abs(di), abs(dj)) == 2) dspbr_flake_probe(i + di, j + dj, res, gx, gy, best);
+        if (max(abs(di), abs(dj)) == 2) {
+          if (!dspbr_flake_cell_beyond(i + di, j + dj, i, j, gx, gy, best)) dspbr_flake_probe(i + di, j + dj, res, gx, gy, ring, best);
+          ring += 4;
+        }
   }
+  return best;
+}
+
+// The flake under a shading point: p the point in object space (m), n the bumped normal in object space.
+DSPBR_FN DspbrFlake dspbr_flake_at(vec3 p, vec3 n, float coverage, float size_mm, float r_f) {
+  DspbrFlake out_f;
+  out_f.opacity = 0.0f;
+  out_f.normal = vec3(0.0f, 0.0f, 1.0f);
+  DspbrFlakeGrid grid = dspbr_flake_grid(p, n, size_mm);
+  if (!grid.valid) return out_f;
+  DspbrFlakeBest best = dspbr_flake_nearest(grid);
   // The nearest flake's other numbers: orientation xi_3, xi_4 and opacity O_f(f, xi_5).
   float xi3 = dspbr_pcg32_float_at(dspbr_lcg_jump(best.state, 4, dspbr_lcg_c_inc(best.inc, 4)));
   float xi4 = dspbr_pcg32_float_at(dspbr_lcg_jump(best.state, 6, dspbr_lcg_c_inc(best.inc, 6)));
