@@ -993,9 +993,9 @@ struct DspbrGgxMissingBeta {
   float missing;
   float beta;
 };
-// 1 - E_m(mu; r) and beta(mu; r) at once, equal to dspbr_ggx_E_missing and dspbr_ggx_beta: the
-// albedo of a dielectric base, E = f0 E_m + (1 - f0) beta E_m + F_ms (1 - E_m), reads both.
-DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, float roughness) {
+// 1 - E_m(mu; r) and, unless with_beta is 0 (then 0 and no read of GGX_beta), beta(mu; r), equal to
+// dspbr_ggx_E_missing and dspbr_ggx_beta: one call site serves a metal and a dielectric base.
+DspbrGgxMissingBeta dspbr_lut_ggx_missing_beta(float cos_theta, float roughness, int with_beta) {
   float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
   float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
   float xr = dspbr_lut_clampf(r, 0.0f, 1.0f);
@@ -1036,29 +1036,37 @@ DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, float roughness) {
     wec3 = 0.0f;
   }
   int kec0 = kec > 0 ? kec - 1 : 0, kec1 = kec, kec2 = kec + 1, kec3 = kec + 2 < 64 ? kec + 2 : 63;
-  float cbc = dspbr_lut_clampf(xc, 0.0f, 1.0f) * 31.0f;
-  int kbc = int(cbc);
-  if (kbc < 0) kbc = 0;
-  if (kbc > 30) kbc = 30;
-  float fbc = cbc - float(kbc), gbc = fbc * fbc, hbc = gbc * fbc;
-  float wbc0 = 0.5f * (2.0f * gbc - hbc - fbc), wbc1 = 0.5f * (3.0f * hbc - 5.0f * gbc + 2.0f);
-  float wbc2 = 0.5f * (4.0f * gbc - 3.0f * hbc + fbc), wbc3 = 0.5f * (hbc - gbc);
-  if (kbc == 0) {
-    wbc1 += 2.0f * wbc0;
-    wbc2 -= wbc0;
-    wbc0 = 0.0f;
-  }
-  if (kbc == 30) {
-    wbc2 += 2.0f * wbc3;
-    wbc1 -= wbc3;
-    wbc3 = 0.0f;
-  }
-  int kbc0 = kbc > 0 ? kbc - 1 : 0, kbc1 = kbc, kbc2 = kbc + 1, kbc3 = kbc + 2 < 32 ? kbc + 2 : 31;
   DspbrGgxMissingBeta a;
   a.missing = dspbr_lut_clampf(((((dspbr_GGX_E_missing_at(ker0, kec0) * wec0 + dspbr_GGX_E_missing_at(ker0, kec1) * wec1) + (dspbr_GGX_E_missing_at(ker0, kec2) * wec2 + dspbr_GGX_E_missing_at(ker0, kec3) * wec3)) * wer0 + ((dspbr_GGX_E_missing_at(ker1, kec0) * wec0 + dspbr_GGX_E_missing_at(ker1, kec1) * wec1) + (dspbr_GGX_E_missing_at(ker1, kec2) * wec2 + dspbr_GGX_E_missing_at(ker1, kec3) * wec3)) * wer1) + (((dspbr_GGX_E_missing_at(ker2, kec0) * wec0 + dspbr_GGX_E_missing_at(ker2, kec1) * wec1) + (dspbr_GGX_E_missing_at(ker2, kec2) * wec2 + dspbr_GGX_E_missing_at(ker2, kec3) * wec3)) * wer2 + ((dspbr_GGX_E_missing_at(ker3, kec0) * wec0 + dspbr_GGX_E_missing_at(ker3, kec1) * wec1) + (dspbr_GGX_E_missing_at(ker3, kec2) * wec2 + dspbr_GGX_E_missing_at(ker3, kec3) * wec3)) * wer3)), 0.0f, 1.0f);
-  float m = 1.0f - mu, m2 = m * m;
-  a.beta = max(m2 * m2 * m + ((((dspbr_GGX_beta_at(ker0, kbc0) * wbc0 + dspbr_GGX_beta_at(ker0, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker0, kbc2) * wbc2 + dspbr_GGX_beta_at(ker0, kbc3) * wbc3)) * wer0 + ((dspbr_GGX_beta_at(ker1, kbc0) * wbc0 + dspbr_GGX_beta_at(ker1, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker1, kbc2) * wbc2 + dspbr_GGX_beta_at(ker1, kbc3) * wbc3)) * wer1) + (((dspbr_GGX_beta_at(ker2, kbc0) * wbc0 + dspbr_GGX_beta_at(ker2, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker2, kbc2) * wbc2 + dspbr_GGX_beta_at(ker2, kbc3) * wbc3)) * wer2 + ((dspbr_GGX_beta_at(ker3, kbc0) * wbc0 + dspbr_GGX_beta_at(ker3, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker3, kbc2) * wbc2 + dspbr_GGX_beta_at(ker3, kbc3) * wbc3)) * wer3)), 0.0f);
+  a.beta = 0.0f;
+  if (with_beta != 0) {
+    float cbc = dspbr_lut_clampf(xc, 0.0f, 1.0f) * 31.0f;
+    int kbc = int(cbc);
+    if (kbc < 0) kbc = 0;
+    if (kbc > 30) kbc = 30;
+    float fbc = cbc - float(kbc), gbc = fbc * fbc, hbc = gbc * fbc;
+    float wbc0 = 0.5f * (2.0f * gbc - hbc - fbc), wbc1 = 0.5f * (3.0f * hbc - 5.0f * gbc + 2.0f);
+    float wbc2 = 0.5f * (4.0f * gbc - 3.0f * hbc + fbc), wbc3 = 0.5f * (hbc - gbc);
+    if (kbc == 0) {
+      wbc1 += 2.0f * wbc0;
+      wbc2 -= wbc0;
+      wbc0 = 0.0f;
+    }
+    if (kbc == 30) {
+      wbc2 += 2.0f * wbc3;
+      wbc1 -= wbc3;
+      wbc3 = 0.0f;
+    }
+    int kbc0 = kbc > 0 ? kbc - 1 : 0, kbc1 = kbc, kbc2 = kbc + 1, kbc3 = kbc + 2 < 32 ? kbc + 2 : 31;
+    float m = 1.0f - mu, m2 = m * m;
+    a.beta = max(m2 * m2 * m + ((((dspbr_GGX_beta_at(ker0, kbc0) * wbc0 + dspbr_GGX_beta_at(ker0, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker0, kbc2) * wbc2 + dspbr_GGX_beta_at(ker0, kbc3) * wbc3)) * wer0 + ((dspbr_GGX_beta_at(ker1, kbc0) * wbc0 + dspbr_GGX_beta_at(ker1, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker1, kbc2) * wbc2 + dspbr_GGX_beta_at(ker1, kbc3) * wbc3)) * wer1) + (((dspbr_GGX_beta_at(ker2, kbc0) * wbc0 + dspbr_GGX_beta_at(ker2, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker2, kbc2) * wbc2 + dspbr_GGX_beta_at(ker2, kbc3) * wbc3)) * wer2 + ((dspbr_GGX_beta_at(ker3, kbc0) * wbc0 + dspbr_GGX_beta_at(ker3, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker3, kbc2) * wbc2 + dspbr_GGX_beta_at(ker3, kbc3) * wbc3)) * wer3)), 0.0f);
+  }
   return a;
+}
+// 1 - E_m(mu; r) and beta(mu; r) at once, equal to dspbr_ggx_E_missing and dspbr_ggx_beta: the
+// albedo of a dielectric base, E = f0 E_m + (1 - f0) beta E_m + F_ms (1 - E_m), reads both.
+DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, float roughness) {
+  return dspbr_lut_ggx_missing_beta(cos_theta, roughness, 1);
 }
 float dspbr_lut_ggx_B(float cos_theta, float roughness) {
   return dspbr_ggx_beta(cos_theta, roughness) * dspbr_ggx_E(cos_theta, roughness);

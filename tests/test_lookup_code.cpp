@@ -104,6 +104,10 @@ TEST(LookupCode, MissingAndBetaAtOnceAreTheTwoCallsAndTheLibrarys) {
     const DspbrGgxMissingBeta c = dspbr_ggx_E_missing_beta(a.mu, a.r);
     same(c.missing, dspbr_ggx_E_missing(a.mu, a.r), "C missing");
     same(c.beta, dspbr_ggx_beta(a.mu, a.r), "C beta");
+    // The library's call site: without beta (a metal), the same 1 - E_m.
+    const DspbrGgxMissingBeta m = dspbr_lut_ggx_missing_beta(a.mu, a.r, 0);
+    same(m.missing, c.missing, "C missing without beta");
+    EXPECT_EQ(m.beta, 0.0f);
     const glsl::DspbrGgxMissingBeta g = glsl::dspbr_ggx_E_missing_beta(a.mu, a.r);
     same(g.missing, glsl::dspbr_ggx_E_missing(a.mu, a.r), "GLSL missing");
     same(g.beta, glsl::dspbr_ggx_beta(a.mu, a.r), "GLSL beta");

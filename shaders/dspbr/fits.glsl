@@ -22,11 +22,14 @@ struct DspbrGgxMissingBeta {
   float missing;
   float beta;
 };
-DSPBR_FN DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, float roughness) {
+DSPBR_FN DspbrGgxMissingBeta dspbr_lut_ggx_missing_beta(float cos_theta, float roughness, int with_beta) {
   DspbrGgxMissingBeta a;
   a.missing = dspbr_ggx_E_missing(cos_theta, roughness);
-  a.beta = dspbr_ggx_beta(cos_theta, roughness);
+  a.beta = with_beta != 0 ? dspbr_ggx_beta(cos_theta, roughness) : 0.0f;
   return a;
+}
+DSPBR_FN DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, float roughness) {
+  return dspbr_lut_ggx_missing_beta(cos_theta, roughness, 1);
 }
 // E_avg(r, f0).
 DSPBR_FN float dspbr_base_E_avg(float roughness, float f0) { return dspbr_fit_base_E_avg(roughness, clamp(f0, 0.0f, 1.0f)); }

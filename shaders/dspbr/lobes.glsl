@@ -84,16 +84,15 @@ DSPBR_FN DspbrAlbedos dspbr_albedos(DSPBR_IN(DspbrBsdf) b, float c) {
     // 1 - E_m from its own lookup: 1 - dspbr_ggx_E is rounding noise where E_m is within 1e-6 of 1
     // (roughness ~1e-3 near normal incidence; the eleventh fresh tester's pass: the multiple-
     // scattering lobe of a metal of roughness 0.001 seen at grazing was 45 % off the reference).
-    // With a diffuse base, 1 - E_m and beta from one call (their coordinates computed once).
+    // With a diffuse base, beta too, from the same coordinates and roughness taps; one call site
+    // (a shader's texel fetches are counted once, and a metal's skip GGX_beta).
+    DspbrGgxMissingBeta mb = dspbr_lut_ggx_missing_beta(mu, b.r_uv, diffuse ? 1 : 0);
+    a.missing_m = mb.missing;
     if (diffuse) {
-      DspbrGgxMissingBeta mb = dspbr_ggx_E_missing_beta(mu, b.r_uv);
-      a.missing_m = mb.missing;
       float em = 1.0f - a.missing_m;
       float f0 = clamp(b.f0_max, 0.0f, 1.0f);
       float e = f0 * em + (1.0f - f0) * (mb.beta * em) + b.fms_base * (1.0f - em);
       a.missing_base = clamp(1.0f - e, 0.0f, 1.0f);
-    } else {
-      a.missing_m = dspbr_ggx_E_missing(mu, b.r_uv);
     }
   }
   if (DSPBR_HAS_SHEEN != 0 && dspbr_has_lobe(b, DSPBR_LOBE_SHEEN)) {

@@ -103,9 +103,9 @@ std::string ggx_missing_beta_function(const WarpedTable& e, const WarpedTable& b
   auto same = [](const WarpedAxis& x, const WarpedAxis& y) { return x.size == y.size && x.warp.describe() == y.warp.describe(); };
   std::ostringstream o;
   o << "struct DspbrGgxMissingBeta {\n  float missing;\n  float beta;\n};\n"
-    << "// 1 - E_m(mu; r) and beta(mu; r) at once, equal to dspbr_ggx_E_missing and dspbr_ggx_beta: the\n"
-    << "// albedo of a dielectric base, E = f0 E_m + (1 - f0) beta E_m + F_ms (1 - E_m), reads both.\n"
-    << "DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, float roughness) {\n"
+    << "// 1 - E_m(mu; r) and, unless with_beta is 0 (then 0 and no read of GGX_beta), beta(mu; r), equal to\n"
+    << "// dspbr_ggx_E_missing and dspbr_ggx_beta: one call site serves a metal and a dielectric base.\n"
+    << "DspbrGgxMissingBeta dspbr_lut_ggx_missing_beta(float cos_theta, float roughness, int with_beta) {\n"
     << "  float r = clamp(roughness, 0.0f, 1.0f);\n"
     << "  float mu = clamp(cos_theta, 0.0f, 1.0f);\n"
     << "  float xr = " << warp_expr(e.axes[0].warp, "r", "") << ";\n"
@@ -115,12 +115,19 @@ std::string ggx_missing_beta_function(const WarpedTable& e, const WarpedTable& b
   const bool cos_warp = e.axes[1].warp.describe() == b.axes[1].warp.describe();
   if (!rows) o << "  float yr = " << warp_expr(b.axes[0].warp, "r", "") << ";\n" << taps_text("br", "yr", b.axes[0].size);
   if (!cos_warp) o << "  float yc = " << warp_expr(b.axes[1].warp, "mu", "r * r") << ";\n";
-  o << taps_text("bc", cos_warp ? "xc" : "yc", b.axes[1].size)
-    << "  DspbrGgxMissingBeta a;\n"
+  o << "  DspbrGgxMissingBeta a;\n"
     << "  a.missing = clamp(" << taps_sum(ident(e) + "_missing_at", {"er", "ec"}) << ", 0.0f, 1.0f);\n"
-    << "  float m = 1.0f - mu, m2 = m * m;\n"
-    << "  a.beta = max(m2 * m2 * m + " << taps_sum(ident(b) + "_at", {rows ? "er" : "br", "bc"}) << ", 0.0f);\n"
-    << "  return a;\n}\n";
+    << "  a.beta = 0.0f;\n"
+    << "  if (with_beta != 0) {\n"
+    << std::regex_replace(taps_text("bc", cos_warp ? "xc" : "yc", b.axes[1].size), std::regex("(^|\n)(.)"), "$1  $2")
+    << "    float m = 1.0f - mu, m2 = m * m;\n"
+    << "    a.beta = max(m2 * m2 * m + " << taps_sum(ident(b) + "_at", {rows ? "er" : "br", "bc"}) << ", 0.0f);\n"
+    << "  }\n"
+    << "  return a;\n}\n"
+    << "// 1 - E_m(mu; r) and beta(mu; r) at once, equal to dspbr_ggx_E_missing and dspbr_ggx_beta: the\n"
+    << "// albedo of a dielectric base, E = f0 E_m + (1 - f0) beta E_m + F_ms (1 - E_m), reads both.\n"
+    << "DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, float roughness) {\n"
+    << "  return dspbr_lut_ggx_missing_beta(cos_theta, roughness, 1);\n}\n";
   return o.str();
 }
 
