@@ -926,75 +926,12 @@ float dspbr_lut_interp_dspbr_Sheen_ash_E(float x0, float x1) {
   return ((((dspbr_Sheen_ash_E_at(k00, k10) * w10 + dspbr_Sheen_ash_E_at(k00, k11) * w11) + (dspbr_Sheen_ash_E_at(k00, k12) * w12 + dspbr_Sheen_ash_E_at(k00, k13) * w13)) * w00 + ((dspbr_Sheen_ash_E_at(k01, k10) * w10 + dspbr_Sheen_ash_E_at(k01, k11) * w11) + (dspbr_Sheen_ash_E_at(k01, k12) * w12 + dspbr_Sheen_ash_E_at(k01, k13) * w13)) * w01) + (((dspbr_Sheen_ash_E_at(k02, k10) * w10 + dspbr_Sheen_ash_E_at(k02, k11) * w11) + (dspbr_Sheen_ash_E_at(k02, k12) * w12 + dspbr_Sheen_ash_E_at(k02, k13) * w13)) * w02 + ((dspbr_Sheen_ash_E_at(k03, k10) * w10 + dspbr_Sheen_ash_E_at(k03, k11) * w11) + (dspbr_Sheen_ash_E_at(k03, k12) * w12 + dspbr_Sheen_ash_E_at(k03, k13) * w13)) * w03));
 }
 float dspbr_GGX_E_missing_at(int r, int c) { return 1.0f - dspbr_GGX_E_at(r, c); }
-float dspbr_lut_interp_dspbr_GGX_E_missing(float x0, float x1) {
-  float c0 = dspbr_lut_clampf(x0, 0.0f, 1.0f) * 31.0f;
-  int k0 = int(c0);
-  if (k0 < 0) k0 = 0;
-  if (k0 > 30) k0 = 30;
-  float f0 = c0 - float(k0), g0 = f0 * f0, h0 = g0 * f0;
-  float w00 = 0.5f * (2.0f * g0 - h0 - f0), w01 = 0.5f * (3.0f * h0 - 5.0f * g0 + 2.0f);
-  float w02 = 0.5f * (4.0f * g0 - 3.0f * h0 + f0), w03 = 0.5f * (h0 - g0);
-  if (k0 == 0) {
-    w01 += 2.0f * w00;
-    w02 -= w00;
-    w00 = 0.0f;
-  }
-  if (k0 == 30) {
-    w02 += 2.0f * w03;
-    w01 -= w03;
-    w03 = 0.0f;
-  }
-  int k00 = k0 > 0 ? k0 - 1 : 0, k01 = k0, k02 = k0 + 1, k03 = k0 + 2 < 32 ? k0 + 2 : 31;
-  float c1 = dspbr_lut_clampf(x1, 0.0f, 1.0f) * 63.0f;
-  int k1 = int(c1);
-  if (k1 < 0) k1 = 0;
-  if (k1 > 62) k1 = 62;
-  float f1 = c1 - float(k1), g1 = f1 * f1, h1 = g1 * f1;
-  float w10 = 0.5f * (2.0f * g1 - h1 - f1), w11 = 0.5f * (3.0f * h1 - 5.0f * g1 + 2.0f);
-  float w12 = 0.5f * (4.0f * g1 - 3.0f * h1 + f1), w13 = 0.5f * (h1 - g1);
-  if (k1 == 0) {
-    w11 += 2.0f * w10;
-    w12 -= w10;
-    w10 = 0.0f;
-  }
-  if (k1 == 62) {
-    w12 += 2.0f * w13;
-    w11 -= w13;
-    w13 = 0.0f;
-  }
-  int k10 = k1 > 0 ? k1 - 1 : 0, k11 = k1, k12 = k1 + 1, k13 = k1 + 2 < 64 ? k1 + 2 : 63;
-  return ((((dspbr_GGX_E_missing_at(k00, k10) * w10 + dspbr_GGX_E_missing_at(k00, k11) * w11) + (dspbr_GGX_E_missing_at(k00, k12) * w12 + dspbr_GGX_E_missing_at(k00, k13) * w13)) * w00 + ((dspbr_GGX_E_missing_at(k01, k10) * w10 + dspbr_GGX_E_missing_at(k01, k11) * w11) + (dspbr_GGX_E_missing_at(k01, k12) * w12 + dspbr_GGX_E_missing_at(k01, k13) * w13)) * w01) + (((dspbr_GGX_E_missing_at(k02, k10) * w10 + dspbr_GGX_E_missing_at(k02, k11) * w11) + (dspbr_GGX_E_missing_at(k02, k12) * w12 + dspbr_GGX_E_missing_at(k02, k13) * w13)) * w02 + ((dspbr_GGX_E_missing_at(k03, k10) * w10 + dspbr_GGX_E_missing_at(k03, k11) * w11) + (dspbr_GGX_E_missing_at(k03, k12) * w12 + dspbr_GGX_E_missing_at(k03, k13) * w13)) * w03));
-}
-// E_m(mu; r): single-scattering GGX albedo, in [0, 1]. The cubic's undershoot (overshoot) is clamped
-// here, in beta and in the sheen albedos, so that every albedo composed from them is >= 0.
-float dspbr_ggx_E(float cos_theta, float roughness) {
-  float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
-  return dspbr_lut_clampf(dspbr_lut_interp_dspbr_GGX_E(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(cos_theta, r * r))), 0.0f, 1.0f);
-}
-// 1 - E_m(mu; r), in [0, 1], to full float precision where E_m is near 1 (1 - dspbr_ggx_E keeps about
-// 1e-7 absolute: at roughness ~1e-3 that is all of 1 - E_m near normal incidence).
-float dspbr_ggx_E_missing(float cos_theta, float roughness) {
-  float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
-  return dspbr_lut_clampf(dspbr_lut_interp_dspbr_GGX_E_missing(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(cos_theta, r * r))), 0.0f, 1.0f);
-}
-// 1 - E_m,avg(r), stored as a logarithm (it vanishes like r^4).
-float dspbr_ggx_E_avg_missing(float roughness) {
-  return exp(dspbr_lut_interp_dspbr_GGX_E_avg(sqrt(((dspbr_lut_clampf(roughness, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f))));
-}
-float dspbr_ggx_E_avg(float roughness) { return 1.0f - dspbr_ggx_E_avg_missing(roughness); }
-// beta(mu; r) = B / E_m, B = Integral M_r (1 - v.h)^5 mu_l dl the Schlick moment; stored beta - (1 - mu)^5.
-float dspbr_ggx_beta(float cos_theta, float roughness) {
-  float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
-  float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
-  float m = 1.0f - mu, m2 = m * m;
-  return max(m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(mu, r * r))), 0.0f);
-}
 struct DspbrGgxMissingBeta {
   float missing;
   float beta;
 };
-// 1 - E_m(mu; r) and, unless with_beta is 0 (then 0 and no read of GGX_beta), beta(mu; r), equal to
-// dspbr_ggx_E_missing and dspbr_ggx_beta: one call site serves a metal and a dielectric base.
+// 1 - E_m(mu; r) (as dspbr_ggx_E_missing) and, unless with_beta is 0 (then 0 and no read of
+// GGX_beta), beta(mu; r) (as dspbr_ggx_beta): one call site serves a metal and a dielectric base.
 DspbrGgxMissingBeta dspbr_lut_ggx_missing_beta(float cos_theta, float roughness, int with_beta) {
   float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
   float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
@@ -1067,6 +1004,29 @@ DspbrGgxMissingBeta dspbr_lut_ggx_missing_beta(float cos_theta, float roughness,
 // albedo of a dielectric base, E = f0 E_m + (1 - f0) beta E_m + F_ms (1 - E_m), reads both.
 DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, float roughness) {
   return dspbr_lut_ggx_missing_beta(cos_theta, roughness, 1);
+}
+// E_m(mu; r): single-scattering GGX albedo, in [0, 1]. The cubic's undershoot (overshoot) is clamped
+// here, in beta and in the sheen albedos, so that every albedo composed from them is >= 0.
+float dspbr_ggx_E(float cos_theta, float roughness) {
+  float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
+  return dspbr_lut_clampf(dspbr_lut_interp_dspbr_GGX_E(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(cos_theta, r * r))), 0.0f, 1.0f);
+}
+// 1 - E_m(mu; r), in [0, 1], to full float precision where E_m is near 1 (1 - dspbr_ggx_E keeps about
+// 1e-7 absolute: at roughness ~1e-3 that is all of 1 - E_m near normal incidence).
+float dspbr_ggx_E_missing(float cos_theta, float roughness) {
+  return dspbr_lut_ggx_missing_beta(cos_theta, roughness, 0).missing;
+}
+// 1 - E_m,avg(r), stored as a logarithm (it vanishes like r^4).
+float dspbr_ggx_E_avg_missing(float roughness) {
+  return exp(dspbr_lut_interp_dspbr_GGX_E_avg(sqrt(((dspbr_lut_clampf(roughness, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f))));
+}
+float dspbr_ggx_E_avg(float roughness) { return 1.0f - dspbr_ggx_E_avg_missing(roughness); }
+// beta(mu; r) = B / E_m, B = Integral M_r (1 - v.h)^5 mu_l dl the Schlick moment; stored beta - (1 - mu)^5.
+float dspbr_ggx_beta(float cos_theta, float roughness) {
+  float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
+  float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
+  float m = 1.0f - mu, m2 = m * m;
+  return max(m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(mu, r * r))), 0.0f);
 }
 float dspbr_lut_ggx_B(float cos_theta, float roughness) {
   return dspbr_ggx_beta(cos_theta, roughness) * dspbr_ggx_E(cos_theta, roughness);

@@ -320,11 +320,7 @@ TEST(ShaderLibrary, FlakeSearchSkipsOnlyCellsThatCannotWin) {
       const DspbrFlakeGrid g = dspbr_flake_grid(p, n, size);
       ASSERT_TRUE(g.valid);
       const DspbrFlakeBest got = dspbr_flake_nearest(g);
-      DspbrFlakeBest want;
-      want.d2 = 3.402823466e38f;
-      want.rank = 0;
-      want.state = dspbr_u64(0u, 0u);
-      want.inc = dspbr_u64(0u, 0u);
+      DspbrFlakeBest want = dspbr_flake_none();
       // The scan: the 3x3 block row by row, then the 5x5 ring row by row; ranks in scan order
       // make the probe keep the first of equally near flakes, as a strict comparison would.
       int rank = 0;

@@ -141,6 +141,15 @@ struct DspbrFlakeBest {
 // (xi in [0, 1)), so the squared distance from (gx, gy) to the cell's square, computed as the
 // flakes' is (float rounding is monotonic), bounds theirs from below. The factor 1.000001 leaves
 // room for a compiler that fuses the flakes' sum into a multiply-add and not the bound's.
+// No flake found yet: any flake is nearer.
+DSPBR_FN DspbrFlakeBest dspbr_flake_none() {
+  DspbrFlakeBest best;
+  best.d2 = 3.402823466e38f;
+  best.rank = 0;
+  best.state = dspbr_u64(0u, 0u);
+  best.inc = dspbr_u64(0u, 0u);
+  return best;
+}
 DSPBR_FN bool dspbr_flake_cell_beyond(int ii, int jj, int i, int j, float gx, float gy, DspbrFlakeBest best) {
   float bx = ii > i ? gx - float(ii) : (ii < i ? gx - float(ii + 1) : 0.0f);
   float by = jj > j ? gy - float(jj) : (jj < j ? gy - float(jj + 1) : 0.0f);
@@ -211,11 +220,7 @@ DSPBR_FN DspbrFlakeGrid dspbr_flake_grid(vec3 p, vec3 n, float size_mm) {
 DSPBR_FN DspbrFlakeBest dspbr_flake_nearest(DspbrFlakeGrid g) {
   int i = g.i, j = g.j, res = g.res;
   float gx = g.gx, gy = g.gy;
-  DspbrFlakeBest best;
-  best.d2 = 3.402823466e38f;
-  best.rank = 0;
-  best.state = dspbr_u64(0u, 0u);
-  best.inc = dspbr_u64(0u, 0u);
+  DspbrFlakeBest best = dspbr_flake_none();
   // The point's own cell first (rank 16: the centre of the 3x3 scan), then its neighbours that
   // can still hold a nearer flake.
   dspbr_flake_probe(i, j, res, gx, gy, 16, best);

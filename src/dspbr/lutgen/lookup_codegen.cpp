@@ -96,30 +96,33 @@ std::string interp_function(const WarpedTable& t, const std::string& id) {
                      taps_sum(id + "_at", axes));
 }
 
-// dspbr_ggx_E_missing_beta: 1 - E_m and beta at one (mu, r), as dspbr_ggx_E_missing and dspbr_ggx_beta
-// give them (the same expressions), with their warped coordinates and roughness taps computed once
-// where the two tables share an axis.
+// dspbr_lut_ggx_missing_beta: 1 - E_m at one (mu, r) (dspbr_ggx_E_missing is it), and beta there as
+// dspbr_ggx_beta gives it (the same expressions), the warped coordinates and roughness taps
+// computed once where the two tables share an axis; dspbr_ggx_E_missing_beta, both.
 std::string ggx_missing_beta_function(const WarpedTable& e, const WarpedTable& b) {
   auto same = [](const WarpedAxis& x, const WarpedAxis& y) { return x.size == y.size && x.warp.describe() == y.warp.describe(); };
+  const bool rows = same(e.axes[0], b.axes[0]);
+  const bool cos_warp = e.axes[1].warp.describe() == b.axes[1].warp.describe();
+  // beta's own coordinates and taps, read only with beta.
+  std::string beta_taps;
+  if (!rows) beta_taps += "  float yr = " + warp_expr(b.axes[0].warp, "r", "") + ";\n" + taps_text("br", "yr", b.axes[0].size);
+  if (!cos_warp) beta_taps += "  float yc = " + warp_expr(b.axes[1].warp, "mu", "r * r") + ";\n";
+  beta_taps += taps_text("bc", cos_warp ? "xc" : "yc", b.axes[1].size);
   std::ostringstream o;
   o << "struct DspbrGgxMissingBeta {\n  float missing;\n  float beta;\n};\n"
-    << "// 1 - E_m(mu; r) and, unless with_beta is 0 (then 0 and no read of GGX_beta), beta(mu; r), equal to\n"
-    << "// dspbr_ggx_E_missing and dspbr_ggx_beta: one call site serves a metal and a dielectric base.\n"
+    << "// 1 - E_m(mu; r) (as dspbr_ggx_E_missing) and, unless with_beta is 0 (then 0 and no read of\n"
+    << "// GGX_beta), beta(mu; r) (as dspbr_ggx_beta): one call site serves a metal and a dielectric base.\n"
     << "DspbrGgxMissingBeta dspbr_lut_ggx_missing_beta(float cos_theta, float roughness, int with_beta) {\n"
     << "  float r = clamp(roughness, 0.0f, 1.0f);\n"
     << "  float mu = clamp(cos_theta, 0.0f, 1.0f);\n"
     << "  float xr = " << warp_expr(e.axes[0].warp, "r", "") << ";\n"
     << "  float xc = " << warp_expr(e.axes[1].warp, "mu", "r * r") << ";\n"
-    << taps_text("er", "xr", e.axes[0].size) << taps_text("ec", "xc", e.axes[1].size);
-  const bool rows = same(e.axes[0], b.axes[0]);
-  const bool cos_warp = e.axes[1].warp.describe() == b.axes[1].warp.describe();
-  if (!rows) o << "  float yr = " << warp_expr(b.axes[0].warp, "r", "") << ";\n" << taps_text("br", "yr", b.axes[0].size);
-  if (!cos_warp) o << "  float yc = " << warp_expr(b.axes[1].warp, "mu", "r * r") << ";\n";
-  o << "  DspbrGgxMissingBeta a;\n"
+    << taps_text("er", "xr", e.axes[0].size) << taps_text("ec", "xc", e.axes[1].size)
+    << "  DspbrGgxMissingBeta a;\n"
     << "  a.missing = clamp(" << taps_sum(ident(e) + "_missing_at", {"er", "ec"}) << ", 0.0f, 1.0f);\n"
     << "  a.beta = 0.0f;\n"
     << "  if (with_beta != 0) {\n"
-    << std::regex_replace(taps_text("bc", cos_warp ? "xc" : "yc", b.axes[1].size), std::regex("(^|\n)(.)"), "$1  $2")
+    << std::regex_replace(beta_taps, std::regex("(^|\n)(.)"), "$1  $2")
     << "    float m = 1.0f - mu, m2 = m * m;\n"
     << "    a.beta = max(m2 * m2 * m + " << taps_sum(ident(b) + "_at", {rows ? "er" : "br", "bc"}) << ", 0.0f);\n"
     << "  }\n"
@@ -143,7 +146,7 @@ std::string api_functions(const RendererLuts& L) {
   // 1 - E_m interpolated from 1 - each sample: exact in float for samples near 1 (Sterbenz), where
   // 1 - dspbr_ggx_E keeps only ~1e-7 absolute.
   o << "float " << ident(e) << "_missing_at(int r, int c) { return 1.0f - " << ident(e) << "_at(r, c); }\n"
-    << interp_function(e, ident(e) + "_missing");
+    << ggx_missing_beta_function(e, b);
   o << "// E_m(mu; r): single-scattering GGX albedo, in [0, 1]. The cubic's undershoot (overshoot) is clamped\n"
     << "// here, in beta and in the sheen albedos, so that every albedo composed from them is >= 0.\n"
     << "float dspbr_ggx_E(float cos_theta, float roughness) {\n"
@@ -153,9 +156,7 @@ std::string api_functions(const RendererLuts& L) {
     << "// 1 - E_m(mu; r), in [0, 1], to full float precision where E_m is near 1 (1 - dspbr_ggx_E keeps about\n"
     << "// 1e-7 absolute: at roughness ~1e-3 that is all of 1 - E_m near normal incidence).\n"
     << "float dspbr_ggx_E_missing(float cos_theta, float roughness) {\n"
-    << "  float r = clamp(roughness, 0.0f, 1.0f);\n"
-    << "  return clamp(dspbr_lut_interp_" << ident(e) << "_missing(" << warp_expr(e.axes[0].warp, "r", "") << ", "
-    << warp_expr(e.axes[1].warp, "cos_theta", "r * r") << "), 0.0f, 1.0f);\n}\n"
+    << "  return dspbr_lut_ggx_missing_beta(cos_theta, roughness, 0).missing;\n}\n"
     << "// 1 - E_m,avg(r), stored as a logarithm (it vanishes like r^4).\n"
     << "float dspbr_ggx_E_avg_missing(float roughness) {\n"
     << "  return exp(dspbr_lut_interp_dspbr_GGX_E_avg(" << warp_expr(ea.axes[0].warp, "roughness", "") << "));\n}\n"
@@ -167,7 +168,6 @@ std::string api_functions(const RendererLuts& L) {
     << "  float m = 1.0f - mu, m2 = m * m;\n"
     << "  return max(m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(" << warp_expr(b.axes[0].warp, "r", "") << ", "
     << warp_expr(b.axes[1].warp, "mu", "r * r") << "), 0.0f);\n}\n"
-    << ggx_missing_beta_function(e, b)
     << "float dspbr_lut_ggx_B(float cos_theta, float roughness) {\n"
     << "  return dspbr_ggx_beta(cos_theta, roughness) * dspbr_ggx_E(cos_theta, roughness);\n}\n"
     << "// F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = 20/21 f0 + 1/21 f90 (spec eq. multiscatter);\n"
