@@ -721,10 +721,14 @@ float dspbr_Sheen_ash_E_at(int r, int c) { return dspbr_Sheen_ash_E_table[r * 32
 
 // NaN-safe clamp: NaN maps to lo (every comparison with NaN is false), +-inf to the nearer end.
 float dspbr_lut_clampf(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
-// ggx_cos warp x = t^p: t = mu / (mu + alpha sqrt(1 - mu^2)) (t = 1 when alpha = 0).
+// x where positive, else 0 (NaN too), alike in every dialect: the max of GLSL and HLSL leaves NaN
+// undefined, and C's fmaxf is a library call.
+float dspbr_lut_max0(float x) { return x > 0.0f ? x : 0.0f; }
+// ggx_cos warp x = t^p: t = mu / (mu + alpha sqrt(1 - mu^2)) (t = 1 when alpha = 0); 1 - mu^2 >= 0
+// exactly for mu in [0, 1] (mu^2 rounds to at most 1).
 float dspbr_lut_ggx_cos_t(float cos_theta, float alpha) {
   float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
-  float d = mu + alpha * sqrt(max(1.0f - mu * mu, 0.0f));
+  float d = mu + alpha * sqrt(1.0f - mu * mu);
   return d > 0.0f ? mu / d : 1.0f;
 }
 float dspbr_lut_interp_dspbr_GGX_E(float x0, float x1) {
@@ -935,9 +939,9 @@ struct DspbrGgxMissingBeta {
 DspbrGgxMissingBeta dspbr_lut_ggx_missing_beta(float cos_theta, float roughness, int with_beta) {
   float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
   float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
-  float xr = dspbr_lut_clampf(r, 0.0f, 1.0f);
+  float xr = r;
   float xc = sqrt(dspbr_lut_ggx_cos_t(mu, r * r));
-  float cer = dspbr_lut_clampf(xr, 0.0f, 1.0f) * 31.0f;
+  float cer = xr * 31.0f;
   int ker = int(cer);
   if (ker < 0) ker = 0;
   if (ker > 30) ker = 30;
@@ -955,7 +959,7 @@ DspbrGgxMissingBeta dspbr_lut_ggx_missing_beta(float cos_theta, float roughness,
     wer3 = 0.0f;
   }
   int ker0 = ker > 0 ? ker - 1 : 0, ker1 = ker, ker2 = ker + 1, ker3 = ker + 2 < 32 ? ker + 2 : 31;
-  float cec = dspbr_lut_clampf(xc, 0.0f, 1.0f) * 63.0f;
+  float cec = xc * 63.0f;
   int kec = int(cec);
   if (kec < 0) kec = 0;
   if (kec > 62) kec = 62;
@@ -977,7 +981,7 @@ DspbrGgxMissingBeta dspbr_lut_ggx_missing_beta(float cos_theta, float roughness,
   a.missing = dspbr_lut_clampf(((((dspbr_GGX_E_missing_at(ker0, kec0) * wec0 + dspbr_GGX_E_missing_at(ker0, kec1) * wec1) + (dspbr_GGX_E_missing_at(ker0, kec2) * wec2 + dspbr_GGX_E_missing_at(ker0, kec3) * wec3)) * wer0 + ((dspbr_GGX_E_missing_at(ker1, kec0) * wec0 + dspbr_GGX_E_missing_at(ker1, kec1) * wec1) + (dspbr_GGX_E_missing_at(ker1, kec2) * wec2 + dspbr_GGX_E_missing_at(ker1, kec3) * wec3)) * wer1) + (((dspbr_GGX_E_missing_at(ker2, kec0) * wec0 + dspbr_GGX_E_missing_at(ker2, kec1) * wec1) + (dspbr_GGX_E_missing_at(ker2, kec2) * wec2 + dspbr_GGX_E_missing_at(ker2, kec3) * wec3)) * wer2 + ((dspbr_GGX_E_missing_at(ker3, kec0) * wec0 + dspbr_GGX_E_missing_at(ker3, kec1) * wec1) + (dspbr_GGX_E_missing_at(ker3, kec2) * wec2 + dspbr_GGX_E_missing_at(ker3, kec3) * wec3)) * wer3)), 0.0f, 1.0f);
   a.beta = 0.0f;
   if (with_beta != 0) {
-    float cbc = dspbr_lut_clampf(xc, 0.0f, 1.0f) * 31.0f;
+    float cbc = xc * 31.0f;
     int kbc = int(cbc);
     if (kbc < 0) kbc = 0;
     if (kbc > 30) kbc = 30;
@@ -996,7 +1000,7 @@ DspbrGgxMissingBeta dspbr_lut_ggx_missing_beta(float cos_theta, float roughness,
     }
     int kbc0 = kbc > 0 ? kbc - 1 : 0, kbc1 = kbc, kbc2 = kbc + 1, kbc3 = kbc + 2 < 32 ? kbc + 2 : 31;
     float m = 1.0f - mu, m2 = m * m;
-    a.beta = max(m2 * m2 * m + ((((dspbr_GGX_beta_at(ker0, kbc0) * wbc0 + dspbr_GGX_beta_at(ker0, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker0, kbc2) * wbc2 + dspbr_GGX_beta_at(ker0, kbc3) * wbc3)) * wer0 + ((dspbr_GGX_beta_at(ker1, kbc0) * wbc0 + dspbr_GGX_beta_at(ker1, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker1, kbc2) * wbc2 + dspbr_GGX_beta_at(ker1, kbc3) * wbc3)) * wer1) + (((dspbr_GGX_beta_at(ker2, kbc0) * wbc0 + dspbr_GGX_beta_at(ker2, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker2, kbc2) * wbc2 + dspbr_GGX_beta_at(ker2, kbc3) * wbc3)) * wer2 + ((dspbr_GGX_beta_at(ker3, kbc0) * wbc0 + dspbr_GGX_beta_at(ker3, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker3, kbc2) * wbc2 + dspbr_GGX_beta_at(ker3, kbc3) * wbc3)) * wer3)), 0.0f);
+    a.beta = dspbr_lut_max0(m2 * m2 * m + ((((dspbr_GGX_beta_at(ker0, kbc0) * wbc0 + dspbr_GGX_beta_at(ker0, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker0, kbc2) * wbc2 + dspbr_GGX_beta_at(ker0, kbc3) * wbc3)) * wer0 + ((dspbr_GGX_beta_at(ker1, kbc0) * wbc0 + dspbr_GGX_beta_at(ker1, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker1, kbc2) * wbc2 + dspbr_GGX_beta_at(ker1, kbc3) * wbc3)) * wer1) + (((dspbr_GGX_beta_at(ker2, kbc0) * wbc0 + dspbr_GGX_beta_at(ker2, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker2, kbc2) * wbc2 + dspbr_GGX_beta_at(ker2, kbc3) * wbc3)) * wer2 + ((dspbr_GGX_beta_at(ker3, kbc0) * wbc0 + dspbr_GGX_beta_at(ker3, kbc1) * wbc1) + (dspbr_GGX_beta_at(ker3, kbc2) * wbc2 + dspbr_GGX_beta_at(ker3, kbc3) * wbc3)) * wer3)));
   }
   return a;
 }
@@ -1026,7 +1030,7 @@ float dspbr_ggx_beta(float cos_theta, float roughness) {
   float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
   float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
   float m = 1.0f - mu, m2 = m * m;
-  return max(m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrt(dspbr_lut_ggx_cos_t(mu, r * r))), 0.0f);
+  return dspbr_lut_max0(m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(r, sqrt(dspbr_lut_ggx_cos_t(mu, r * r))));
 }
 float dspbr_lut_ggx_B(float cos_theta, float roughness) {
   return dspbr_ggx_beta(cos_theta, roughness) * dspbr_ggx_E(cos_theta, roughness);
@@ -1047,20 +1051,24 @@ float dspbr_base_E(float cos_theta, float roughness, float f0_in) {
   float fms = dspbr_fresnel_ms(f0, 1.0f, dspbr_ggx_E_avg(roughness));
   return f0 * em + (1.0f - f0) * dspbr_lut_ggx_B(cos_theta, roughness) + fms * (1.0f - em);
 }
-// E_avg(r, f0) = f0 E_m,avg + (1 - f0) B_avg + F_ms (1 - E_m,avg).
-float dspbr_base_E_avg(float roughness, float f0_in) {
+// E_avg(r, f0) = f0 E_m,avg + (1 - f0) B_avg + F_ms (1 - E_m,avg), given missing = 1 - E_m,avg(r) (as
+// dspbr_ggx_E_avg_missing(r) gives it, for a caller that reads it anyway: one exponential, not two).
+float dspbr_base_E_avg_given(float roughness, float f0_in, float missing) {
   float f0 = dspbr_lut_clampf(f0_in, 0.0f, 1.0f);
-  float missing = dspbr_ggx_E_avg_missing(roughness);
   float b_avg = dspbr_lut_interp_dspbr_GGX_B_avg(dspbr_lut_clampf(roughness, 0.0f, 1.0f));
   return f0 * (1.0f - missing) + (1.0f - f0) * b_avg + dspbr_fresnel_ms(f0, 1.0f, 1.0f - missing) * missing;
 }
+// E_avg(r, f0).
+float dspbr_base_E_avg(float roughness, float f0) {
+  return dspbr_base_E_avg_given(roughness, f0, dspbr_ggx_E_avg_missing(roughness));
+}
 // E_b(mu; alpha_b) of the main sheen (Charlie D_b, the spec's Lambda fit).
 float dspbr_sheen_E(float cos_theta, float alpha_b) {
-  return max(dspbr_lut_interp_dspbr_Sheen_E(pow(((dspbr_lut_clampf(alpha_b, 0.00390625f, 1.0f) - 0.00390625f) / 0.99609375f), 0.25f), pow(((dspbr_lut_clampf(cos_theta, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f), 0.25f)), 0.0f);
+  return dspbr_lut_max0(dspbr_lut_interp_dspbr_Sheen_E(sqrt(sqrt(((dspbr_lut_clampf(alpha_b, 0.00390625f, 1.0f) - 0.00390625f) / 0.99609375f))), sqrt(sqrt(((dspbr_lut_clampf(cos_theta, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f)))));
 }
 // E_b(mu; alpha_b) of the alternative sheen (visibility 1 / (4 (mu_v + mu_l - mu_v mu_l))).
 float dspbr_sheen_ash_E(float cos_theta, float alpha_b) {
-  return max(dspbr_lut_interp_dspbr_Sheen_ash_E(pow(((dspbr_lut_clampf(alpha_b, 0.00390625f, 1.0f) - 0.00390625f) / 0.99609375f), 0.25f), pow(((dspbr_lut_clampf(cos_theta, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f), 0.25f)), 0.0f);
+  return dspbr_lut_max0(dspbr_lut_interp_dspbr_Sheen_ash_E(sqrt(sqrt(((dspbr_lut_clampf(alpha_b, 0.00390625f, 1.0f) - 0.00390625f) / 0.99609375f))), sqrt(sqrt(((dspbr_lut_clampf(cos_theta, 0.00100000005f, 1.0f) - 0.00100000005f) / 0.999000013f)))));
 }
 // M_r,ms / F_ms = (1 - E_m(mu_v)) (1 - E_m(mu_l)) / (pi (1 - E_m,avg)); 0 when 1 - E_m,avg <= 1e-9.
 float dspbr_ms_lobe(float cos_v, float cos_l, float roughness) {

@@ -84,6 +84,8 @@ TEST(LookupCode, CHeaderMatchesTheLibrary) {
                        1e-5 * L.missing_E_m_avg(a.r));
     expect_float_close(dspbr_base_E(a.mu, a.r, a.f0), L.E_base(a.mu, a.r, a.f0), "base_E", 1e-5);
     expect_float_close(dspbr_base_E_avg(a.r, a.f0), L.E_base_avg(a.r, a.f0), "base_E_avg", 1e-5);
+    expect_float_close(dspbr_base_E_avg_given(a.r, a.f0, dspbr_ggx_E_avg_missing(a.r)), L.E_base_avg(a.r, a.f0),
+                       "base_E_avg_given", 1e-5);
     expect_float_close(dspbr_sheen_E(a.mu, a.ab), L.E_sheen(a.mu, a.ab), "sheen_E", 1e-5);
     expect_float_close(dspbr_sheen_ash_E(a.mu, a.ab), L.E_sheen_ash(a.mu, a.ab), "sheen_ash_E", 1e-5);
   }

@@ -341,6 +341,51 @@ TEST(ShaderLibrary, FlakeSearchSkipsOnlyCellsThatCannotWin) {
   EXPECT_EQ(points, 16000);
 }
 
+TEST(ShaderLibrary, CoreFrameSkippedOnlyWhereItIsTheIdentity) {
+  // Without a normal map and a tangent rotation the core frame is the shading frame, and eval, pdf
+  // and sample take v and l as they are instead of through the identity (dspbr_to_core). The
+  // independent value: the same prepared BSDF made to transform (core_is_frame false), bit for bit,
+  // at random directions on both sides, for materials of every kind; a material with a normal or a
+  // rotation transforms.
+  using dspbr_shader::vec3;
+  Pcg32 rng(37, 2);
+  auto u = [&] { return rng.next_double(); };
+  int compared = 0;
+  for (int i = 0; i < 60; ++i) {
+    Material m;
+    m.albedo = {u(), u(), u()}, m.roughness = u(), m.metallic = i % 3 == 0 ? 1.0 : 0.3 * u();
+    m.transparency = i % 3 == 1 ? 1.0 : 0.0, m.thinWalled = i % 2 == 0, m.anisotropy = i % 5 == 0 ? 0.7 : 0.0;
+    m.clearcoat = i % 4 == 0 ? 1.0 : 0.0, m.clearcoatNormal = {0.2, -0.1, 1.0}, m.sheenColor = {0.3 * u(), 0.2, 0.1};
+    m.translucency = i % 6 == 0 ? 0.5 : 0.0;
+    const shader_test::ShaderBsdf lib(m, BsdfOptions{});
+    const dspbr_shader::DspbrBsdf& b = lib.prepared();
+    ASSERT_TRUE(b.core_is_frame) << "material " << i;
+    dspbr_shader::DspbrBsdf t = b;
+    t.core_is_frame = false;
+    for (int k = 0; k < 50; ++k) {
+      const vec3 v = dspbr_shader::normalize(vec3(float(2 * u() - 1), float(2 * u() - 1), float(2 * u() - 1)));
+      const vec3 l = dspbr_shader::normalize(vec3(float(2 * u() - 1), float(2 * u() - 1), float(2 * u() - 1)));
+      const vec3 rnd = vec3(float(u()), float(u()), float(u()));
+      const vec3 f1 = dspbr_shader::dspbr_eval(b, v, l), f2 = dspbr_shader::dspbr_eval(t, v, l);
+      EXPECT_TRUE(f1.x == f2.x && f1.y == f2.y && f1.z == f2.z) << "material " << i << " pair " << k;
+      EXPECT_EQ(dspbr_shader::dspbr_pdf(b, v, l), dspbr_shader::dspbr_pdf(t, v, l));
+      const dspbr_shader::DspbrSample s1 = dspbr_shader::dspbr_sample(b, v, rnd), s2 = dspbr_shader::dspbr_sample(t, v, rnd);
+      EXPECT_EQ(s1.valid, s2.valid);
+      EXPECT_TRUE(s1.l.x == s2.l.x && s1.l.y == s2.l.y && s1.l.z == s2.l.z && s1.pdf == s2.pdf && s1.weight.x == s2.weight.x);
+      const vec3 e1 = dspbr_shader::dspbr_emission(b, v), e2 = dspbr_shader::dspbr_emission(t, v);
+      EXPECT_EQ(e1.x, e2.x);
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 3000);
+  Material bumped;
+  bumped.normal = {0.1, 0.0, 1.0};
+  EXPECT_FALSE(shader_test::ShaderBsdf(bumped, BsdfOptions{}).prepared().core_is_frame);
+  Material rotated;
+  rotated.anisotropy = 0.5, rotated.anisotropyRotation = 0.25;
+  EXPECT_FALSE(shader_test::ShaderBsdf(rotated, BsdfOptions{}).prepared().core_is_frame);
+}
+
 TEST(ShaderLibrary, ThinFilmInFourierSpaceAsTheQuadrature) {
   // The C++ compile evaluates a film's R in Fourier space over the generated sensitivity table
   // (luts/dspbr_thin_film_lookup.h); the reference's per-wavelength quadrature (double, 1/64 nm

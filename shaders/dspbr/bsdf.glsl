@@ -112,7 +112,7 @@ DSPBR_FN float dspbr_lobe_pdf(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, vec3 l, vec3
 // The selection weight of lobe k at v, without its layer factor.
 DSPBR_FN float dspbr_lobe_weight(DSPBR_IN(DspbrBsdf) b, int k, vec3 v, float eta_i, float eta_o, DspbrAlbedos av) {
   if (DSPBR_HAS_CLEARCOAT != 0 && k == DSPBR_LOBE_CLEARCOAT) return dspbr_reflection_weight(b, k, dspbr_to_local(b.coat, v), eta_i, eta_o);
-  vec3 vc = dspbr_to_local(b.core, v);
+  vec3 vc = dspbr_to_core(b, v);
   if (k == DSPBR_LOBE_CORE_REFLECTION) return dspbr_reflection_weight(b, k, vc, eta_i, eta_o);
   if (k == DSPBR_LOBE_MULTISCATTER) return dspbr_multiscatter_weight(b, vc, av);
   if (DSPBR_HAS_VOLUMETRIC_TRANSPARENT != 0 && k == DSPBR_LOBE_TRANSMISSION && !b.thin_walled)
@@ -166,7 +166,7 @@ DSPBR_FN DspbrAlbedos dspbr_albedos_at(DSPBR_IN(DspbrBsdf) b, vec3 w) { return d
 // f(v, l) and the mixture pdf on one side (v in front, side coordinates; av: the tables at v).
 DSPBR_FN vec3 dspbr_eval_side(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, float eta_i, float eta_o, DspbrAlbedos av) {
   // v and l in the core frame, once for every lobe.
-  vec3 vc = dspbr_to_local(b.core, v), lc = dspbr_to_local(b.core, l);
+  vec3 vc = dspbr_to_core(b, v), lc = dspbr_to_core(b, l);
   if (dspbr_on_horizon(vc) || dspbr_on_horizon(lc)) return dspbr_splat(0.0f);
   DspbrAlbedos al = dspbr_albedos(b, lc.z);
   DspbrLayers f = dspbr_layers(b, v, l, av, al);
@@ -178,7 +178,7 @@ DSPBR_FN vec3 dspbr_eval_side(DSPBR_IN(DspbrBsdf) b, vec3 v, vec3 l, float eta_i
 }
 DSPBR_FN float dspbr_pdf_side(DSPBR_IN(DspbrBsdf) b, DspbrSelection sel, vec3 v, vec3 l, float eta_i, float eta_o) {
   float p = 0.0f;
-  vec3 vc = dspbr_to_local(b.core, v), lc = dspbr_to_local(b.core, l);
+  vec3 vc = dspbr_to_core(b, v), lc = dspbr_to_core(b, l);
   if (dspbr_on_horizon(vc) || dspbr_on_horizon(lc)) return p;
   for (int k = 0; k < DSPBR_LOBE_COUNT; ++k)
     if (dspbr_has_lobe(b, k) && !dspbr_is_delta_lobe(b, k) && sel.p[k] > 0.0f)
@@ -304,7 +304,7 @@ DSPBR_FN DspbrSample dspbr_sample(DSPBR_IN(DspbrBsdf) b, vec3 v_in, vec3 u) {
     float ux = clamp((u.x - cum) / p, 0.0f, 0.99999994f);
     DspbrFrame lf = chosen == DSPBR_LOBE_CLEARCOAT ? b.coat : b.core;
     vec3 vk = dspbr_to_local(lf, v);
-    if (dspbr_on_horizon(vk) || dspbr_on_horizon(dspbr_to_local(b.core, v))) return out_s;
+    if (dspbr_on_horizon(vk) || dspbr_on_horizon(dspbr_to_core(b, v))) return out_s;
     vec3 lk, lw;
     if (!dspbr_lobe_sample(b, chosen, vk, vec3(ux, u.y, u.z), eta_i, eta_o, lk, lw)) return out_s;
     l = normalize(dspbr_to_world(lf, lk));
@@ -337,8 +337,8 @@ DSPBR_FN DspbrSample dspbr_sample(DSPBR_IN(DspbrBsdf) b, vec3 v_in, vec3 u) {
 // cut-out opacity (spec "Emission"; cd/m^2).
 DSPBR_FN vec3 dspbr_emission(DSPBR_IN(DspbrBsdf) b, vec3 v_in) {
   if (DSPBR_HAS_EMISSION == 0 || !(dspbr_max3(b.rho_e) > 0.0f)) return dspbr_splat(0.0f);
-  vec3 vc = dspbr_to_local(b.core, dspbr_to_local(b.frame, dspbr_unit_direction(v_in)));
+  vec3 vc = dspbr_to_core(b, dspbr_to_local(b.frame, dspbr_unit_direction(v_in)));
   if (!(vc.z > 0.0f)) return dspbr_splat(0.0f);
-  float fc = dspbr_clearcoat_fresnel(dot(vc, dspbr_to_local(b.core, b.coat.n)));
+  float fc = dspbr_clearcoat_fresnel(dot(vc, dspbr_to_core(b, b.coat.n)));
   return b.rho_e * ((1.0f - b.clearcoat * fc) * b.alpha_cut);
 }

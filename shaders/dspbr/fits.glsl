@@ -31,8 +31,9 @@ DSPBR_FN DspbrGgxMissingBeta dspbr_lut_ggx_missing_beta(float cos_theta, float r
 DSPBR_FN DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, float roughness) {
   return dspbr_lut_ggx_missing_beta(cos_theta, roughness, 1);
 }
-// E_avg(r, f0).
+// E_avg(r, f0); the lookups' form given 1 - E_m,avg(r) as well, which the fit of E_avg does not read.
 DSPBR_FN float dspbr_base_E_avg(float roughness, float f0) { return dspbr_fit_base_E_avg(roughness, clamp(f0, 0.0f, 1.0f)); }
+DSPBR_FN float dspbr_base_E_avg_given(float roughness, float f0, float /* 1 - E_m,avg */) { return dspbr_base_E_avg(roughness, f0); }
 // E_b(mu; alpha_b) of the two sheen models.
 DSPBR_FN float dspbr_sheen_E(float cos_theta, float alpha_b) { return dspbr_fit_sheen_E(cos_theta, alpha_b); }
 DSPBR_FN float dspbr_sheen_ash_E(float cos_theta, float alpha_b) { return dspbr_fit_sheen_ash_E(cos_theta, alpha_b); }

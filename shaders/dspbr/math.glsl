@@ -62,6 +62,11 @@ DSPBR_FN DspbrFrame dspbr_identity_frame() {
   f.n = vec3(0.0f, 0.0f, 1.0f);
   return f;
 }
+// Whether f is the identity exactly (then dspbr_to_local(f, w) is w for every finite w).
+DSPBR_FN bool dspbr_is_identity_frame(DspbrFrame f) {
+  return f.t.x == 1.0f && f.t.y == 0.0f && f.t.z == 0.0f && f.b.x == 0.0f && f.b.y == 1.0f && f.b.z == 0.0f && f.n.x == 0.0f &&
+         f.n.y == 0.0f && f.n.z == 1.0f;
+}
 // Frame around a unit normal (Duff et al. 2017, "Building an Orthonormal Basis, Revisited").
 DSPBR_FN DspbrFrame dspbr_frame_from_normal(vec3 n) {
   float sgn = n.z >= 0.0f ? 1.0f : -1.0f;

@@ -58,6 +58,7 @@ DSPBR_CONST float dspbr_index_matched = 1e-7f;
 struct DspbrBsdf {
   DspbrFrame frame;  // the renderer's shading frame (directions in and out are in its space)
   DspbrFrame core;   // the core frame in frame's local coordinates: material normal, rotated tangent
+  bool core_is_frame; // core is the identity (no normal map, no rotation): dspbr_to_core skips it
   DspbrFrame coat;   // the clearcoat frame (clearcoatNormal)
   uint lobes;        // bit k: lobe k is present
   uint delta;        // bit k: lobe k is a Dirac (perfectly smooth)
@@ -105,6 +106,10 @@ struct DspbrBsdf {
   vec3 flip_flop_color;
 };
 
+// w (in the frame's local coordinates) in the core frame; w itself where the two coincide (the
+// transform would multiply by ones and add zeros: the same value for finite w, six dot products less).
+DSPBR_FN vec3 dspbr_to_core(DSPBR_IN(DspbrBsdf) b, vec3 w) { return b.core_is_frame ? w : dspbr_to_local(b.core, w); }
+
 DSPBR_FN bool dspbr_has_lobe(DSPBR_IN(DspbrBsdf) b, int k) { return ((b.lobes >> uint(k)) & 1u) != 0u; }
 DSPBR_FN bool dspbr_is_delta_lobe(DSPBR_IN(DspbrBsdf) b, int k) { return ((b.delta >> uint(k)) & 1u) != 0u; }
 
@@ -148,6 +153,7 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DSPBR_IN(DspbrMaterial) m, DspbrFrame frame, DS
   DspbrBsdf b;
   b.frame = frame;
   b.core = dspbr_core_frame(m);
+  b.core_is_frame = dspbr_is_identity_frame(b.core);
   b.thin_walled = m.thinWalled;
   b.alpha_cut = dspbr_clamp_nan(m.cutoutOpacity, 0.0f, 1.0f);
   // A component compiled out (features.glsl) has weight 0, as in the reference's component masks.
@@ -224,8 +230,9 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DSPBR_IN(DspbrMaterial) m, DspbrFrame frame, DS
       bool matched = volumetric && abs(b.eta - 1.0f) < dspbr_index_matched;
       if (mirror || matched) b.delta |= 1u << uint(DSPBR_LOBE_TRANSMISSION);
     }
-    // B_c's normalisation (reads GGX_B_avg: only for an opaque dielectric part, compiled in).
-    float missing_b = DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && b.w_opaque > 0.0f ? 1.0f - dspbr_base_E_avg(b.r_uv, b.f0_max) : 0.0f;
+    // B_c's normalisation (reads GGX_B_avg: only for an opaque dielectric part, compiled in), from the
+    // 1 - E_m,avg read above.
+    float missing_b = DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && b.w_opaque > 0.0f ? 1.0f - dspbr_base_E_avg_given(b.r_uv, b.f0_max, missing_m) : 0.0f;
     b.fms_base = dspbr_fresnel_ms(b.f0_max, 1.0f, e_avg);
     b.diffuse_inv_norm = missing_b > dspbr_min_missing_energy ? 1.0f / (dspbr_pi * missing_b) : 0.0f;
     if (b.w_opaque > 0.0f && dspbr_max3(b.rho_d) > 0.0f) b.lobes |= 1u << uint(DSPBR_LOBE_DIFFUSE);

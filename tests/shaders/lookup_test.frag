@@ -7,7 +7,7 @@ layout(location = 0) in vec4 v_in;
 layout(location = 0) out vec4 color;
 void main() {
   float a = dspbr_ggx_E(v_in.x, v_in.y) + dspbr_ggx_E_avg(v_in.y) + dspbr_base_E(v_in.x, v_in.y, v_in.z) +
-            dspbr_base_E_avg(v_in.y, v_in.z) + dspbr_sheen_E(v_in.x, v_in.w) + dspbr_sheen_ash_E(v_in.x, v_in.w);
+            dspbr_base_E_avg(v_in.y, v_in.z) + dspbr_base_E_avg_given(v_in.y, v_in.z, v_in.x) + dspbr_sheen_E(v_in.x, v_in.w) + dspbr_sheen_ash_E(v_in.x, v_in.w);
   float b = dspbr_ms_lobe(v_in.x, v_in.z, v_in.y) + dspbr_diffuse_bc(v_in.x, v_in.z, v_in.y, v_in.w) +
             dspbr_sheen_layer_scale(v_in.x, v_in.z, v_in.w, v_in.y) +
             dspbr_sheen_ash_layer_scale(v_in.x, v_in.z, v_in.w, v_in.y) + dspbr_fresnel_ms(v_in.x, 1.0, v_in.y);

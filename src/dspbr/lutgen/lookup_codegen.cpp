@@ -21,18 +21,22 @@ std::string flit(double v) {
   return s + "f";
 }
 
-// u^p as the warps evaluate it (warp_power, tables/warped_table.h): u, sqrt(u) for p = 1/2, else pow.
+// u^p as the warps evaluate it (warp_power, tables/warped_table.h): u, sqrt(u) for p = 1/2, else pow;
+// p = 1/4 (the sheen's axes) as sqrt(sqrt(u)), within an ulp of pow in float and a tenth of its cost
+// in C (a library call each).
 std::string power_expr(const std::string& u, double p) {
   if (p == 1) return u;
   if (p == 0.5) return fmt::format("sqrt({})", u);
+  if (p == 0.25) return fmt::format("sqrt(sqrt({}))", u);
   return fmt::format("pow({}, {})", u, flit(p));
 }
 
-// Grid-coordinate expression of a warp applied to `v` (alpha: the GgxCos roughness term).
-std::string warp_expr(const Warp& w, const std::string& v, const std::string& alpha) {
+// Grid-coordinate expression of a warp applied to `v` (alpha: the GgxCos roughness term); `v_in_unit`:
+// the caller has clamped v to [0, 1] already.
+std::string warp_expr(const Warp& w, const std::string& v, const std::string& alpha, bool v_in_unit = false) {
   switch (w.kind) {
     case WarpKind::Power: {
-      std::string u = w.lo == 0 ? fmt::format("clamp({}, 0.0f, 1.0f)", v)
+      std::string u = w.lo == 0 ? (v_in_unit ? v : fmt::format("clamp({}, 0.0f, 1.0f)", v))
                                 : fmt::format("((clamp({}, {}, 1.0f) - {}) / {})", v, flit(w.lo), flit(w.lo),
                                               flit(1.0 - w.lo));
       return power_expr(u, w.p);
@@ -48,15 +52,21 @@ std::string warp_expr(const Warp& w, const std::string& v, const std::string& al
   return "";
 }
 
+// Whether warp_expr's value lies in [0, 1] for any v, without a further clamp: a power of v clamped
+// to [0, 1], and the ggx_cos warp (t = mu / (mu + alpha sqrt(1 - mu^2)) <= 1 in float too, the
+// sum rounding to at least mu); the other warps' divisions can round an ulp beyond 1.
+bool warp_in_unit(const Warp& w) { return (w.kind == WarpKind::Power && w.lo == 0) || w.kind == WarpKind::GgxCos; }
+
 std::string ident(const WarpedTable& t) { return "dspbr_" + t.name; }
 
 // The Catmull-Rom taps of one axis (GLSL syntax): cell k<v> of n samples holding the coordinate x
-// (clamped to [0, 1]), the four sample indices k<v>0..k<v>3 (clamped to the table) and their
-// weights w<v>0..w<v>3, the linear extension beyond each end (p_-1 = 2 p_0 - p_1, p_n = 2 p_n-1 -
-// p_n-2) folded into the weights: the same cubic as tables/warped_table.cpp's catmull_rom_taps.
-std::string taps_text(const std::string& v, const std::string& x, int n) {
+// (clamped to [0, 1] unless `in_unit` says the caller's x is there already), the four sample indices
+// k<v>0..k<v>3 (clamped to the table whatever x is) and their weights w<v>0..w<v>3, the linear
+// extension beyond each end (p_-1 = 2 p_0 - p_1, p_n = 2 p_n-1 - p_n-2) folded into the weights: the
+// same cubic as tables/warped_table.cpp's catmull_rom_taps.
+std::string taps_text(const std::string& v, const std::string& x, int n, bool in_unit = false) {
   return fmt::format(
-      "  float c{0} = clamp({1}, 0.0f, 1.0f) * {2};\n"
+      "  float c{0} = {1} * {2};\n"
       "  int k{0} = int(c{0});\n"
       "  if (k{0} < 0) k{0} = 0;\n"
       "  if (k{0} > {3}) k{0} = {3};\n"
@@ -66,7 +76,7 @@ std::string taps_text(const std::string& v, const std::string& x, int n) {
       "  if (k{0} == 0) {{\n    w{0}1 += 2.0f * w{0}0;\n    w{0}2 -= w{0}0;\n    w{0}0 = 0.0f;\n  }}\n"
       "  if (k{0} == {3}) {{\n    w{0}2 += 2.0f * w{0}3;\n    w{0}1 -= w{0}3;\n    w{0}3 = 0.0f;\n  }}\n"
       "  int k{0}0 = k{0} > 0 ? k{0} - 1 : 0, k{0}1 = k{0}, k{0}2 = k{0} + 1, k{0}3 = k{0} + 2 < {4} ? k{0} + 2 : {5};\n",
-      v, x, flit(n - 1), n - 2, n, n - 1);
+      v, in_unit ? x : "clamp(" + x + ", 0.0f, 1.0f)", flit(n - 1), n - 2, n, n - 1);
 }
 
 // The weighted sum over the taps of every axis (tap variables `axes`, slowest first) of the samples
@@ -105,9 +115,11 @@ std::string ggx_missing_beta_function(const WarpedTable& e, const WarpedTable& b
   const bool cos_warp = e.axes[1].warp.describe() == b.axes[1].warp.describe();
   // beta's own coordinates and taps, read only with beta.
   std::string beta_taps;
-  if (!rows) beta_taps += "  float yr = " + warp_expr(b.axes[0].warp, "r", "") + ";\n" + taps_text("br", "yr", b.axes[0].size);
-  if (!cos_warp) beta_taps += "  float yc = " + warp_expr(b.axes[1].warp, "mu", "r * r") + ";\n";
-  beta_taps += taps_text("bc", cos_warp ? "xc" : "yc", b.axes[1].size);
+  if (!rows)
+    beta_taps += "  float yr = " + warp_expr(b.axes[0].warp, "r", "", true) + ";\n" +
+                 taps_text("br", "yr", b.axes[0].size, warp_in_unit(b.axes[0].warp));
+  if (!cos_warp) beta_taps += "  float yc = " + warp_expr(b.axes[1].warp, "mu", "r * r", true) + ";\n";
+  beta_taps += taps_text("bc", cos_warp ? "xc" : "yc", b.axes[1].size, warp_in_unit(b.axes[1].warp));
   std::ostringstream o;
   o << "struct DspbrGgxMissingBeta {\n  float missing;\n  float beta;\n};\n"
     << "// 1 - E_m(mu; r) (as dspbr_ggx_E_missing) and, unless with_beta is 0 (then 0 and no read of\n"
@@ -115,16 +127,17 @@ std::string ggx_missing_beta_function(const WarpedTable& e, const WarpedTable& b
     << "DspbrGgxMissingBeta dspbr_lut_ggx_missing_beta(float cos_theta, float roughness, int with_beta) {\n"
     << "  float r = clamp(roughness, 0.0f, 1.0f);\n"
     << "  float mu = clamp(cos_theta, 0.0f, 1.0f);\n"
-    << "  float xr = " << warp_expr(e.axes[0].warp, "r", "") << ";\n"
-    << "  float xc = " << warp_expr(e.axes[1].warp, "mu", "r * r") << ";\n"
-    << taps_text("er", "xr", e.axes[0].size) << taps_text("ec", "xc", e.axes[1].size)
+    << "  float xr = " << warp_expr(e.axes[0].warp, "r", "", true) << ";\n"
+    << "  float xc = " << warp_expr(e.axes[1].warp, "mu", "r * r", true) << ";\n"
+    << taps_text("er", "xr", e.axes[0].size, warp_in_unit(e.axes[0].warp))
+    << taps_text("ec", "xc", e.axes[1].size, warp_in_unit(e.axes[1].warp))
     << "  DspbrGgxMissingBeta a;\n"
     << "  a.missing = clamp(" << taps_sum(ident(e) + "_missing_at", {"er", "ec"}) << ", 0.0f, 1.0f);\n"
     << "  a.beta = 0.0f;\n"
     << "  if (with_beta != 0) {\n"
     << std::regex_replace(beta_taps, std::regex("(^|\n)(.)"), "$1  $2")
     << "    float m = 1.0f - mu, m2 = m * m;\n"
-    << "    a.beta = max(m2 * m2 * m + " << taps_sum(ident(b) + "_at", {rows ? "er" : "br", "bc"}) << ", 0.0f);\n"
+    << "    a.beta = dspbr_lut_max0(m2 * m2 * m + " << taps_sum(ident(b) + "_at", {rows ? "er" : "br", "bc"}) << ");\n"
     << "  }\n"
     << "  return a;\n}\n"
     << "// 1 - E_m(mu; r) and beta(mu; r) at once, equal to dspbr_ggx_E_missing and dspbr_ggx_beta: the\n"
@@ -166,8 +179,8 @@ std::string api_functions(const RendererLuts& L) {
     << "  float r = clamp(roughness, 0.0f, 1.0f);\n"
     << "  float mu = clamp(cos_theta, 0.0f, 1.0f);\n"
     << "  float m = 1.0f - mu, m2 = m * m;\n"
-    << "  return max(m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(" << warp_expr(b.axes[0].warp, "r", "") << ", "
-    << warp_expr(b.axes[1].warp, "mu", "r * r") << "), 0.0f);\n}\n"
+    << "  return dspbr_lut_max0(m2 * m2 * m + dspbr_lut_interp_dspbr_GGX_beta(" << warp_expr(b.axes[0].warp, "r", "", true)
+    << ", " << warp_expr(b.axes[1].warp, "mu", "r * r", true) << "));\n}\n"
     << "float dspbr_lut_ggx_B(float cos_theta, float roughness) {\n"
     << "  return dspbr_ggx_beta(cos_theta, roughness) * dspbr_ggx_E(cos_theta, roughness);\n}\n"
     << "// F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = 20/21 f0 + 1/21 f90 (spec eq. multiscatter);\n"
@@ -184,20 +197,23 @@ std::string api_functions(const RendererLuts& L) {
     << "  float em = dspbr_ggx_E(cos_theta, roughness);\n"
     << "  float fms = dspbr_fresnel_ms(f0, 1.0f, dspbr_ggx_E_avg(roughness));\n"
     << "  return f0 * em + (1.0f - f0) * dspbr_lut_ggx_B(cos_theta, roughness) + fms * (1.0f - em);\n}\n"
-    << "// E_avg(r, f0) = f0 E_m,avg + (1 - f0) B_avg + F_ms (1 - E_m,avg).\n"
-    << "float dspbr_base_E_avg(float roughness, float f0_in) {\n"
+    << "// E_avg(r, f0) = f0 E_m,avg + (1 - f0) B_avg + F_ms (1 - E_m,avg), given missing = 1 - E_m,avg(r) (as\n"
+    << "// dspbr_ggx_E_avg_missing(r) gives it, for a caller that reads it anyway: one exponential, not two).\n"
+    << "float dspbr_base_E_avg_given(float roughness, float f0_in, float missing) {\n"
     << "  float f0 = clamp(f0_in, 0.0f, 1.0f);\n"
-    << "  float missing = dspbr_ggx_E_avg_missing(roughness);\n"
     << "  float b_avg = dspbr_lut_interp_dspbr_GGX_B_avg(" << warp_expr(ba.axes[0].warp, "roughness", "") << ");\n"
     << "  return f0 * (1.0f - missing) + (1.0f - f0) * b_avg + dspbr_fresnel_ms(f0, 1.0f, 1.0f - missing) * missing;\n}\n"
+    << "// E_avg(r, f0).\n"
+    << "float dspbr_base_E_avg(float roughness, float f0) {\n"
+    << "  return dspbr_base_E_avg_given(roughness, f0, dspbr_ggx_E_avg_missing(roughness));\n}\n"
     << "// E_b(mu; alpha_b) of the main sheen (Charlie D_b, the spec's Lambda fit).\n"
     << "float dspbr_sheen_E(float cos_theta, float alpha_b) {\n"
-    << "  return max(dspbr_lut_interp_dspbr_Sheen_E(" << warp_expr(s.axes[0].warp, "alpha_b", "") << ", "
-    << warp_expr(s.axes[1].warp, "cos_theta", "") << "), 0.0f);\n}\n"
+    << "  return dspbr_lut_max0(dspbr_lut_interp_dspbr_Sheen_E(" << warp_expr(s.axes[0].warp, "alpha_b", "") << ", "
+    << warp_expr(s.axes[1].warp, "cos_theta", "") << "));\n}\n"
     << "// E_b(mu; alpha_b) of the alternative sheen (visibility 1 / (4 (mu_v + mu_l - mu_v mu_l))).\n"
     << "float dspbr_sheen_ash_E(float cos_theta, float alpha_b) {\n"
-    << "  return max(dspbr_lut_interp_dspbr_Sheen_ash_E(" << warp_expr(sa.axes[0].warp, "alpha_b", "") << ", "
-    << warp_expr(sa.axes[1].warp, "cos_theta", "") << "), 0.0f);\n}\n"
+    << "  return dspbr_lut_max0(dspbr_lut_interp_dspbr_Sheen_ash_E(" << warp_expr(sa.axes[0].warp, "alpha_b", "") << ", "
+    << warp_expr(sa.axes[1].warp, "cos_theta", "") << "));\n}\n"
     << "// M_r,ms / F_ms = (1 - E_m(mu_v)) (1 - E_m(mu_l)) / (pi (1 - E_m,avg)); 0 when 1 - E_m,avg <= 1e-9.\n"
     << "float dspbr_ms_lobe(float cos_v, float cos_l, float roughness) {\n"
     << "  float missing = dspbr_ggx_E_avg_missing(roughness);\n"
@@ -230,10 +246,14 @@ std::string api_functions(const RendererLuts& L) {
 const char* kHelpers =
     "// NaN-safe clamp: NaN maps to lo (every comparison with NaN is false), +-inf to the nearer end.\n"
     "float dspbr_lut_clampf(float x, float lo, float hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }\n"
-    "// ggx_cos warp x = t^p: t = mu / (mu + alpha sqrt(1 - mu^2)) (t = 1 when alpha = 0).\n"
+    "// x where positive, else 0 (NaN too), alike in every dialect: the max of GLSL and HLSL leaves NaN\n"
+    "// undefined, and C's fmaxf is a library call.\n"
+    "float dspbr_lut_max0(float x) { return x > 0.0f ? x : 0.0f; }\n"
+    "// ggx_cos warp x = t^p: t = mu / (mu + alpha sqrt(1 - mu^2)) (t = 1 when alpha = 0); 1 - mu^2 >= 0\n"
+    "// exactly for mu in [0, 1] (mu^2 rounds to at most 1).\n"
     "float dspbr_lut_ggx_cos_t(float cos_theta, float alpha) {\n"
     "  float mu = clamp(cos_theta, 0.0f, 1.0f);\n"
-    "  float d = mu + alpha * sqrt(max(1.0f - mu * mu, 0.0f));\n"
+    "  float d = mu + alpha * sqrt(1.0f - mu * mu);\n"
     "  return d > 0.0f ? mu / d : 1.0f;\n"
     "}\n";
 

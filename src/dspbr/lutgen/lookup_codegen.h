@@ -15,6 +15,8 @@
 //   float dspbr_ggx_beta(float cos_theta, float roughness)         beta = B / E_m (Schlick moment)
 //   float dspbr_base_E(float cos_theta, float roughness, float f0) E (Base_E)
 //   float dspbr_base_E_avg(float roughness, float f0)              E_avg (Base_E_avg)
+//   float dspbr_base_E_avg_given(float roughness, float f0, float missing)   the same, given
+//                                                                  missing = 1 - E_m,avg(roughness)
 //   float dspbr_sheen_E(float cos_theta, float alpha_b)            E_b, main sheen
 //   float dspbr_sheen_ash_E(float cos_theta, float alpha_b)        E_b, alternative sheen
 //   float dspbr_fresnel_ms(float f0, float f90, float e_avg)       F_ms (per colour channel)
