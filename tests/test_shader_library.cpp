@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -384,6 +386,36 @@ TEST(ShaderLibrary, CoreFrameSkippedOnlyWhereItIsTheIdentity) {
   Material rotated;
   rotated.anisotropy = 0.5, rotated.anisotropyRotation = 0.25;
   EXPECT_FALSE(shader_test::ShaderBsdf(rotated, BsdfOptions{}).prepared().core_is_frame);
+}
+
+TEST(ShaderLibrary, InteropFloorAndCeilAsTheLibrarys) {
+  // The C++ interop's floor and ceil go through the conversion to int (no library call): the same
+  // bits as std::floor and std::ceil for every kind of float: zeros of both signs, fractions either
+  // side of them, integers, the ends of the exact range 2^23, denormals, the largest floats, +-inf
+  // and NaN, and 2,000,000 random bit patterns.
+  auto bits = [](float x) {
+    std::uint32_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  };
+  auto same = [&](float got, float want) { return std::isnan(want) ? std::isnan(got) : bits(got) == bits(want); };
+  std::vector<float> xs = {0.0f, -0.0f, 0.5f, -0.5f, 0.99999994f, -0.99999994f, 1.0f, -1.0f, 1.5f, -1.5f, 2.0f, -2.5f,
+                           8388607.5f, -8388607.5f, 8388608.0f, -8388608.0f, 8388609.0f, 16777217.0f, 1e-45f, -1e-45f,
+                           1e-38f, -1e-38f, 3.4e38f, -3.4e38f, INFINITY, -INFINITY, NAN, 2147483648.0f, -2147483648.0f};
+  Pcg32 rng(41, 3);
+  for (int i = 0; i < 2000000; ++i) {
+    const std::uint32_t b = rng.next_u32();
+    float x;
+    std::memcpy(&x, &b, sizeof x);
+    xs.push_back(i % 2 ? x : float(rng.next_double() * 200 - 100));  // half of them near the integers that matter
+  }
+  int differ = 0;
+  for (float x : xs) {
+    if (!same(dspbr_shader::floor(x), std::floor(x)) || !same(dspbr_shader::ceil(x), std::ceil(x))) {
+      if (++differ <= 5) ADD_FAILURE() << "x = " << x << ": floor " << dspbr_shader::floor(x) << ", ceil " << dspbr_shader::ceil(x);
+    }
+  }
+  EXPECT_EQ(differ, 0);
 }
 
 TEST(ShaderLibrary, ThinFilmInFourierSpaceAsTheQuadrature) {

@@ -4,6 +4,8 @@
 // of one flake and the flip-flop tint. The 64-bit arithmetic of the generator is written with two
 // 32-bit words (the common subset has no 64-bit integers); the random numbers keep 24 bits.
 
+// The 64-bit words and their arithmetic (the C++ interop has them natively: DSPBR_NATIVE_U64).
+#ifndef DSPBR_NATIVE_U64
 struct DspbrU64 {
   uint hi;
   uint lo;
@@ -25,7 +27,7 @@ DSPBR_FN DspbrU64 dspbr_u64_shr(DspbrU64 a, uint n) {
   return dspbr_u64(a.hi >> n, (a.lo >> n) | (a.hi << (32u - n)));
 }
 // The full 64-bit product of two 32-bit words (the interop's dspbr_umul_extended: GLSL's
-// umulExtended, a native 64-bit product in C++, 16-bit halves in HLSL).
+// umulExtended, 16-bit halves in HLSL).
 DSPBR_FN DspbrU64 dspbr_mul32(uint a, uint b) {
   DspbrU64 r;
   dspbr_umul_extended(a, b, r.hi, r.lo);
@@ -37,6 +39,8 @@ DSPBR_FN DspbrU64 dspbr_u64_mul(DspbrU64 a, DspbrU64 b) {
   m.hi += a.hi * b.lo + a.lo * b.hi;
   return m;
 }
+#endif
+
 // SplitMix64 (Steele et al. 2014).
 DSPBR_FN DspbrU64 dspbr_splitmix64(DspbrU64 x) {
   x = dspbr_u64_add(x, dspbr_u64(0x9e3779b9u, 0x7f4a7c15u));

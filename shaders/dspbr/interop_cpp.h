@@ -38,8 +38,20 @@ inline float log(float x) { return std::log(x); }
 inline float sin(float x) { return std::sin(x); }
 inline float cos(float x) { return std::cos(x); }
 inline float acos(float x) { return std::acos(x); }
-inline float floor(float x) { return std::floor(x); }
-inline float ceil(float x) { return std::ceil(x); }
+// floor and ceil without a library call (the x86-64 baseline has no rounding instruction, and
+// std::floor is a call there): by the conversion to int, exact below 2^23 in magnitude; every larger
+// float, +-inf and NaN is its own floor. The same values as std::floor / std::ceil, the sign of a
+// zero result included (x * 0 is -0 for x in (-1, -0], +0 for x in [0, 1)).
+inline float floor(float x) {
+  if (!(std::fabs(x) < 8388608.0f)) return x;
+  const float t = float(int(x));  // towards zero
+  return t > x ? t - 1.0f : (t == 0.0f ? x * 0.0f : t);
+}
+inline float ceil(float x) {
+  if (!(std::fabs(x) < 8388608.0f)) return x;
+  const float t = float(int(x));
+  return t < x ? t + 1.0f : (t == 0.0f ? x * 0.0f : t);
+}
 // GLSL min/max/clamp: for a NaN argument the result is unspecified in GLSL; the body never relies
 // on it (shaders/README.md, "NaN and Inf").
 inline float min(float a, float b) { return b < a ? b : a; }
@@ -58,12 +70,25 @@ inline vec3 cross(vec3 a, vec3 b) {
 inline float length(vec3 a) { return std::sqrt(dot(a, a)); }
 inline vec3 normalize(vec3 a) { return a / length(a); }
 inline bool isnan(float x) { return std::isnan(x); }
-// GLSL's umulExtended: the 64-bit product of two 32-bit words as its high and low words.
-inline void dspbr_umul_extended(uint a, uint b, uint& hi, uint& lo) {
-  const unsigned long long p = (unsigned long long)a * b;
-  hi = uint(p >> 32u);
-  lo = uint(p);
+// The flakes' 64-bit generator words (flakes.glsl: two 32-bit words, for GLSL and HLSL, which have
+// no 64-bit integers) in native 64-bit arithmetic: the same values in a third of the instructions.
+#define DSPBR_NATIVE_U64 1
+struct DspbrU64 {
+  uint hi;
+  uint lo;
+};
+inline unsigned long long dspbr_u64_bits(DspbrU64 a) { return ((unsigned long long)a.hi << 32u) | a.lo; }
+inline DspbrU64 dspbr_u64_of_bits(unsigned long long v) {
+  DspbrU64 r;
+  r.hi = uint(v >> 32u);
+  r.lo = uint(v);
+  return r;
 }
+inline DspbrU64 dspbr_u64(uint hi, uint lo) { return dspbr_u64_of_bits(((unsigned long long)hi << 32u) | lo); }
+inline DspbrU64 dspbr_u64_add(DspbrU64 a, DspbrU64 b) { return dspbr_u64_of_bits(dspbr_u64_bits(a) + dspbr_u64_bits(b)); }
+inline DspbrU64 dspbr_u64_xor(DspbrU64 a, DspbrU64 b) { return dspbr_u64_of_bits(dspbr_u64_bits(a) ^ dspbr_u64_bits(b)); }
+inline DspbrU64 dspbr_u64_shr(DspbrU64 a, uint n) { return dspbr_u64_of_bits(dspbr_u64_bits(a) >> n); }  // 0 < n < 64
+inline DspbrU64 dspbr_u64_mul(DspbrU64 a, DspbrU64 b) { return dspbr_u64_of_bits(dspbr_u64_bits(a) * dspbr_u64_bits(b)); }
 inline bool isinf(float x) { return std::isinf(x); }
 
 }  // namespace dspbr_shader
