@@ -216,8 +216,11 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DSPBR_IN(DspbrMaterial) m, DspbrFrame frame, DS
       b.lobes |= 1u << uint(DSPBR_LOBE_CORE_REFLECTION);
       if (mirror) b.delta |= 1u << uint(DSPBR_LOBE_CORE_REFLECTION);
     }
-    // M_r,ms F_ms (spec eq. multiscatter); none for a mirror (E_m = 1).
-    float missing_m = dspbr_ggx_E_avg_missing(b.r_uv);
+    // M_r,ms F_ms (spec eq. multiscatter); none for a mirror (E_m = 1). 1 - E_m,avg is read for this
+    // lobe and for B_c's normalisation below: a smooth metal or glass reads no table here (its 0 is
+    // read by nothing).
+    bool bc_needed = DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && b.w_opaque > 0.0f;
+    float missing_m = !mirror || bc_needed ? dspbr_ggx_E_avg_missing(b.r_uv) : 0.0f;
     float e_avg = 1.0f - missing_m;  // dspbr_ggx_E_avg
     b.f_ms = dspbr_fresnel_ms3(b.rho_sr0, b.rho_sr90, dspbr_clamp_nan(e_avg, 0.0f, 1.0f));
     b.ms_inv_norm = missing_m > dspbr_min_missing_energy ? 1.0f / (dspbr_pi * missing_m) : 0.0f;
@@ -232,7 +235,7 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DSPBR_IN(DspbrMaterial) m, DspbrFrame frame, DS
     }
     // B_c's normalisation (reads GGX_B_avg: only for an opaque dielectric part, compiled in), from the
     // 1 - E_m,avg read above.
-    float missing_b = DSPBR_HAS_OPAQUE_DIELECTRIC != 0 && b.w_opaque > 0.0f ? 1.0f - dspbr_base_E_avg_given(b.r_uv, b.f0_max, missing_m) : 0.0f;
+    float missing_b = bc_needed ? 1.0f - dspbr_base_E_avg_given(b.r_uv, b.f0_max, missing_m) : 0.0f;
     b.fms_base = dspbr_fresnel_ms(b.f0_max, 1.0f, e_avg);
     b.diffuse_inv_norm = missing_b > dspbr_min_missing_energy ? 1.0f / (dspbr_pi * missing_b) : 0.0f;
     if (b.w_opaque > 0.0f && dspbr_max3(b.rho_d) > 0.0f) b.lobes |= 1u << uint(DSPBR_LOBE_DIFFUSE);
