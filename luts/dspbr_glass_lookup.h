@@ -4595,8 +4595,8 @@ static inline float dspbr_glass_f0(float ior) {
 static inline float dspbr_glass_E(float cos_theta, float roughness, float ior, int inside) {
   float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
   float mu = dspbr_lut_clampf(cos_theta, 0.0f, 1.0f);
-  return inside != 0 ? dspbr_lut_interp_dspbr_Glass_inv_E(dspbr_lut_glass_ior_warp(ior, mu, 1.0f), dspbr_lut_clampf(r, 0.0f, 1.0f), powf(dspbr_lut_ggx_cos_t(mu, r * r), 0.600000024f))
-                     : dspbr_lut_interp_dspbr_Glass_E(dspbr_lut_glass_ior_warp(ior, mu, 1.0f), dspbr_lut_clampf(r, 0.0f, 1.0f), powf(dspbr_lut_ggx_cos_t(mu, r * r), 0.600000024f));
+  return inside != 0 ? dspbr_lut_interp_dspbr_Glass_inv_E(dspbr_lut_glass_ior_warp(ior, mu, 1.0f), r, powf(dspbr_lut_ggx_cos_t(mu, r * r), 0.600000024f))
+                     : dspbr_lut_interp_dspbr_Glass_E(dspbr_lut_glass_ior_warp(ior, mu, 1.0f), r, powf(dspbr_lut_ggx_cos_t(mu, r * r), 0.600000024f));
 }
 // 2 Integral E_g mu dmu (the cosine average of dspbr_glass_E).
 static inline float dspbr_glass_E_avg(float roughness, float ior, int inside) {

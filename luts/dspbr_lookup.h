@@ -972,7 +972,7 @@ static inline DspbrGgxMissingBeta dspbr_ggx_E_missing_beta(float cos_theta, floa
 // here, in beta and in the sheen albedos, so that every albedo composed from them is >= 0.
 static inline float dspbr_ggx_E(float cos_theta, float roughness) {
   float r = dspbr_lut_clampf(roughness, 0.0f, 1.0f);
-  return dspbr_lut_clampf(dspbr_lut_interp_dspbr_GGX_E(dspbr_lut_clampf(r, 0.0f, 1.0f), sqrtf(dspbr_lut_ggx_cos_t(cos_theta, r * r))), 0.0f, 1.0f);
+  return dspbr_lut_clampf(dspbr_lut_interp_dspbr_GGX_E(r, sqrtf(dspbr_lut_ggx_cos_t(cos_theta, r * r))), 0.0f, 1.0f);
 }
 // 1 - E_m(mu; r), in [0, 1], to full float precision where E_m is near 1 (1 - dspbr_ggx_E keeps about
 // 1e-7 absolute: at roughness ~1e-3 that is all of 1 - E_m near normal incidence).

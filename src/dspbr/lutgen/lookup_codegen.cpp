@@ -164,7 +164,7 @@ std::string api_functions(const RendererLuts& L) {
     << "// here, in beta and in the sheen albedos, so that every albedo composed from them is >= 0.\n"
     << "float dspbr_ggx_E(float cos_theta, float roughness) {\n"
     << "  float r = clamp(roughness, 0.0f, 1.0f);\n"
-    << "  return clamp(dspbr_lut_interp_dspbr_GGX_E(" << warp_expr(e.axes[0].warp, "r", "") << ", "
+    << "  return clamp(dspbr_lut_interp_dspbr_GGX_E(" << warp_expr(e.axes[0].warp, "r", "", true) << ", "
     << warp_expr(e.axes[1].warp, "cos_theta", "r * r") << "), 0.0f, 1.0f);\n}\n"
     << "// 1 - E_m(mu; r), in [0, 1], to full float precision where E_m is near 1 (1 - dspbr_ggx_E keeps about\n"
     << "// 1e-7 absolute: at roughness ~1e-3 that is all of 1 - E_m near normal incidence).\n"
@@ -281,7 +281,7 @@ std::string glass_api_functions(const RendererLuts& L) {
   std::ostringstream o;
   auto e_call = [&](const char* id) {
     return fmt::format("dspbr_lut_interp_{}({}, {}, {})", id, warp_expr(e.axes[0].warp, "ior", "mu"),
-                       warp_expr(e.axes[1].warp, "r", ""), warp_expr(e.axes[2].warp, "mu", "r * r"));
+                       warp_expr(e.axes[1].warp, "r", "", true), warp_expr(e.axes[2].warp, "mu", "r * r"));
   };
   auto avg_call = [&](const char* id) {
     return fmt::format("dspbr_lut_interp_{}({}, {})", id, warp_expr(ea.axes[0].warp, "xf", ""),
