@@ -91,7 +91,16 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
     COMMAND ${DSPBR_GLSLANG_VK} ${_sl_hlsl_args} -DDSPBR_TEST_SAMPLES_ONLY -o ${_sl_chi2_hlsl} ${_sl}/conformance.hlsl
     DEPENDS ${_sl_kernel_sources}
     COMMENT "glslangValidator: the shader library's chi-square kernels (GLSL, HLSL)" VERBATIM)
-  add_custom_target(shader_conformance_kernels ALL DEPENDS ${_sl_glsl} ${_sl_hlsl} ${_sl_chi2_glsl} ${_sl_chi2_hlsl})
+  # The stability scan's kernels: modes 4 and 5 alone (DSPBR_TEST_STABILITY).
+  set(_sl_stab_glsl ${PROJECT_BINARY_DIR}/shader_stability_glsl.spv)
+  set(_sl_stab_hlsl ${PROJECT_BINARY_DIR}/shader_stability_hlsl.spv)
+  add_custom_command(OUTPUT ${_sl_stab_glsl} ${_sl_stab_hlsl}
+    COMMAND ${DSPBR_GLSLANG_VK} -V -DDSPBR_TEST_STABILITY ${_sl_inc} -o ${_sl_stab_glsl} ${_sl}/conformance.comp
+    COMMAND ${DSPBR_GLSLANG_VK} ${_sl_hlsl_args} -DDSPBR_TEST_STABILITY -o ${_sl_stab_hlsl} ${_sl}/conformance.hlsl
+    DEPENDS ${_sl_kernel_sources}
+    COMMENT "glslangValidator: the shader library's stability kernels (GLSL, HLSL)" VERBATIM)
+  add_custom_target(shader_conformance_kernels ALL DEPENDS ${_sl_glsl} ${_sl_hlsl} ${_sl_chi2_glsl} ${_sl_chi2_hlsl}
+                    ${_sl_stab_glsl} ${_sl_stab_hlsl})
   # No warning from either front end (glslang prints "WARNING:" lines and still succeeds).
   string(REPLACE ";" " " _sl_inc_cmd "${_sl_inc}")
   add_test(NAME shader_glsl_compile
@@ -133,9 +142,38 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
     set_tests_properties(shader_${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900
                          ENVIRONMENT "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}")
   endforeach()
+  # The validation's stability scan with every eval, pdf and sample on the device.
+  add_executable(shader_vk_stability ${_sl}/shader_vk_stability.cpp)
+  target_link_libraries(shader_vk_stability PRIVATE dspbr_shader_test dspbr_vulkan dspbr_validate)
+  target_compile_options(shader_vk_stability PRIVATE -Wall -Wextra)
+  add_dependencies(shader_vk_stability shader_conformance_kernels)
+  foreach(lang glsl hlsl)
+    add_test(NAME shader_${lang}_stability
+             COMMAND shader_vk_stability ${PROJECT_BINARY_DIR}/shader_stability_${lang}.spv ${PROJECT_SOURCE_DIR}/luts ${lang})
+    set_tests_properties(shader_${lang}_stability PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900
+                         ENVIRONMENT "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}")
+  endforeach()
+  # Its power: the GLSL kernel compiled against a copy of the library with a planted mistake
+  # (stability_mistakes.json: no horizon test, so that NaN directions reach the lobes) must fail the
+  # scan (exit 1) on an eighth of the materials (it failed 71 of 95).
+  set(_st_dir ${PROJECT_BINARY_DIR}/stability-mistakes)
+  set(_st_spv ${PROJECT_BINARY_DIR}/shader_stability_planted.spv)
+  add_custom_command(OUTPUT ${_st_spv}
+    COMMAND /usr/bin/python3 ${_sl}/seed_mistakes.py ${PROJECT_SOURCE_DIR}/shaders ${_sl}/stability_mistakes.json ${_st_dir}
+    COMMAND ${DSPBR_GLSLANG_VK} -V -DDSPBR_TEST_STABILITY -I${_st_dir}/horizon_guard ${_sl_inc} -o ${_st_spv}
+            ${_sl}/conformance.comp
+    DEPENDS ${_sl_kernel_sources} ${_sl}/seed_mistakes.py ${_sl}/stability_mistakes.json
+    COMMENT "glslangValidator: the stability kernel over a planted mistake" VERBATIM)
+  add_custom_target(shader_stability_planted_kernel ALL DEPENDS ${_st_spv})
+  add_dependencies(shader_vk_stability shader_stability_planted_kernel)
+  add_test(NAME shader_glsl_stability_power
+           COMMAND sh -c "'$<TARGET_FILE:shader_vk_stability>' '${_st_spv}' '${PROJECT_SOURCE_DIR}/luts' planted 0/8; \
+rc=$?; [ $rc -eq 77 ] && exit 77; [ $rc -eq 1 ]")
+  set_tests_properties(shader_glsl_stability_power PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900
+                       ENVIRONMENT "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}")
 else()
   foreach(t shader_glsl_compile shader_hlsl_compile shader_glsl_conformance shader_hlsl_conformance shader_glsl_chi2_1
-            shader_glsl_chi2_2 shader_hlsl_chi2)
+            shader_glsl_chi2_2 shader_hlsl_chi2 shader_glsl_stability shader_hlsl_stability shader_glsl_stability_power)
     add_test(NAME ${t} COMMAND ${CMAKE_COMMAND} -E echo "Vulkan or glslangValidator not found: ${t} not run")
     set_tests_properties(${t} PROPERTIES DISABLED TRUE)
   endforeach()

@@ -3,7 +3,8 @@
 
 usage: seed_mistakes.py SHADERS_DIR MISTAKES_JSON OUT_DIR
 
-OUT_DIR/NAME/ gets dspbr.h and dspbr/*.glsl|*.h|*.hlsl of SHADERS_DIR with the namespace
+OUT_DIR/NAME/ gets the entries dspbr.h, dspbr.glsl, dspbr.hlsl and dspbr/*.glsl|*.h|*.hlsl of
+SHADERS_DIR (so that a GLSL or HLSL kernel compiles against the copy too) with the namespace
 dspbr_shader renamed dspbr_seeded_NAME (each copy compiles into its own namespace, so that the
 copies and the library link into one program without two bodies for one inline function) and the
 mistake's patches applied: "find" must occur exactly once in its file, "append" adds text at the
@@ -24,7 +25,7 @@ def write_if_changed(path, text):
 
 def seeded_copy(shaders, mistake, out):
     name = mistake["name"]
-    files = {"dspbr.h": (shaders / "dspbr.h").read_text()}
+    files = {entry: (shaders / entry).read_text() for entry in ("dspbr.h", "dspbr.glsl", "dspbr.hlsl")}
     for p in sorted((shaders / "dspbr").iterdir()):
         if p.is_file():
             files["dspbr/" + p.name] = p.read_text()

@@ -1,0 +1,246 @@
+// The validation's stability scan (src/dspbr/validate/stability.h) of the shader library on a
+// Vulkan device (Mesa's lavapipe without a GPU): every eval, pdf and sample the scan makes is
+// computed by the kernel (conformance.comp or .hlsl with DSPBR_TEST_STABILITY: modes 4 and 5 of
+// kernel_common.glsl), and the scan's own code counts NaN, Inf, negative values and sampled
+// directions that are not unit. The materials are those `dspbr validate` scans the library's C++
+// compile on ("shader library: stability", apps/dspbr/validate_shader_library.cpp): every corner of
+// the validation's catalog and one random material in four, with the same 300 random directions.
+// On top, per material, views and lights that are NaN, +-Inf, zero or not unit: f and pdf must be
+// finite and non-negative and a sample invalid or finite.
+//   shader_vk_stability KERNEL.spv LUT_DIR LABEL [K/N]
+// (K/N: the materials whose index is K modulo N; all by default.)
+// The scan runs twice: the first records its queries (answering 0 and no sample), the device
+// answers them all in two dispatches per material, and the second is the verdict.
+// Exit 0: no failure; 1: a failure (each material's counts printed); 2: bad arguments or a Vulkan
+// error; 77: no Vulkan device.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "dspbr/bsdf/material_bsdf.h"
+#include "dspbr/shader/material_mapping.h"
+#include "dspbr/validate/catalog.h"
+#include "dspbr/validate/stability.h"
+#include "dspbr/vulkan/vk_compute.h"
+#include "shader_material.h"
+
+namespace {
+
+using dspbr::Vec3;
+using Key = std::array<uint64_t, 6>;
+struct KeyHash {
+  std::size_t operator()(const Key& k) const {
+    std::size_t h = 0;
+    for (uint64_t x : k) h = h * 0x9E3779B97F4A7C15ull ^ (x + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2));
+    return h;
+  }
+};
+Key key_of(const Vec3& a, const Vec3& b) {
+  Key k;
+  const double d[6] = {a.x, a.y, a.z, b.x, b.y, b.z};
+  std::memcpy(k.data(), d, sizeof d);
+  return k;
+}
+
+struct Query {
+  Vec3 v, w;
+};
+
+// The device's answers by their inputs; before answer() it records the queries and answers 0 and
+// no sample (the scan's first round, whose counts are not the verdict).
+class DeviceBsdf : public dspbr::Bsdf {
+ public:
+  dspbr::Rgb eval(const Vec3& v, const Vec3& l) const override { return value(v, l).f; }
+  double pdf(const Vec3& v, const Vec3& l) const override { return value(v, l).pdf; }
+  dspbr::BsdfSample sample(const Vec3& v, const Vec3& u) const override {
+    const auto it = samples_.find(key_of(v, u));
+    if (it != samples_.end()) return it->second;
+    if (!recording_) ++unanswered_;
+    else if (pending_sample_keys_.emplace(key_of(v, u), 0).second) pending_samples_.push_back({v, u});
+    return dspbr::BsdfSample{};
+  }
+  uint32_t flags() const override { return 0; }
+
+  bool recording() const { return recording_; }
+  std::vector<Query> take_evals() { return std::move(pending_evals_); }
+  std::vector<Query> take_samples() { return std::move(pending_samples_); }
+  void answer_eval(const Query& q, const dspbr::Rgb& f, double pdf) { evals_[key_of(q.v, q.w)] = {f, pdf}; }
+  void answer_sample(const Query& q, const dspbr::BsdfSample& s) { samples_[key_of(q.v, q.w)] = s; }
+  // After the answers: a query not answered is an error of this harness, not of the library.
+  void stop_recording() { recording_ = false; }
+  std::size_t unanswered() const { return unanswered_; }
+
+ private:
+  struct Value {
+    dspbr::Rgb f;
+    double pdf = 0;
+  };
+  Value value(const Vec3& v, const Vec3& l) const {
+    const auto it = evals_.find(key_of(v, l));
+    if (it != evals_.end()) return it->second;
+    if (recording_) {
+      if (pending_eval_keys_.emplace(key_of(v, l), 0).second) pending_evals_.push_back({v, l});
+    } else {
+      ++unanswered_;
+    }
+    return {};
+  }
+  bool recording_ = true;
+  mutable std::size_t unanswered_ = 0;
+  std::unordered_map<Key, Value, KeyHash> evals_;
+  std::unordered_map<Key, dspbr::BsdfSample, KeyHash> samples_;
+  mutable std::unordered_map<Key, int, KeyHash> pending_eval_keys_, pending_sample_keys_;
+  mutable std::vector<Query> pending_evals_, pending_samples_;
+};
+
+bool finite_non_negative(double x) { return std::isfinite(x) && x >= 0; }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  unsigned part = 0, parts = 1;
+  char end = 0;
+  if ((argc != 4 && argc != 5) ||
+      (argc == 5 && (std::sscanf(argv[4], "%u/%u%c", &part, &parts, &end) != 2 || parts < 1 || part >= parts))) {
+    std::fprintf(stderr, "usage: shader_vk_stability KERNEL.spv LUT_DIR LABEL [K/N] (K < N: the materials K modulo N)\n");
+    return 2;
+  }
+  const char* label = argv[3];
+  try {
+    vk_compute::Device device("dspbr shader stability");
+    if (!device.has_device()) {
+      std::printf("no Vulkan device: skipped\n");
+      return 77;
+    }
+    std::printf("%s on %s\n", label, device.device_name().c_str());
+    const std::vector<uint32_t> spirv = vk_compute::read_spirv(argv[1]);
+    const std::vector<vk_compute::TableImage> textures = vk_compute::read_lookup_textures(argv[2], false);
+    // The materials of the validation's "shader library: stability" (validate_shader_library.cpp).
+    struct Case {
+      std::string name;
+      dspbr::Material material;
+      dspbr::BsdfOptions options;
+    };
+    std::vector<Case> cases;
+    {
+      const dspbr::validate::Catalog catalog = dspbr::validate::dspbr_catalog({});
+      std::size_t random = 0;
+      for (const dspbr::validate::StabilityCase& c : catalog.stability) {
+        if (!c.material || c.options.transmission_compensation) continue;
+        if (c.component == "random materials" && random++ % 4 != 0) continue;
+        cases.push_back({c.component + " / " + c.corner, *c.material, c.options});
+      }
+    }
+    // Inputs no direction should be: NaN, +-Inf, zero, not unit (each against a plain direction).
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    const Vec3 plain{0.3, 0.2, 0.9};
+    const std::vector<Vec3> bad = {{nan, 0, 1}, {0, 0, nan}, {inf, 0, 1}, {0, 0, -inf}, {0, 0, 0}, {0, 0, 1e-30}, {3, 4, 12}};
+    std::vector<Query> bad_pairs;
+    for (const Vec3& b : bad) bad_pairs.push_back({b, plain}), bad_pairs.push_back({plain, b});
+    // One dispatch of `mode` over the queries after the material's record.
+    auto dispatch = [&](const Case& c, const std::vector<Query>& qs, uint32_t mode, std::size_t floats) {
+      std::vector<float> records(shader_test::kRecordFloats + 6 * qs.size());
+      dspbr::shader::pack_shader_inputs(c.material, c.options, Vec3{0, 0, 1}, Vec3{0, 0, 1}, records.data());
+      for (std::size_t k = 0; k < qs.size(); ++k)
+        for (int i = 0; i < 3; ++i) {
+          records[shader_test::kRecordFloats + 6 * k + i] = float(qs[k].v[i]);
+          records[shader_test::kRecordFloats + 6 * k + 3 + i] = float(qs[k].w[i]);
+        }
+      const uint32_t push[2] = {uint32_t(qs.size()), mode};
+      vk_compute::Job job;
+      job.spirv = &spirv;
+      job.input = records.data();
+      job.input_bytes = records.size() * sizeof(float);
+      job.output_floats = qs.size() * floats;
+      job.textures = &textures;
+      job.texture_binding = 2;
+      job.push = push;
+      job.push_bytes = sizeof push;
+      job.groups[0] = (push[0] + 63) / 64;
+      return device.run(job);
+    };
+    dspbr::validate::StabilitySettings settings;
+    settings.random_directions = 300;  // the full validation's (src/dspbr/validate/suite.cpp)
+    dspbr::validate::StabilityCounts total;
+    std::size_t failed = 0, bad_failed = 0, checked = 0;
+    std::size_t worst = cases.size();  // the material of the largest sample weight
+    for (std::size_t i = part; i < cases.size(); i += parts) {
+      const Case& c = cases[i];
+      DeviceBsdf dev;
+      settings.stream = i;
+      dspbr::validate::stability_scan(dev, settings);  // records
+      std::vector<Query> evals = dev.take_evals();
+      evals.insert(evals.end(), bad_pairs.begin(), bad_pairs.end());
+      const std::vector<Query> samples = dev.take_samples();
+      const std::vector<float> e = dispatch(c, evals, 4, 4);
+      for (std::size_t k = 0; k < evals.size(); ++k)
+        dev.answer_eval(evals[k], dspbr::Rgb(e[4 * k], e[4 * k + 1], e[4 * k + 2]), e[4 * k + 3]);
+      std::vector<Query> all_samples = samples;
+      for (const Query& q : bad_pairs) all_samples.push_back(q);  // (bad v, u) and (v, bad u)
+      const std::vector<float> s = dispatch(c, all_samples, 5, 9);
+      for (std::size_t k = 0; k < all_samples.size(); ++k) {
+        const float* o = &s[9 * k];
+        dspbr::BsdfSample x;
+        x.valid = o[0] > 0.5f;
+        x.l = {o[1], o[2], o[3]};
+        x.weight = dspbr::Rgb(o[4], o[5], o[6]);
+        x.pdf = o[7];
+        x.flags = uint32_t(o[8]);
+        dev.answer_sample(all_samples[k], x);
+      }
+      dev.stop_recording();
+      const dspbr::validate::StabilityCounts st = dspbr::validate::stability_scan(dev, settings);  // the verdict
+      if (st.max_weight > total.max_weight) worst = i;
+      total += st;
+      ++checked;
+      // The inputs no direction should be: no value may be NaN, Inf or negative, a sample not valid
+      // unless finite.
+      std::size_t bad_here = 0;
+      for (const Query& q : bad_pairs) {
+        const dspbr::Rgb f = dev.eval(q.v, q.w);
+        for (int k = 0; k < 3; ++k) bad_here += !finite_non_negative(f[k]);
+        bad_here += !finite_non_negative(dev.pdf(q.v, q.w));
+        const dspbr::BsdfSample x = dev.sample(q.v, q.w);
+        if (x.valid)
+          bad_here += !finite_non_negative(x.pdf) || !std::isfinite(x.l.x + x.l.y + x.l.z) ||
+                      !finite_non_negative(x.weight[0]) || !finite_non_negative(x.weight[1]) ||
+                      !finite_non_negative(x.weight[2]);
+      }
+      if (dev.unanswered() > 0) throw std::runtime_error(c.name + ": queries the device did not answer");
+      if (st.total_failures() > 0 || bad_here > 0) {
+        ++failed;
+        bad_failed += bad_here;
+        std::printf("%s FAIL %s: %zu NaN, %zu Inf, %zu negative, %zu directions not unit; %zu bad values for "
+                    "non-finite or non-unit inputs\n",
+                    label, c.name.c_str(), st.nan, st.inf, st.negative, st.bad_direction, bad_here);
+      }
+    }
+    std::printf("%s: stability scan on the device, %zu of %zu materials clean (%zu evaluations: %zu NaN, %zu Inf, "
+                "%zu negative, %zu directions not unit; %zu bad values for non-finite or non-unit inputs)\n",
+                label, checked - failed, checked, total.evaluations, total.nan, total.inf, total.negative,
+                total.bad_direction, bad_failed);
+    if (worst < cases.size()) {
+      // The largest weight (a firefly, not a failure: docs/validation.md) beside the reference's
+      // (double) for the same view and random numbers.
+      const Vec3 &v = total.max_weight_v, &u = total.max_weight_u;
+      const dspbr::BsdfSample ref = dspbr::MaterialBsdf(cases[worst].material, dspbr::LutSet::builtin(), cases[worst].options).sample(v, u);
+      std::printf("%s: largest sample weight %.3g: %s at v (%.9g, %.9g, %.9g), u (%.9g, %.9g, %.9g); the reference's "
+                  "there %.3g\n",
+                  label, total.max_weight, cases[worst].name.c_str(), v.x, v.y, v.z, u.x, u.y, u.z,
+                  ref.valid ? std::max({ref.weight[0], ref.weight[1], ref.weight[2]}) : 0.0);
+    }
+    return failed == 0 ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shader_vk_stability: %s\n", e.what());
+    return 2;
+  }
+}
