@@ -2,10 +2,13 @@
 // path tracer pays it: prepare + eval, prepare alone, eval and sample of a prepared BSDF, for the
 // materials of bench_materials.h, against a bare isotropic GGX reflection eval (D, height-correlated
 // G2, Schlick F) in float in the same run; dspbr_bench_shader_fits: the same over the LUT-free fits
-// (DSPBR_USE_FITS) instead of the tables.
+// (DSPBR_USE_FITS) instead of the tables; dspbr_bench_shader_null: the same with every table read
+// one load (bench/null_tables/dspbr_fits.hpp), the floor under any lookup.
 //   dspbr_bench --benchmark_filter='BM_Shader'
 //   dspbr_bench_shader_fits
-// Ratios and the table: scripts/bench_ratios.py --shader [--bench build/dspbr_bench_shader_fits], docs/renderer.md ("Cost").
+//   dspbr_bench_shader_null
+// Ratios and the table: scripts/bench_ratios.py --shader [--bench build/dspbr_bench_shader_fits | _null],
+// docs/renderer.md ("Cost").
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -98,6 +101,9 @@ void run(benchmark::State& state, int index, What what) {
 }
 
 [[maybe_unused]] const bool registered = [] {
+  // What prepare writes and reads per hit, in the run's context (console header, JSON "context").
+  benchmark::AddCustomContext("sizeof(DspbrBsdf)", std::to_string(sizeof(DspbrBsdf)));
+  benchmark::AddCustomContext("sizeof(DspbrMaterial)", std::to_string(sizeof(DspbrMaterial)));
   benchmark::RegisterBenchmark("BM_Shader/bare_ggx", bare_ggx);
   benchmark::RegisterBenchmark("BM_Shader/thin_film_R", thin_film_R);
   for (int m = 0; m < kMaterials; ++m) {
