@@ -29,7 +29,7 @@
 #include <vector>
 
 #include "shader_material.h"
-#include "dspbr/vulkan/vk_compute.h"
+#include "vk_queries.h"
 
 namespace {
 
@@ -88,9 +88,7 @@ class DeviceBsdf : public dspbr::Bsdf {
 
 int main(int argc, char** argv) {
   unsigned part = 0, parts = 1;
-  char end = 0;
-  if ((argc != 4 && argc != 5) ||
-      (argc == 5 && (std::sscanf(argv[4], "%u/%u%c", &part, &parts, &end) != 2 || parts < 1 || part >= parts))) {
+  if (!shader_test::parse_part(argc, argv, part, parts)) {
     std::fprintf(stderr, "usage: shader_vk_chi2 KERNEL.spv LUT_DIR LABEL [K/N] (K < N: the cases K modulo N)\n");
     return 2;
   }
@@ -106,22 +104,11 @@ int main(int argc, char** argv) {
     // One dispatch of `mode` over the queries w (3 floats each after vector x's record).
     auto dispatch = [&](const dspbr::conformance::Vector& x, const std::vector<dspbr::Vec3>& w, uint32_t mode,
                         std::size_t floats) {
-      std::vector<float> records(shader_test::kRecordFloats + 3 * w.size());
-      shader_test::pack_record(x, records.data());
-      for (std::size_t k = 0; k < w.size(); ++k)
-        for (int c = 0; c < 3; ++c) records[shader_test::kRecordFloats + 3 * k + c] = float(w[k][c]);
-      const uint32_t push[2] = {uint32_t(w.size()), mode};
-      vk_compute::Job job;
-      job.spirv = &spirv;
-      job.input = records.data();
-      job.input_bytes = records.size() * sizeof(float);
-      job.output_floats = w.size() * floats;
-      job.textures = &textures;
-      job.texture_binding = 2;
-      job.push = push;
-      job.push_bytes = sizeof push;
-      job.groups[0] = (push[0] + 63) / 64;
-      return device.run(job);
+      float record[shader_test::kRecordFloats];
+      shader_test::pack_record(x, record);
+      std::vector<float> q;
+      for (const dspbr::Vec3& u : w) q.insert(q.end(), {float(u.x), float(u.y), float(u.z)});
+      return shader_test::run_queries(device, spirv, textures, record, q, 3, mode, floats);
     };
     std::vector<shader_test::Chi2Case> cases;
     const std::vector<shader_test::Chi2Case> all = shader_test::chi2_cases();
@@ -146,16 +133,7 @@ int main(int argc, char** argv) {
         case_queries += us.size();
         if (answered) break;
         const std::vector<float> out = dispatch(x, us, 3, 9);
-        for (std::size_t k = 0; k < us.size(); ++k) {
-          const float* o = &out[9 * k];
-          dspbr::BsdfSample s;
-          s.valid = o[0] > 0.5f;
-          s.l = {o[1], o[2], o[3]};
-          s.weight = dspbr::Rgb(o[4], o[5], o[6]);
-          s.pdf = o[7];
-          s.flags = uint32_t(o[8]);
-          dev.answer(us[k], s);
-        }
+        for (std::size_t k = 0; k < us.size(); ++k) dev.answer(us[k], shader_test::sample_from_floats(&out[9 * k]));
       }
       queries += case_queries;
       if (!answered || !r.passed()) {

@@ -30,8 +30,8 @@
 #include "dspbr/shader/material_mapping.h"
 #include "dspbr/validate/catalog.h"
 #include "dspbr/validate/stability.h"
-#include "dspbr/vulkan/vk_compute.h"
 #include "shader_material.h"
+#include "vk_queries.h"
 
 namespace {
 
@@ -108,9 +108,7 @@ bool finite_non_negative(double x) { return std::isfinite(x) && x >= 0; }
 
 int main(int argc, char** argv) {
   unsigned part = 0, parts = 1;
-  char end = 0;
-  if ((argc != 4 && argc != 5) ||
-      (argc == 5 && (std::sscanf(argv[4], "%u/%u%c", &part, &parts, &end) != 2 || parts < 1 || part >= parts))) {
+  if (!shader_test::parse_part(argc, argv, part, parts)) {
     std::fprintf(stderr, "usage: shader_vk_stability KERNEL.spv LUT_DIR LABEL [K/N] (K < N: the materials K modulo N)\n");
     return 2;
   }
@@ -146,27 +144,13 @@ int main(int argc, char** argv) {
     const std::vector<Vec3> bad = {{nan, 0, 1}, {0, 0, nan}, {inf, 0, 1}, {0, 0, -inf}, {0, 0, 0}, {0, 0, 1e-30}, {3, 4, 12}};
     std::vector<Query> bad_pairs;
     for (const Vec3& b : bad) bad_pairs.push_back({b, plain}), bad_pairs.push_back({plain, b});
-    // One dispatch of `mode` over the queries after the material's record.
+    // One dispatch of `mode` over the queries (v, w) after the material's record.
     auto dispatch = [&](const Case& c, const std::vector<Query>& qs, uint32_t mode, std::size_t floats) {
-      std::vector<float> records(shader_test::kRecordFloats + 6 * qs.size());
-      dspbr::shader::pack_shader_inputs(c.material, c.options, Vec3{0, 0, 1}, Vec3{0, 0, 1}, records.data());
-      for (std::size_t k = 0; k < qs.size(); ++k)
-        for (int i = 0; i < 3; ++i) {
-          records[shader_test::kRecordFloats + 6 * k + i] = float(qs[k].v[i]);
-          records[shader_test::kRecordFloats + 6 * k + 3 + i] = float(qs[k].w[i]);
-        }
-      const uint32_t push[2] = {uint32_t(qs.size()), mode};
-      vk_compute::Job job;
-      job.spirv = &spirv;
-      job.input = records.data();
-      job.input_bytes = records.size() * sizeof(float);
-      job.output_floats = qs.size() * floats;
-      job.textures = &textures;
-      job.texture_binding = 2;
-      job.push = push;
-      job.push_bytes = sizeof push;
-      job.groups[0] = (push[0] + 63) / 64;
-      return device.run(job);
+      float record[shader_test::kRecordFloats] = {};
+      dspbr::shader::pack_shader_inputs(c.material, c.options, Vec3{0, 0, 1}, Vec3{0, 0, 1}, record);
+      std::vector<float> q;
+      for (const Query& x : qs) q.insert(q.end(), {float(x.v.x), float(x.v.y), float(x.v.z), float(x.w.x), float(x.w.y), float(x.w.z)});
+      return shader_test::run_queries(device, spirv, textures, record, q, 6, mode, floats);
     };
     dspbr::validate::StabilitySettings settings;
     settings.random_directions = 300;  // the full validation's (src/dspbr/validate/suite.cpp)
@@ -187,16 +171,7 @@ int main(int argc, char** argv) {
       std::vector<Query> all_samples = samples;
       for (const Query& q : bad_pairs) all_samples.push_back(q);  // (bad v, u) and (v, bad u)
       const std::vector<float> s = dispatch(c, all_samples, 5, 9);
-      for (std::size_t k = 0; k < all_samples.size(); ++k) {
-        const float* o = &s[9 * k];
-        dspbr::BsdfSample x;
-        x.valid = o[0] > 0.5f;
-        x.l = {o[1], o[2], o[3]};
-        x.weight = dspbr::Rgb(o[4], o[5], o[6]);
-        x.pdf = o[7];
-        x.flags = uint32_t(o[8]);
-        dev.answer_sample(all_samples[k], x);
-      }
+      for (std::size_t k = 0; k < all_samples.size(); ++k) dev.answer_sample(all_samples[k], shader_test::sample_from_floats(&s[9 * k]));
       dev.stop_recording();
       const dspbr::validate::StabilityCounts st = dspbr::validate::stability_scan(dev, settings);  // the verdict
       if (st.max_weight > total.max_weight) worst = i;

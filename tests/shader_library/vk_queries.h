@@ -1,0 +1,60 @@
+// What the device tests of the shader library share (shader_vk_chi2, shader_vk_stability): one
+// dispatch of the test kernel (conformance.comp / .hlsl, kernel_common.glsl) over queries that
+// follow a material's record, and a sample as modes 3 and 5 write it.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <vector>
+
+#include "dspbr/bsdf/bsdf.h"
+#include "dspbr/vulkan/vk_compute.h"
+#include "shader_material.h"
+
+namespace shader_test {
+
+// Runs `mode` once per query: the input is `record` (kRecordFloats floats, pack_record's) followed
+// by the queries' floats (query_floats each); the output holds out_floats floats per query. The
+// tables are bound from binding 2 (after the two buffers), as the kernels expect.
+inline std::vector<float> run_queries(vk_compute::Device& device, const std::vector<uint32_t>& spirv,
+                                      const std::vector<vk_compute::TableImage>& textures, const float* record,
+                                      const std::vector<float>& queries, std::size_t query_floats, uint32_t mode,
+                                      std::size_t out_floats) {
+  std::vector<float> input(record, record + kRecordFloats);
+  input.insert(input.end(), queries.begin(), queries.end());
+  const std::size_t count = queries.size() / query_floats;
+  const uint32_t push[2] = {uint32_t(count), mode};
+  vk_compute::Job job;
+  job.spirv = &spirv;
+  job.input = input.data();
+  job.input_bytes = input.size() * sizeof(float);
+  job.output_floats = count * out_floats;
+  job.textures = &textures;
+  job.texture_binding = 2;
+  job.push = push;
+  job.push_bytes = sizeof push;
+  job.groups[0] = (push[0] + 63) / 64;
+  return device.run(job);
+}
+
+// A sample from the 9 floats modes 3 and 5 write: valid, l, weight, pdf, flags.
+inline dspbr::BsdfSample sample_from_floats(const float* o) {
+  dspbr::BsdfSample s;
+  s.valid = o[0] > 0.5f;
+  s.l = {o[1], o[2], o[3]};
+  s.weight = dspbr::Rgb(o[4], o[5], o[6]);
+  s.pdf = o[7];
+  s.flags = uint32_t(o[8]);
+  return s;
+}
+
+// The optional K/N argument of the device tests: only the items whose index is K modulo N.
+// False (a usage error) unless argc is 4, or 5 with argv[4] = K/N, K < N.
+inline bool parse_part(int argc, char** argv, unsigned& part, unsigned& parts) {
+  part = 0, parts = 1;
+  char end = 0;
+  if (argc == 4) return true;
+  return argc == 5 && std::sscanf(argv[4], "%u/%u%c", &part, &parts, &end) == 2 && parts >= 1 && part < parts;
+}
+
+}  // namespace shader_test
