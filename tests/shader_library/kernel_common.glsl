@@ -22,7 +22,7 @@
 DSPBR_CONST int DSPBR_TEST_RECORD_FLOATS = 80;  // shader_material.h's kRecordFloats
 DSPBR_FN vec3 dspbr_test_vec3(uint k) { return vec3(rec[k], rec[k + 1u], rec[k + 2u]); }
 #if !defined(DSPBR_TEST_NO_ALBEDO) || defined(DSPBR_TEST_STABILITY)
-// A sample as modes 3 and 5 write it: valid, l, weight, pdf, flags (9 floats from 9 id).
+// A sample as modes 3 and 5 write it: valid, l, weight, pdf, flags (the 9 floats from 9 id on).
 DSPBR_FN void dspbr_test_write_sample(uint id, DspbrSample d) {
   res[9u * id] = d.valid ? 1.0f : 0.0f;
   res[9u * id + 1u] = d.l.x;
