@@ -13,7 +13,6 @@
 // answers them all in two dispatches per material, and the second is the verdict.
 // Exit 0: no failure; 1: a failure (each material's counts printed); 2: bad arguments or a Vulkan
 // error; 77: no Vulkan device.
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -156,7 +155,8 @@ int main(int argc, char** argv) {
     settings.random_directions = 300;  // the full validation's (src/dspbr/validate/suite.cpp)
     dspbr::validate::StabilityCounts total;
     std::size_t failed = 0, bad_failed = 0, checked = 0;
-    std::size_t worst = cases.size();  // the material of the largest sample weight
+    std::size_t worst = cases.size();  // the material of the largest sample weight, and its sample
+    dspbr::BsdfSample worst_sample;
     for (std::size_t i = part; i < cases.size(); i += parts) {
       const Case& c = cases[i];
       DeviceBsdf dev;
@@ -174,7 +174,10 @@ int main(int argc, char** argv) {
       for (std::size_t k = 0; k < all_samples.size(); ++k) dev.answer_sample(all_samples[k], shader_test::sample_from_floats(&s[9 * k]));
       dev.stop_recording();
       const dspbr::validate::StabilityCounts st = dspbr::validate::stability_scan(dev, settings);  // the verdict
-      if (st.max_weight > total.max_weight) worst = i;
+      if (st.max_weight > total.max_weight) {
+        worst = i;
+        worst_sample = dev.sample(st.max_weight_v, st.max_weight_u);
+      }
       total += st;
       ++checked;
       // The inputs no direction should be: no value may be NaN, Inf or negative, a sample not valid
@@ -205,13 +208,21 @@ int main(int argc, char** argv) {
                 total.bad_direction, bad_failed);
     if (worst < cases.size()) {
       // The largest weight (a firefly, not a failure: docs/validation.md) beside the reference's
-      // (double) for the same view and random numbers.
+      // (double): its own sample for the same view and random numbers, and its f |cos| / pdf at
+      // the device's sampled direction.
       const Vec3 &v = total.max_weight_v, &u = total.max_weight_u;
-      const dspbr::BsdfSample ref = dspbr::MaterialBsdf(cases[worst].material, dspbr::LutSet::builtin(), cases[worst].options).sample(v, u);
-      std::printf("%s: largest sample weight %.3g: %s at v (%.9g, %.9g, %.9g), u (%.9g, %.9g, %.9g); the reference's "
-                  "there %.3g\n",
-                  label, total.max_weight, cases[worst].name.c_str(), v.x, v.y, v.z, u.x, u.y, u.z,
-                  ref.valid ? std::max({ref.weight[0], ref.weight[1], ref.weight[2]}) : 0.0);
+      const dspbr::MaterialBsdf reference(cases[worst].material, dspbr::LutSet::builtin(), cases[worst].options);
+      const dspbr::BsdfSample own = reference.sample(v, u);
+      const Vec3& l = worst_sample.l;
+      const double ref_pdf = reference.pdf(v, l);
+      const double ref_ratio = reference.eval(v, l)[0] * std::abs(l.z) / ref_pdf;
+      std::printf("%s: largest sample weight %.3g: %s at v (%.9g, %.9g, %.9g), u (%.9g, %.9g, %.9g): l (%.9g, %.9g, "
+                  "%.9g), pdf %.3g\n",
+                  label, total.max_weight, cases[worst].name.c_str(), v.x, v.y, v.z, u.x, u.y, u.z, l.x, l.y, l.z,
+                  worst_sample.pdf);
+      std::printf("%s: the reference there: at that l pdf %.3g and f |cos| / pdf %.3g; its own sample l (%.9g, %.9g, "
+                  "%.9g), pdf %.3g, weight %.3g\n",
+                  label, ref_pdf, ref_ratio, own.l.x, own.l.y, own.l.z, own.pdf, own.valid ? own.weight[0] : 0.0);
     }
     return failed == 0 ? 0 : 1;
   } catch (const std::exception& e) {
