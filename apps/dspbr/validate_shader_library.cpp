@@ -66,16 +66,8 @@ validate::OtherImplementation shader_library_checks(const validate::Catalog& ref
       o.catalog.cases.push_back(std::move(s));
     }
   }
-  std::size_t random = 0;
-  for (const validate::StabilityCase& c : reference.stability) {
-    if (!c.material || c.options.transmission_compensation) continue;
-    // Every corner, and one random material in four (500 of the full run's 2000): the library's
-    // calls recompute what the reference caches per material (its thin film's R, several per call),
-    // and all 2000 took 8 s of the run's 73.
-    if (c.component == "random materials" && random++ % 4 != 0) continue;
-    validate::StabilityCase s = c;
-    // A component's corner is its base material's: the library evaluates the whole material.
-    s.bsdf = std::make_shared<shader::ShaderBsdf>(*c.material, c.options);
+  for (validate::StabilityCase& s : validate::whole_material_stability(reference)) {
+    s.bsdf = std::make_shared<shader::ShaderBsdf>(*s.material, s.options);
     o.catalog.stability.push_back(std::move(s));
   }
   // In float, pdf and weight agree with eval and pdf to rounding (ShaderLibrary.SamplingMatchesPdfByChiSquare).

@@ -23,12 +23,14 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/shader/material_mapping.h"
 #include "dspbr/validate/catalog.h"
 #include "dspbr/validate/stability.h"
+#include "dspbr/validate/suite.h"
 #include "shader_material.h"
 #include "vk_queries.h"
 
@@ -54,8 +56,9 @@ struct Query {
   Vec3 v, w;
 };
 
-// The device's answers by their inputs; before answer() it records the queries and answers 0 and
-// no sample (the scan's first round, whose counts are not the verdict).
+// The device's answers by their inputs. Until stop_recording() it records the queries it has no
+// answer for and answers 0 and no sample (the scan's first round, whose counts are not the
+// verdict); after it, such a query counts as unanswered.
 class DeviceBsdf : public dspbr::Bsdf {
  public:
   dspbr::Rgb eval(const Vec3& v, const Vec3& l) const override { return value(v, l).f; }
@@ -64,12 +67,11 @@ class DeviceBsdf : public dspbr::Bsdf {
     const auto it = samples_.find(key_of(v, u));
     if (it != samples_.end()) return it->second;
     if (!recording_) ++unanswered_;
-    else if (pending_sample_keys_.emplace(key_of(v, u), 0).second) pending_samples_.push_back({v, u});
+    else if (pending_sample_keys_.insert(key_of(v, u)).second) pending_samples_.push_back({v, u});
     return dspbr::BsdfSample{};
   }
   uint32_t flags() const override { return 0; }
 
-  bool recording() const { return recording_; }
   std::vector<Query> take_evals() { return std::move(pending_evals_); }
   std::vector<Query> take_samples() { return std::move(pending_samples_); }
   void answer_eval(const Query& q, const dspbr::Rgb& f, double pdf) { evals_[key_of(q.v, q.w)] = {f, pdf}; }
@@ -87,7 +89,7 @@ class DeviceBsdf : public dspbr::Bsdf {
     const auto it = evals_.find(key_of(v, l));
     if (it != evals_.end()) return it->second;
     if (recording_) {
-      if (pending_eval_keys_.emplace(key_of(v, l), 0).second) pending_evals_.push_back({v, l});
+      if (pending_eval_keys_.insert(key_of(v, l)).second) pending_evals_.push_back({v, l});
     } else {
       ++unanswered_;
     }
@@ -97,11 +99,13 @@ class DeviceBsdf : public dspbr::Bsdf {
   mutable std::size_t unanswered_ = 0;
   std::unordered_map<Key, Value, KeyHash> evals_;
   std::unordered_map<Key, dspbr::BsdfSample, KeyHash> samples_;
-  mutable std::unordered_map<Key, int, KeyHash> pending_eval_keys_, pending_sample_keys_;
+  mutable std::unordered_set<Key, KeyHash> pending_eval_keys_, pending_sample_keys_;
   mutable std::vector<Query> pending_evals_, pending_samples_;
 };
 
 bool finite_non_negative(double x) { return std::isfinite(x) && x >= 0; }
+
+std::string case_name(const dspbr::validate::StabilityCase& c) { return c.component + " / " + c.corner; }
 
 }  // namespace
 
@@ -121,22 +125,13 @@ int main(int argc, char** argv) {
     std::printf("%s on %s\n", label, device.device_name().c_str());
     const std::vector<uint32_t> spirv = vk_compute::read_spirv(argv[1]);
     const std::vector<vk_compute::TableImage> textures = vk_compute::read_lookup_textures(argv[2], false);
-    // The materials of the validation's "shader library: stability" (validate_shader_library.cpp).
-    struct Case {
-      std::string name;
-      dspbr::Material material;
-      dspbr::BsdfOptions options;
-    };
-    std::vector<Case> cases;
-    {
-      const dspbr::validate::Catalog catalog = dspbr::validate::dspbr_catalog({});
-      std::size_t random = 0;
-      for (const dspbr::validate::StabilityCase& c : catalog.stability) {
-        if (!c.material || c.options.transmission_compensation) continue;
-        if (c.component == "random materials" && random++ % 4 != 0) continue;
-        cases.push_back({c.component + " / " + c.corner, *c.material, c.options});
-      }
-    }
+    // The materials of the validation's "shader library: stability", with its settings (the full
+    // run's: its seed and 300 random pairs; stream = the case's index, as run_stability numbers them).
+    const std::vector<dspbr::validate::StabilityCase> cases =
+        dspbr::validate::whole_material_stability(dspbr::validate::dspbr_catalog({}));
+    const dspbr::validate::SuiteSettings suite = dspbr::validate::SuiteSettings::defaults(false);
+    dspbr::validate::StabilitySettings settings = suite.stability;
+    settings.seed = suite.seed;
     // Inputs no direction should be: NaN, +-Inf, zero, not unit (each against a plain direction).
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
     const Vec3 plain{0.3, 0.2, 0.9};
@@ -144,34 +139,33 @@ int main(int argc, char** argv) {
     std::vector<Query> bad_pairs;
     for (const Vec3& b : bad) bad_pairs.push_back({b, plain}), bad_pairs.push_back({plain, b});
     // One dispatch of `mode` over the queries (v, w) after the material's record.
-    auto dispatch = [&](const Case& c, const std::vector<Query>& qs, uint32_t mode, std::size_t floats) {
+    auto dispatch = [&](const dspbr::validate::StabilityCase& c, const std::vector<Query>& qs, uint32_t mode,
+                        std::size_t floats) {
       float record[shader_test::kRecordFloats] = {};
-      dspbr::shader::pack_shader_inputs(c.material, c.options, Vec3{0, 0, 1}, Vec3{0, 0, 1}, record);
+      dspbr::shader::pack_shader_inputs(*c.material, c.options, Vec3{0, 0, 1}, Vec3{0, 0, 1}, record);
       std::vector<float> q;
       for (const Query& x : qs) q.insert(q.end(), {float(x.v.x), float(x.v.y), float(x.v.z), float(x.w.x), float(x.w.y), float(x.w.z)});
       return shader_test::run_queries(device, spirv, textures, record, q, 6, mode, floats);
     };
-    dspbr::validate::StabilitySettings settings;
-    settings.random_directions = 300;  // the full validation's (src/dspbr/validate/suite.cpp)
     dspbr::validate::StabilityCounts total;
     std::size_t failed = 0, bad_failed = 0, checked = 0;
     std::size_t worst = cases.size();  // the material of the largest sample weight, and its sample
     dspbr::BsdfSample worst_sample;
     for (std::size_t i = part; i < cases.size(); i += parts) {
-      const Case& c = cases[i];
+      const dspbr::validate::StabilityCase& c = cases[i];
+      const std::string name = case_name(c);
       DeviceBsdf dev;
       settings.stream = i;
       dspbr::validate::stability_scan(dev, settings);  // records
       std::vector<Query> evals = dev.take_evals();
       evals.insert(evals.end(), bad_pairs.begin(), bad_pairs.end());
-      const std::vector<Query> samples = dev.take_samples();
+      std::vector<Query> samples = dev.take_samples();
+      samples.insert(samples.end(), bad_pairs.begin(), bad_pairs.end());  // (bad v, u) and (v, bad u)
       const std::vector<float> e = dispatch(c, evals, 4, 4);
       for (std::size_t k = 0; k < evals.size(); ++k)
         dev.answer_eval(evals[k], dspbr::Rgb(e[4 * k], e[4 * k + 1], e[4 * k + 2]), e[4 * k + 3]);
-      std::vector<Query> all_samples = samples;
-      for (const Query& q : bad_pairs) all_samples.push_back(q);  // (bad v, u) and (v, bad u)
-      const std::vector<float> s = dispatch(c, all_samples, 5, 9);
-      for (std::size_t k = 0; k < all_samples.size(); ++k) dev.answer_sample(all_samples[k], shader_test::sample_from_floats(&s[9 * k]));
+      const std::vector<float> s = dispatch(c, samples, 5, 9);
+      for (std::size_t k = 0; k < samples.size(); ++k) dev.answer_sample(samples[k], shader_test::sample_from_floats(&s[9 * k]));
       dev.stop_recording();
       const dspbr::validate::StabilityCounts st = dspbr::validate::stability_scan(dev, settings);  // the verdict
       if (st.max_weight > total.max_weight) {
@@ -193,13 +187,13 @@ int main(int argc, char** argv) {
                       !finite_non_negative(x.weight[0]) || !finite_non_negative(x.weight[1]) ||
                       !finite_non_negative(x.weight[2]);
       }
-      if (dev.unanswered() > 0) throw std::runtime_error(c.name + ": queries the device did not answer");
+      if (dev.unanswered() > 0) throw std::runtime_error(name + ": queries the device did not answer");
       if (st.total_failures() > 0 || bad_here > 0) {
         ++failed;
         bad_failed += bad_here;
         std::printf("%s FAIL %s: %zu NaN, %zu Inf, %zu negative, %zu directions not unit; %zu bad values for "
                     "non-finite or non-unit inputs\n",
-                    label, c.name.c_str(), st.nan, st.inf, st.negative, st.bad_direction, bad_here);
+                    label, name.c_str(), st.nan, st.inf, st.negative, st.bad_direction, bad_here);
       }
     }
     std::printf("%s: stability scan on the device, %zu of %zu materials clean (%zu evaluations: %zu NaN, %zu Inf, "
@@ -211,14 +205,15 @@ int main(int argc, char** argv) {
       // (double): its own sample for the same view and random numbers, and its f |cos| / pdf at
       // the device's sampled direction.
       const Vec3 &v = total.max_weight_v, &u = total.max_weight_u;
-      const dspbr::MaterialBsdf reference(cases[worst].material, dspbr::LutSet::builtin(), cases[worst].options);
+      const dspbr::validate::StabilityCase& c = cases[worst];
+      const dspbr::MaterialBsdf reference(*c.material, dspbr::LutSet::builtin(), c.options);
       const dspbr::BsdfSample own = reference.sample(v, u);
       const Vec3& l = worst_sample.l;
       const double ref_pdf = reference.pdf(v, l);
       const double ref_ratio = reference.eval(v, l)[0] * std::abs(l.z) / ref_pdf;
       std::printf("%s: largest sample weight %.3g: %s at v (%.9g, %.9g, %.9g), u (%.9g, %.9g, %.9g): l (%.9g, %.9g, "
                   "%.9g), pdf %.3g\n",
-                  label, total.max_weight, cases[worst].name.c_str(), v.x, v.y, v.z, u.x, u.y, u.z, l.x, l.y, l.z,
+                  label, total.max_weight, case_name(c).c_str(), v.x, v.y, v.z, u.x, u.y, u.z, l.x, l.y, l.z,
                   worst_sample.pdf);
       std::printf("%s: the reference there: at that l pdf %.3g and f |cos| / pdf %.3g; its own sample l (%.9g, %.9g, "
                   "%.9g), pdf %.3g, weight %.3g\n",

@@ -418,4 +418,15 @@ Catalog dspbr_catalog(const CatalogOptions& opt) {
   return cat;
 }
 
+std::vector<StabilityCase> whole_material_stability(const Catalog& reference) {
+  std::vector<StabilityCase> out;
+  std::size_t random = 0;
+  for (const StabilityCase& c : reference.stability) {
+    if (!c.material || c.options.transmission_compensation) continue;
+    if (c.component == "random materials" && random++ % 4 != 0) continue;
+    out.push_back(c);
+  }
+  return out;
+}
+
 }  // namespace dspbr::validate

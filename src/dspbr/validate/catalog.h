@@ -88,4 +88,12 @@ struct CatalogOptions {
 // The DSPBR cases (the reference BSDF with opt.luts).
 Catalog dspbr_catalog(const CatalogOptions& opt);
 
+// The stability corners an implementation of whole materials is scanned on (the shader library:
+// `dspbr validate`'s section, and shader_vk_stability on the device), in the reference's order:
+// those with a material and without the transmission compensation (beyond DSPBR 2025x), every
+// corner and one random material in four (500 of the full run's 2000: such an implementation
+// recomputes per call what the reference caches per material, its thin film's R several times per
+// call, and all 2000 took 8 s of the run's 73). A component's corner is its base material's.
+std::vector<StabilityCase> whole_material_stability(const Catalog& reference);
+
 }  // namespace dspbr::validate
