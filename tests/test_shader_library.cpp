@@ -343,6 +343,24 @@ TEST(ShaderLibrary, FlakeSearchSkipsOnlyCellsThatCannotWin) {
   EXPECT_EQ(points, 16000);
 }
 
+TEST(ShaderLibrary, FlakeGridAsTheReference) {
+  // The grid's cells per side in float (flakes.glsl: one division) against the reference's double
+  // (flake_grid_res: the count per m^2, its quotient and square root), at 200000 flake sizes spread
+  // evenly in log from 1e-3 mm to 150 mm (res 4136000 to 5). Float rounding moves a size at a
+  // boundary of ceil by one cell: 135 sizes (0.068 %). The three-step form in float (the library's
+  // before) moved 360 (0.18 %), and a wrong constant moves nearly every size.
+  int differ = 0;
+  const int sizes = 200000;
+  for (int k = 0; k < sizes; ++k) {
+    const float size = float(1e-3 * std::pow(150.0 / 1e-3, (k + 0.5) / sizes));
+    const dspbr_shader::DspbrFlakeGrid g = dspbr_shader::dspbr_flake_grid(dspbr_shader::vec3(0.1f, 0.2f, 0.3f), dspbr_shader::vec3(0.0f, 0.0f, 1.0f), size);
+    const int64_t want = flake_grid_res(size);
+    ASSERT_LE(std::abs(int64_t(g.res) - want), 1) << "size " << size;
+    differ += int64_t(g.res) != want;
+  }
+  EXPECT_LT(differ, sizes / 1000) << differ << " of " << sizes << " sizes";
+}
+
 TEST(ShaderLibrary, CoreFrameSkippedOnlyWhereItIsTheIdentity) {
   // Without a normal map and a tangent rotation the core frame is the shading frame, and eval, pdf
   // and sample take v and l as they are instead of through the identity (dspbr_to_core). The
@@ -386,6 +404,48 @@ TEST(ShaderLibrary, CoreFrameSkippedOnlyWhereItIsTheIdentity) {
   Material rotated;
   rotated.anisotropy = 0.5, rotated.anisotropyRotation = 0.25;
   EXPECT_FALSE(shader_test::ShaderBsdf(rotated, BsdfOptions{}).prepared().core_is_frame);
+}
+
+TEST(ShaderLibrary, UnperturbedNormalFrameAsTheGeneralPath) {
+  // dspbr_normal_frame takes the identity for a normal of exactly +z (no normal map) instead of
+  // normalising it and orthogonalising the tangent. The independent value: the general path, reached
+  // with the same direction at another length ((0, 0, 2) and (0, 0, 0.5) normalise to +z), for
+  // normal and clearcoatNormal, bit for bit in eval, pdf, sample and emission at random directions
+  // on both sides, for materials of every kind with and without a rotation.
+  using namespace dspbr_shader;
+  const DspbrFrame fast = dspbr_normal_frame(vec3(0.0f, 0.0f, 1.0f));
+  const DspbrFrame general = dspbr_frame_from_normal_tangent(dspbr_unit_normal(vec3(0.0f, 0.0f, 1.0f)), vec3(1.0f, 0.0f, 0.0f));
+  EXPECT_TRUE(dspbr_is_identity_frame(fast) && dspbr_is_identity_frame(general));
+  Pcg32 rng(43, 1);
+  auto u = [&] { return rng.next_double(); };
+  int compared = 0;
+  for (int i = 0; i < 40; ++i) {
+    Material m;
+    m.albedo = {u(), u(), u()}, m.roughness = u(), m.metallic = i % 3 == 0 ? 1.0 : 0.3 * u();
+    m.transparency = i % 3 == 1 ? 1.0 : 0.0, m.thinWalled = i % 2 == 0, m.anisotropy = i % 5 == 0 ? 0.7 : 0.0;
+    m.anisotropyRotation = i % 4 == 1 ? 0.3 : 0.0, m.clearcoat = i % 4 < 2 ? 1.0 : 0.0, m.clearcoatRoughness = 0.3 * u();
+    m.sheenColor = {0.3 * u(), 0.2, 0.1}, m.emissionValue = i % 7 == 0 ? 2.0 : 0.0;
+    DspbrMaterial a = shader_test::to_shader_material(m), b = a;
+    a.normal = a.clearcoatNormal = vec3(0.0f, 0.0f, 1.0f);
+    b.normal = vec3(0.0f, 0.0f, 2.0f), b.clearcoatNormal = vec3(0.0f, 0.0f, 0.5f);
+    const DspbrOptions o = dspbr_default_options();
+    const DspbrBsdf pa = dspbr_prepare(a, dspbr_identity_frame(), o), pb = dspbr_prepare(b, dspbr_identity_frame(), o);
+    for (int k = 0; k < 50; ++k) {
+      const vec3 v = normalize(vec3(float(2 * u() - 1), float(2 * u() - 1), float(2 * u() - 1)));
+      const vec3 l = normalize(vec3(float(2 * u() - 1), float(2 * u() - 1), float(2 * u() - 1)));
+      const vec3 rnd = vec3(float(u()), float(u()), float(u()));
+      const vec3 f1 = dspbr_eval(pa, v, l), f2 = dspbr_eval(pb, v, l);
+      EXPECT_TRUE(f1.x == f2.x && f1.y == f2.y && f1.z == f2.z) << "material " << i << " pair " << k;
+      EXPECT_EQ(dspbr_pdf(pa, v, l), dspbr_pdf(pb, v, l));
+      const DspbrSample s1 = dspbr_sample(pa, v, rnd), s2 = dspbr_sample(pb, v, rnd);
+      EXPECT_EQ(s1.valid, s2.valid);
+      EXPECT_TRUE(s1.l.x == s2.l.x && s1.l.y == s2.l.y && s1.l.z == s2.l.z && s1.pdf == s2.pdf && s1.weight.x == s2.weight.x);
+      const vec3 e1 = dspbr_emission(pa, v), e2 = dspbr_emission(pb, v);
+      EXPECT_TRUE(e1.x == e2.x && e1.y == e2.y && e1.z == e2.z);
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 2000);
 }
 
 TEST(ShaderLibrary, InteropFloorAndCeilAsTheLibrarys) {

@@ -114,3 +114,11 @@ DSPBR_FN vec3 dspbr_unit_direction(vec3 w) {
 // A material normal made unit, scaled first as a direction is (a normal map's normal of length
 // below about 1e-19 was +z); a zero, NaN or infinite one is +z (the unperturbed normal).
 DSPBR_FN vec3 dspbr_unit_normal(vec3 n) { return dspbr_scaled_unit(n, vec3(0.0f, 0.0f, 1.0f)); }
+// The frame of a material's normal (normal, clearcoatNormal: in the shading frame, +z where nothing
+// perturbs it), its tangent the shading frame's x made orthogonal (Gram-Schmidt). The unperturbed +z
+// gives the identity without the square roots and divisions: the frame the general path gives
+// (up to the sign of a zero in a normal of -0 x or y, which changes no dot product but one that is 0).
+DSPBR_FN DspbrFrame dspbr_normal_frame(vec3 normal) {
+  if (normal.x == 0.0f && normal.y == 0.0f && normal.z == 1.0f) return dspbr_identity_frame();
+  return dspbr_frame_from_normal_tangent(dspbr_unit_normal(normal), vec3(1.0f, 0.0f, 0.0f));
+}

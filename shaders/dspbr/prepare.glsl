@@ -115,8 +115,8 @@ DSPBR_FN bool dspbr_is_delta_lobe(DSPBR_IN(DspbrBsdf) b, int k) { return ((b.del
 
 // t = t' cos(beta) - (n x t') sin(beta), beta = 2 pi anisotropyRotation (spec "Tangent Space").
 DSPBR_FN DspbrFrame dspbr_core_frame(DSPBR_IN(DspbrMaterial) m) {
-  vec3 n = dspbr_unit_normal(m.normal);
-  DspbrFrame base = dspbr_frame_from_normal_tangent(n, vec3(1.0f, 0.0f, 0.0f));
+  DspbrFrame base = dspbr_normal_frame(m.normal);
+  vec3 n = base.n;
   float beta = 2.0f * dspbr_pi * m.anisotropyRotation;
   // beta = 0 (no rotation, the default) is base itself: no sine and cosine to compute.
   if (beta == 0.0f) return base;
@@ -160,8 +160,7 @@ DSPBR_FN DspbrBsdf dspbr_prepare(DSPBR_IN(DspbrMaterial) m, DspbrFrame frame, DS
   b.clearcoat = DSPBR_HAS_CLEARCOAT != 0 ? m.clearcoat : 0.0f;
   // The coat's frame is read only where the clearcoat weighs (its lobe, its layer factor, and the
   // emission's attenuation, times c): without a clearcoat the frame is not built.
-  b.coat = b.clearcoat > 0.0f ? dspbr_frame_from_normal_tangent(dspbr_unit_normal(m.clearcoatNormal), vec3(1.0f, 0.0f, 0.0f))
-                              : dspbr_identity_frame();
+  b.coat = b.clearcoat > 0.0f ? dspbr_normal_frame(m.clearcoatNormal) : dspbr_identity_frame();
   // Dispersion belongs to the volumetric transparent part (src/dspbr/component.cpp): eta(lambda) only
   // behind a volume boundary that transmits, as the reference (it bent thin walls and opaque
   // dielectrics too; the eighth fresh tester's pass).
