@@ -265,17 +265,8 @@ void run_shader(const RunArgs& a) {
     std::vector<float> records(n * rec);
     for (std::size_t k = 0; k < n; ++k) pack(vectors[first + k], &records[k * rec]);
     const uint32_t push[1] = {uint32_t(n)};
-    vk_compute::Job job;
-    job.spirv = &spirv;
-    job.input = records.data();
-    job.input_bytes = records.size() * sizeof(float);
-    job.output_floats = n * res;
-    job.textures = &textures;
-    job.texture_binding = 2;
-    job.push = push;
-    job.push_bytes = sizeof push;
-    job.groups[0] = uint32_t((n + 63) / 64);
-    const std::vector<float> out = device.run(job);
+    const std::vector<float> out =
+        device.run(vk_compute::item_job(spirv, records.data(), records.size() * sizeof(float), n, res, textures, 2, push, sizeof push));
     for (std::size_t k = 0; k < n; ++k) {
       const std::string& id = vectors[first + k].id;
       results[first + k] = result_of(id, &out[k * res]).value_or(

@@ -61,17 +61,9 @@ int main(int argc, char** argv) {
       std::vector<float> records(xs.size() * shader_test::kRecordFloats);
       for (std::size_t k = 0; k < xs.size(); ++k) shader_test::pack_record(*xs[k], &records[k * shader_test::kRecordFloats]);
       const uint32_t push[2] = {uint32_t(xs.size()) * per, mode};
-      vk_compute::Job job;
-      job.spirv = &spirv;
-      job.input = records.data();
-      job.input_bytes = records.size() * sizeof(float);
-      job.output_floats = xs.size() * per * floats;
-      job.textures = &textures;
-      job.texture_binding = 2;
-      job.push = push;
-      job.push_bytes = sizeof push;
-      job.groups[0] = (push[0] + 63) / 64;
-      return xs.empty() ? std::vector<float>() : device.run(job);
+      return xs.empty() ? std::vector<float>()
+                        : device.run(vk_compute::item_job(spirv, records.data(), records.size() * sizeof(float), push[0], floats,
+                                                          textures, 2, push, sizeof push));
     };
     std::vector<const dspbr::conformance::Vector*> all, with_albedo;
     for (const auto& x : vectors) {

@@ -24,17 +24,8 @@ inline std::vector<float> run_queries(vk_compute::Device& device, const std::vec
   input.insert(input.end(), queries.begin(), queries.end());
   const std::size_t count = queries.size() / query_floats;
   const uint32_t push[2] = {uint32_t(count), mode};
-  vk_compute::Job job;
-  job.spirv = &spirv;
-  job.input = input.data();
-  job.input_bytes = input.size() * sizeof(float);
-  job.output_floats = count * out_floats;
-  job.textures = &textures;
-  job.texture_binding = 2;
-  job.push = push;
-  job.push_bytes = sizeof push;
-  job.groups[0] = (push[0] + 63) / 64;
-  return device.run(job);
+  return device.run(vk_compute::item_job(spirv, input.data(), input.size() * sizeof(float), count, out_floats, textures, 2,
+                                         push, sizeof push));
 }
 
 // A sample from the 9 floats modes 3 and 5 write: valid, l, weight, pdf, flags.

@@ -145,17 +145,8 @@ int main(int argc, char** argv) {
       return kSkip;
     }
     const std::vector<float> points = make_points();
-    vk_compute::Job job;
-    job.spirv = &spirv;
-    job.input = points.data();
-    job.input_bytes = points.size() * sizeof(float);
-    job.output_floats = size_t(kPoints) * kOutputs;
-    job.textures = &textures;
-    job.texture_binding = kTextureBinding;
-    job.push = &kPoints;
-    job.push_bytes = sizeof(kPoints);
-    job.groups[0] = (kPoints + 63) / 64;
-    const std::vector<float> gpu = vk.run(job);
+    const std::vector<float> gpu = vk.run(vk_compute::item_job(spirv, points.data(), points.size() * sizeof(float), kPoints, kOutputs,
+                                                               textures, kTextureBinding, &kPoints, sizeof(kPoints)));
 
     // Tolerance: float evaluation on both sides, the driver's pow / exp / log within a few ulp of
     // glibc's (Vulkan allows 3 + 2 |x| ulp for exp): 5e-5 relative + 2e-6 absolute, plus for the

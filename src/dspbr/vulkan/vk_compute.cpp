@@ -13,6 +13,22 @@ void check(VkResult r, const char* what) {
 
 }  // namespace
 
+Job item_job(const std::vector<uint32_t>& spirv, const void* input, size_t input_bytes, size_t items,
+             size_t floats_per_item, const std::vector<TableImage>& textures, uint32_t texture_binding,
+             const void* push, uint32_t push_bytes) {
+  Job job;
+  job.spirv = &spirv;
+  job.input = input;
+  job.input_bytes = input_bytes;
+  job.output_floats = items * floats_per_item;
+  job.textures = &textures;
+  job.texture_binding = texture_binding;
+  job.push = push;
+  job.push_bytes = push_bytes;
+  job.groups[0] = uint32_t((items + 63) / 64);
+  return job;
+}
+
 std::vector<uint32_t> read_spirv(const std::string& path) {
   std::ifstream f(path, std::ios::binary | std::ios::ate);
   if (!f) throw std::invalid_argument("cannot read '" + path + "'");

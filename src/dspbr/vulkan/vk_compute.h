@@ -39,6 +39,14 @@ struct Job {
   uint32_t groups[3] = {1, 1, 1};  // vkCmdDispatch's workgroup counts
 };
 
+// A job of one invocation per item in workgroups of 64 (the local_size_x of the project's item
+// kernels: tests/shaders/vulkan_lookup.comp, the shader-library test kernels and the conformance
+// kit's runner): `input` at binding 0, floats_per_item output floats per item at binding 1, the tables
+// from texture_binding on. The job points into its arguments: they must outlive Device::run.
+Job item_job(const std::vector<uint32_t>& spirv, const void* input, size_t input_bytes, size_t items,
+             size_t floats_per_item, const std::vector<TableImage>& textures, uint32_t texture_binding,
+             const void* push, uint32_t push_bytes);
+
 class Device {
  public:
   // The first physical device with a compute queue; none: has_device() is false (no exception).
