@@ -49,6 +49,11 @@ Material material(const std::string& name) {
     m.thinFilm = 1.0;  // thickness 0.4 um, film IOR 1.3: the parameter defaults
     return m;
   }
+  if (name == "bumped_plastic") {
+    Material m = subtype("plastic");
+    m.normal = {0.1, 0.2, 1.0};  // a normal map's texel: the prepared BSDF builds its own frame
+    return m;
+  }
   if (name == "coated_plastic") {
     Material m = subtype("plastic");
     m.clearcoat = 1.0;

@@ -24,8 +24,8 @@ namespace {
 using namespace dspbr_shader;
 
 // The materials of bench_materials.h, as the shader library's (shader_test::to_shader_material).
-const char* kNames[] = {"plastic", "metal", "glass", "coated_plastic", "carpaint", "thin_film", "full"};
-constexpr int kMaterials = 7;
+const char* kNames[] = {"plastic", "metal", "glass", "coated_plastic", "carpaint", "thin_film", "full", "bumped_plastic"};
+constexpr int kMaterials = 8;
 DspbrMaterial material(int index) { return shader_test::to_shader_material(bench::material(kNames[index])); }
 
 struct Inputs {

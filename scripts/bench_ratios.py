@@ -8,7 +8,8 @@ Runs build/dspbr_bench on the BSDF benchmarks and the table lookups with random 
 (every repetition of every benchmark in a shuffled order, so that a slow spell of the machine
 spreads over all of them) and prints a Markdown table: the median CPU time over the repetitions,
 its ratio to the median of BM_Eval/bare_ggx, the spread of the ratio (each repetition of a
-benchmark against the bare median), the target and whether the median holds it.
+benchmark against the bare median), the target and whether the median holds it; with --shader also
+prepare / eval of each material against its target (prepare alone at most 3 evals).
 
     /usr/bin/python3 scripts/bench_ratios.py [--bench build/dspbr_bench] [--repetitions 10] [--shader]
 """
@@ -39,6 +40,8 @@ FILTER = "BM_(Eval|Sample)/[a-z_]*$|BM_FitLutTableLookup|BM_SliceLookup|BM_WarpG
 SHADER_TARGETS = {"BM_Shader/prepare_eval/plastic": 6, "BM_Shader/prepare_eval/metal": 5,
                   "BM_Shader/prepare_eval/carpaint": 12, "BM_Shader/prepare_eval/full": 20}
 SHADER_FILTER = "BM_Shader/"
+# --shader: prepare alone costs at most this many evals of the same material.
+PREPARE_PER_EVAL_TARGET = 3
 
 
 def fmt_ns(ns):
@@ -99,6 +102,18 @@ def main():
         verdict = "| |" if name.startswith("BM_Warp") else \
             f"≤ {LOOKUP_TARGET_NS} ns | {'yes' if med <= LOOKUP_TARGET_NS else 'no'} |"
         print(f"| `{name}` ({label}, per item) | {fmt_ns(med)} | | {min(per):.1f}–{max(per):.1f} ns | {verdict}")
+    if args.shader:
+        # prepare / eval of each material, medians of the same run
+        print("\n| material | prepare / eval | target | held |")
+        print("|---|---:|---:|:---:|")
+        for name in sorted(n for n in runs if n.startswith("BM_Shader/prepare/")):
+            material = name[len("BM_Shader/prepare/"):]
+            evals = runs.get("BM_Shader/eval/" + material)
+            if not evals:
+                continue
+            q = statistics.median(runs[name]) / statistics.median(evals)
+            held = "yes" if q <= PREPARE_PER_EVAL_TARGET else "no"
+            print(f"| {material} | {q:.2f} | ≤ {PREPARE_PER_EVAL_TARGET} | {held} |")
     return 0
 
 
