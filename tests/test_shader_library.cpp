@@ -361,41 +361,63 @@ TEST(ShaderLibrary, FlakeGridAsTheReference) {
   EXPECT_LT(differ, sizes / 1000) << differ << " of " << sizes << " sizes";
 }
 
+namespace {
+
+// A material of every kind by its index i (metal, glass, thin-walled, anisotropic, coated,
+// translucent, emissive; sheen throughout), its other parameters drawn from rng; no normal map and
+// no tangent rotation.
+Material mixed_material(int i, Pcg32& rng) {
+  auto u = [&] { return rng.next_double(); };
+  Material m;
+  m.albedo = {u(), u(), u()}, m.roughness = u(), m.metallic = i % 3 == 0 ? 1.0 : 0.3 * u();
+  m.transparency = i % 3 == 1 ? 1.0 : 0.0, m.thinWalled = i % 2 == 0, m.anisotropy = i % 5 == 0 ? 0.7 : 0.0;
+  m.clearcoat = i % 4 < 2 ? 1.0 : 0.0, m.clearcoatRoughness = 0.3 * u(), m.sheenColor = {0.3 * u(), 0.2, 0.1};
+  m.translucency = i % 6 == 0 ? 0.5 : 0.0, m.emissionValue = i % 7 == 0 ? 2.0 : 0.0;
+  return m;
+}
+
+// Expects eval, pdf, sample and emission of a and b the same bits at `pairs` random pairs of
+// directions on both sides (and random numbers for sample); returns the pairs compared.
+int expect_same_bits(const dspbr_shader::DspbrBsdf& a, const dspbr_shader::DspbrBsdf& b, Pcg32& rng, int pairs, int material) {
+  using namespace dspbr_shader;
+  auto u = [&] { return float(rng.next_double()); };
+  for (int k = 0; k < pairs; ++k) {
+    const vec3 v = normalize(vec3(2 * u() - 1, 2 * u() - 1, 2 * u() - 1));
+    const vec3 l = normalize(vec3(2 * u() - 1, 2 * u() - 1, 2 * u() - 1));
+    const vec3 rnd = vec3(u(), u(), u());
+    const vec3 f1 = dspbr_eval(a, v, l), f2 = dspbr_eval(b, v, l);
+    EXPECT_TRUE(f1.x == f2.x && f1.y == f2.y && f1.z == f2.z) << "material " << material << " pair " << k;
+    EXPECT_EQ(dspbr_pdf(a, v, l), dspbr_pdf(b, v, l)) << "material " << material << " pair " << k;
+    const DspbrSample s1 = dspbr_sample(a, v, rnd), s2 = dspbr_sample(b, v, rnd);
+    EXPECT_EQ(s1.valid, s2.valid);
+    EXPECT_TRUE(s1.l.x == s2.l.x && s1.l.y == s2.l.y && s1.l.z == s2.l.z && s1.pdf == s2.pdf && s1.weight.x == s2.weight.x &&
+                s1.weight.y == s2.weight.y && s1.weight.z == s2.weight.z)
+        << "material " << material << " pair " << k;
+    const vec3 e1 = dspbr_emission(a, v), e2 = dspbr_emission(b, v);
+    EXPECT_TRUE(e1.x == e2.x && e1.y == e2.y && e1.z == e2.z);
+  }
+  return pairs;
+}
+
+}  // namespace
+
 TEST(ShaderLibrary, CoreFrameSkippedOnlyWhereItIsTheIdentity) {
   // Without a normal map and a tangent rotation the core frame is the shading frame, and eval, pdf
   // and sample take v and l as they are instead of through the identity (dspbr_to_core). The
   // independent value: the same prepared BSDF made to transform (core_is_frame false), bit for bit,
-  // at random directions on both sides, for materials of every kind; a material with a normal or a
-  // rotation transforms.
-  using dspbr_shader::vec3;
+  // at random directions on both sides, for materials of every kind (a tilted clearcoat normal
+  // included); a material with a normal or a rotation transforms.
   Pcg32 rng(37, 2);
-  auto u = [&] { return rng.next_double(); };
   int compared = 0;
   for (int i = 0; i < 60; ++i) {
-    Material m;
-    m.albedo = {u(), u(), u()}, m.roughness = u(), m.metallic = i % 3 == 0 ? 1.0 : 0.3 * u();
-    m.transparency = i % 3 == 1 ? 1.0 : 0.0, m.thinWalled = i % 2 == 0, m.anisotropy = i % 5 == 0 ? 0.7 : 0.0;
-    m.clearcoat = i % 4 == 0 ? 1.0 : 0.0, m.clearcoatNormal = {0.2, -0.1, 1.0}, m.sheenColor = {0.3 * u(), 0.2, 0.1};
-    m.translucency = i % 6 == 0 ? 0.5 : 0.0;
+    Material m = mixed_material(i, rng);
+    m.clearcoatNormal = {0.2, -0.1, 1.0};
     const shader_test::ShaderBsdf lib(m, BsdfOptions{});
     const dspbr_shader::DspbrBsdf& b = lib.prepared();
     ASSERT_TRUE(b.core_is_frame) << "material " << i;
     dspbr_shader::DspbrBsdf t = b;
     t.core_is_frame = false;
-    for (int k = 0; k < 50; ++k) {
-      const vec3 v = dspbr_shader::normalize(vec3(float(2 * u() - 1), float(2 * u() - 1), float(2 * u() - 1)));
-      const vec3 l = dspbr_shader::normalize(vec3(float(2 * u() - 1), float(2 * u() - 1), float(2 * u() - 1)));
-      const vec3 rnd = vec3(float(u()), float(u()), float(u()));
-      const vec3 f1 = dspbr_shader::dspbr_eval(b, v, l), f2 = dspbr_shader::dspbr_eval(t, v, l);
-      EXPECT_TRUE(f1.x == f2.x && f1.y == f2.y && f1.z == f2.z) << "material " << i << " pair " << k;
-      EXPECT_EQ(dspbr_shader::dspbr_pdf(b, v, l), dspbr_shader::dspbr_pdf(t, v, l));
-      const dspbr_shader::DspbrSample s1 = dspbr_shader::dspbr_sample(b, v, rnd), s2 = dspbr_shader::dspbr_sample(t, v, rnd);
-      EXPECT_EQ(s1.valid, s2.valid);
-      EXPECT_TRUE(s1.l.x == s2.l.x && s1.l.y == s2.l.y && s1.l.z == s2.l.z && s1.pdf == s2.pdf && s1.weight.x == s2.weight.x);
-      const vec3 e1 = dspbr_shader::dspbr_emission(b, v), e2 = dspbr_shader::dspbr_emission(t, v);
-      EXPECT_EQ(e1.x, e2.x);
-      ++compared;
-    }
+    compared += expect_same_bits(b, t, rng, 50, i);
   }
   EXPECT_EQ(compared, 3000);
   Material bumped;
@@ -417,33 +439,15 @@ TEST(ShaderLibrary, UnperturbedNormalFrameAsTheGeneralPath) {
   const DspbrFrame general = dspbr_frame_from_normal_tangent(dspbr_unit_normal(vec3(0.0f, 0.0f, 1.0f)), vec3(1.0f, 0.0f, 0.0f));
   EXPECT_TRUE(dspbr_is_identity_frame(fast) && dspbr_is_identity_frame(general));
   Pcg32 rng(43, 1);
-  auto u = [&] { return rng.next_double(); };
   int compared = 0;
   for (int i = 0; i < 40; ++i) {
-    Material m;
-    m.albedo = {u(), u(), u()}, m.roughness = u(), m.metallic = i % 3 == 0 ? 1.0 : 0.3 * u();
-    m.transparency = i % 3 == 1 ? 1.0 : 0.0, m.thinWalled = i % 2 == 0, m.anisotropy = i % 5 == 0 ? 0.7 : 0.0;
-    m.anisotropyRotation = i % 4 == 1 ? 0.3 : 0.0, m.clearcoat = i % 4 < 2 ? 1.0 : 0.0, m.clearcoatRoughness = 0.3 * u();
-    m.sheenColor = {0.3 * u(), 0.2, 0.1}, m.emissionValue = i % 7 == 0 ? 2.0 : 0.0;
+    Material m = mixed_material(i, rng);
+    m.anisotropyRotation = i % 4 == 1 ? 0.3 : 0.0;
     DspbrMaterial a = shader_test::to_shader_material(m), b = a;
     a.normal = a.clearcoatNormal = vec3(0.0f, 0.0f, 1.0f);
     b.normal = vec3(0.0f, 0.0f, 2.0f), b.clearcoatNormal = vec3(0.0f, 0.0f, 0.5f);
     const DspbrOptions o = dspbr_default_options();
-    const DspbrBsdf pa = dspbr_prepare(a, dspbr_identity_frame(), o), pb = dspbr_prepare(b, dspbr_identity_frame(), o);
-    for (int k = 0; k < 50; ++k) {
-      const vec3 v = normalize(vec3(float(2 * u() - 1), float(2 * u() - 1), float(2 * u() - 1)));
-      const vec3 l = normalize(vec3(float(2 * u() - 1), float(2 * u() - 1), float(2 * u() - 1)));
-      const vec3 rnd = vec3(float(u()), float(u()), float(u()));
-      const vec3 f1 = dspbr_eval(pa, v, l), f2 = dspbr_eval(pb, v, l);
-      EXPECT_TRUE(f1.x == f2.x && f1.y == f2.y && f1.z == f2.z) << "material " << i << " pair " << k;
-      EXPECT_EQ(dspbr_pdf(pa, v, l), dspbr_pdf(pb, v, l));
-      const DspbrSample s1 = dspbr_sample(pa, v, rnd), s2 = dspbr_sample(pb, v, rnd);
-      EXPECT_EQ(s1.valid, s2.valid);
-      EXPECT_TRUE(s1.l.x == s2.l.x && s1.l.y == s2.l.y && s1.l.z == s2.l.z && s1.pdf == s2.pdf && s1.weight.x == s2.weight.x);
-      const vec3 e1 = dspbr_emission(pa, v), e2 = dspbr_emission(pb, v);
-      EXPECT_TRUE(e1.x == e2.x && e1.y == e2.y && e1.z == e2.z);
-      ++compared;
-    }
+    compared += expect_same_bits(dspbr_prepare(a, dspbr_identity_frame(), o), dspbr_prepare(b, dspbr_identity_frame(), o), rng, 50, i);
   }
   EXPECT_EQ(compared, 2000);
 }
