@@ -198,9 +198,9 @@ DSPBR_FN DspbrFlakeGrid dspbr_flake_grid(vec3 p, vec3 n, float size_mm) {
   // res = max(4, ceil(sqrt(N / 4))), N = 1 / (3 sqrt(3) / 2 (s_f / 2000)^2) flakes per m^2, capped
   // at 2^23 cells per side (float resolves no finer grid at p in [-1, 1] m). sqrt(N / 4) =
   // (2000 / sqrt(6 sqrt 3)) / s_f: one division, which rounds once where the product, quotient and
-  // square root rounded three times; of the floats s_f from 7.4e-5 mm (the cap) to 200 mm it gives
-  // another res than the reference's double in 0.54 %, the three-step form in 1.8 % (at a cell
-  // count's boundary, one cell off; test ShaderLibrary.FlakeGridAsTheReference).
+  // square root rounded three times. Of 200000 sizes from 1e-3 mm to 150 mm it gives another res
+  // than the reference's double at 135 (one cell off, at a boundary of ceil), the three-step form
+  // at 360 (test ShaderLibrary.FlakeGridAsTheReference).
   g.res = g.valid ? int(min(max(4.0f, ceil(620.40324f / size_mm)), 8388608.0f)) : 4;
   // Triplanar mapping T_map(p, n) (spec eq. tr-mapping).
   float ax = abs(n.x), ay = abs(n.y), az = abs(n.z), u, v;

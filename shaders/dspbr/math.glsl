@@ -116,8 +116,9 @@ DSPBR_FN vec3 dspbr_unit_direction(vec3 w) {
 DSPBR_FN vec3 dspbr_unit_normal(vec3 n) { return dspbr_scaled_unit(n, vec3(0.0f, 0.0f, 1.0f)); }
 // The frame of a material's normal (normal, clearcoatNormal: in the shading frame, +z where nothing
 // perturbs it), its tangent the shading frame's x made orthogonal (Gram-Schmidt). The unperturbed +z
-// gives the identity without the square roots and divisions: the frame the general path gives
-// (up to the sign of a zero in a normal of -0 x or y, which changes no dot product but one that is 0).
+// gives the identity without the square roots and divisions: the frame the general path gives (for
+// an x or y of -0 the general path keeps -0 where the identity has +0: a dot product with it can
+// differ only in the sign of a zero).
 DSPBR_FN DspbrFrame dspbr_normal_frame(vec3 normal) {
   if (normal.x == 0.0f && normal.y == 0.0f && normal.z == 1.0f) return dspbr_identity_frame();
   return dspbr_frame_from_normal_tangent(dspbr_unit_normal(normal), vec3(1.0f, 0.0f, 0.0f));
