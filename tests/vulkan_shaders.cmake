@@ -83,24 +83,24 @@ if(Vulkan_FOUND AND DSPBR_GLSLANG_VK)
     COMMAND ${DSPBR_GLSLANG_VK} ${_sl_hlsl_args} -o ${_sl_hlsl} ${_sl}/conformance.hlsl
     DEPENDS ${_sl_kernel_sources}
     COMMENT "glslangValidator: the shader library's conformance kernels (GLSL, HLSL)" VERBATIM)
-  # The chi-square test's kernels: mode 3 alone (kernel_common.glsl, DSPBR_TEST_SAMPLES_ONLY).
-  set(_sl_chi2_glsl ${PROJECT_BINARY_DIR}/shader_chi2_glsl.spv)
-  set(_sl_chi2_hlsl ${PROJECT_BINARY_DIR}/shader_chi2_hlsl.spv)
-  add_custom_command(OUTPUT ${_sl_chi2_glsl} ${_sl_chi2_hlsl}
-    COMMAND ${DSPBR_GLSLANG_VK} -V -DDSPBR_TEST_SAMPLES_ONLY ${_sl_inc} -o ${_sl_chi2_glsl} ${_sl}/conformance.comp
-    COMMAND ${DSPBR_GLSLANG_VK} ${_sl_hlsl_args} -DDSPBR_TEST_SAMPLES_ONLY -o ${_sl_chi2_hlsl} ${_sl}/conformance.hlsl
-    DEPENDS ${_sl_kernel_sources}
-    COMMENT "glslangValidator: the shader library's chi-square kernels (GLSL, HLSL)" VERBATIM)
-  # The stability scan's kernels: modes 4 and 5 alone (DSPBR_TEST_STABILITY).
-  set(_sl_stab_glsl ${PROJECT_BINARY_DIR}/shader_stability_glsl.spv)
-  set(_sl_stab_hlsl ${PROJECT_BINARY_DIR}/shader_stability_hlsl.spv)
-  add_custom_command(OUTPUT ${_sl_stab_glsl} ${_sl_stab_hlsl}
-    COMMAND ${DSPBR_GLSLANG_VK} -V -DDSPBR_TEST_STABILITY ${_sl_inc} -o ${_sl_stab_glsl} ${_sl}/conformance.comp
-    COMMAND ${DSPBR_GLSLANG_VK} ${_sl_hlsl_args} -DDSPBR_TEST_STABILITY -o ${_sl_stab_hlsl} ${_sl}/conformance.hlsl
-    DEPENDS ${_sl_kernel_sources}
-    COMMENT "glslangValidator: the shader library's stability kernels (GLSL, HLSL)" VERBATIM)
-  add_custom_target(shader_conformance_kernels ALL DEPENDS ${_sl_glsl} ${_sl_hlsl} ${_sl_chi2_glsl} ${_sl_chi2_hlsl}
-                    ${_sl_stab_glsl} ${_sl_stab_hlsl})
+  # The kernels of the device tests that run one mode each (kernel_common.glsl): the chi-square
+  # test's, mode 3 alone (DSPBR_TEST_SAMPLES_ONLY), and the stability scan's, modes 4 and 5 alone
+  # (DSPBR_TEST_STABILITY): shader_<name>_glsl.spv and shader_<name>_hlsl.spv.
+  set(_sl_mode_kernels)
+  foreach(kernel chi2:DSPBR_TEST_SAMPLES_ONLY stability:DSPBR_TEST_STABILITY)
+    string(REPLACE ":" ";" kernel ${kernel})
+    list(GET kernel 0 name)
+    list(GET kernel 1 define)
+    set(_glsl ${PROJECT_BINARY_DIR}/shader_${name}_glsl.spv)
+    set(_hlsl ${PROJECT_BINARY_DIR}/shader_${name}_hlsl.spv)
+    add_custom_command(OUTPUT ${_glsl} ${_hlsl}
+      COMMAND ${DSPBR_GLSLANG_VK} -V -D${define} ${_sl_inc} -o ${_glsl} ${_sl}/conformance.comp
+      COMMAND ${DSPBR_GLSLANG_VK} ${_sl_hlsl_args} -D${define} -o ${_hlsl} ${_sl}/conformance.hlsl
+      DEPENDS ${_sl_kernel_sources}
+      COMMENT "glslangValidator: the shader library's ${name} kernels (GLSL, HLSL)" VERBATIM)
+    list(APPEND _sl_mode_kernels ${_glsl} ${_hlsl})
+  endforeach()
+  add_custom_target(shader_conformance_kernels ALL DEPENDS ${_sl_glsl} ${_sl_hlsl} ${_sl_mode_kernels})
   # No warning from either front end (glslang prints "WARNING:" lines and still succeeds).
   string(REPLACE ";" " " _sl_inc_cmd "${_sl_inc}")
   add_test(NAME shader_glsl_compile

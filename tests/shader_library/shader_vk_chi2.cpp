@@ -93,14 +93,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    vk_compute::Device device("dspbr shader chi-square");
-    if (!device.has_device()) {
-      std::printf("no Vulkan device: skipped\n");
-      return 77;
-    }
-    std::printf("%s on %s\n", argv[3], device.device_name().c_str());
-    const std::vector<uint32_t> spirv = vk_compute::read_spirv(argv[1]);
-    const std::vector<vk_compute::TableImage> textures = vk_compute::read_lookup_textures(argv[2], false);
+    shader_test::DeviceKernel kernel("dspbr shader chi-square");
+    if (!kernel.open(argv[1], argv[2], argv[3])) return 77;
     // One dispatch of `mode` over the queries w (3 floats each after vector x's record).
     auto dispatch = [&](const dspbr::conformance::Vector& x, const std::vector<dspbr::Vec3>& w, uint32_t mode,
                         std::size_t floats) {
@@ -108,7 +102,7 @@ int main(int argc, char** argv) {
       shader_test::pack_record(x, record);
       std::vector<float> q;
       for (const dspbr::Vec3& u : w) q.insert(q.end(), {float(u.x), float(u.y), float(u.z)});
-      return shader_test::run_queries(device, spirv, textures, record, q, 3, mode, floats);
+      return shader_test::run_queries(kernel, record, q, 3, mode, floats);
     };
     std::vector<shader_test::Chi2Case> cases;
     const std::vector<shader_test::Chi2Case> all = shader_test::chi2_cases();

@@ -16,7 +16,7 @@
 
 #include "dspbr/conformance/vector_file.h"
 #include "shader_material.h"
-#include "dspbr/vulkan/vk_compute.h"
+#include "vk_queries.h"
 
 int main(int argc, char** argv) {
   std::string results_path, ids;
@@ -47,23 +47,15 @@ int main(int argc, char** argv) {
       if (kept.empty()) throw std::invalid_argument("no vector id starts with one of " + ids);
       vectors = std::move(kept);
     }
-    vk_compute::Device device("dspbr shader conformance");
-    if (!device.has_device()) {
-      std::printf("no Vulkan device: skipped\n");
-      return 77;
-    }
-    std::printf("%s on %s\n", argv[4], device.device_name().c_str());
-    const std::vector<uint32_t> spirv = vk_compute::read_spirv(argv[1]);
-    const std::vector<vk_compute::TableImage> textures = vk_compute::read_lookup_textures(argv[3], false);
+    shader_test::DeviceKernel kernel("dspbr shader conformance");
+    if (!kernel.open(argv[1], argv[3], argv[4])) return 77;
     // Three dispatches (kernel_common.glsl says why): f cos, pdf and emission of every vector; one
     // cos-theta node of the albedo per invocation; one lobe choice per invocation for its Dirac lobes.
     auto dispatch = [&](const std::vector<const dspbr::conformance::Vector*>& xs, uint32_t mode, uint32_t per, size_t floats) {
       std::vector<float> records(xs.size() * shader_test::kRecordFloats);
       for (std::size_t k = 0; k < xs.size(); ++k) shader_test::pack_record(*xs[k], &records[k * shader_test::kRecordFloats]);
       const uint32_t push[2] = {uint32_t(xs.size()) * per, mode};
-      return xs.empty() ? std::vector<float>()
-                        : device.run(vk_compute::item_job(spirv, records.data(), records.size() * sizeof(float), push[0], floats,
-                                                          textures, 2, push, sizeof push));
+      return xs.empty() ? std::vector<float>() : kernel.run(records, push[0], floats, push, sizeof push);
     };
     std::vector<const dspbr::conformance::Vector*> all, with_albedo;
     for (const auto& x : vectors) {

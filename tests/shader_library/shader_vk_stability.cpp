@@ -117,14 +117,8 @@ int main(int argc, char** argv) {
   }
   const char* label = argv[3];
   try {
-    vk_compute::Device device("dspbr shader stability");
-    if (!device.has_device()) {
-      std::printf("no Vulkan device: skipped\n");
-      return 77;
-    }
-    std::printf("%s on %s\n", label, device.device_name().c_str());
-    const std::vector<uint32_t> spirv = vk_compute::read_spirv(argv[1]);
-    const std::vector<vk_compute::TableImage> textures = vk_compute::read_lookup_textures(argv[2], false);
+    shader_test::DeviceKernel kernel("dspbr shader stability");
+    if (!kernel.open(argv[1], argv[2], label)) return 77;
     // The materials of the validation's "shader library: stability", with its settings (the full
     // run's: its seed and 300 random pairs; stream = the case's index, as run_stability numbers them).
     const std::vector<dspbr::validate::StabilityCase> cases =
@@ -145,7 +139,7 @@ int main(int argc, char** argv) {
       dspbr::shader::pack_shader_inputs(*c.material, c.options, Vec3{0, 0, 1}, Vec3{0, 0, 1}, record);
       std::vector<float> q;
       for (const Query& x : qs) q.insert(q.end(), {float(x.v.x), float(x.v.y), float(x.v.z), float(x.w.x), float(x.w.y), float(x.w.z)});
-      return shader_test::run_queries(device, spirv, textures, record, q, 6, mode, floats);
+      return shader_test::run_queries(kernel, record, q, 6, mode, floats);
     };
     dspbr::validate::StabilityCounts total;
     std::size_t failed = 0, bad_failed = 0, checked = 0;

@@ -1,6 +1,7 @@
-// What the device tests of the shader library share (shader_vk_chi2, shader_vk_stability): one
-// dispatch of the test kernel (conformance.comp / .hlsl, kernel_common.glsl) over queries that
-// follow a material's record, and a sample as modes 3 and 5 write it.
+// What the device tests of the shader library share (shader_vk_conformance, shader_vk_chi2,
+// shader_vk_stability): the device with the test kernel (conformance.comp / .hlsl,
+// kernel_common.glsl) and the tables, a dispatch of it over queries that follow a material's record,
+// and a sample as modes 3 and 5 write it.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -13,19 +14,42 @@
 
 namespace shader_test {
 
+// The first Vulkan device with a test kernel and the tables it reads.
+struct DeviceKernel {
+  explicit DeviceKernel(const char* application) : device(application) {}
+  // False without a Vulkan device, after printing "no Vulkan device: skipped" (the caller exits 77);
+  // else prints "LABEL on DEVICE" and reads the kernel (SPIR-V) and the tables of LUT_DIR/renderer.
+  bool open(const char* spv, const char* lut_dir, const char* label) {
+    if (!device.has_device()) {
+      std::printf("no Vulkan device: skipped\n");
+      return false;
+    }
+    std::printf("%s on %s\n", label, device.device_name().c_str());
+    spirv = vk_compute::read_spirv(spv);
+    textures = vk_compute::read_lookup_textures(lut_dir, false);
+    return true;
+  }
+  // One invocation per item over `input`, floats_per_item output floats each; the tables are bound
+  // from binding 2 (after the two buffers), as the kernels expect.
+  std::vector<float> run(const std::vector<float>& input, std::size_t items, std::size_t floats_per_item, const void* push,
+                         uint32_t push_bytes) {
+    return device.run(vk_compute::item_job(spirv, input.data(), input.size() * sizeof(float), items, floats_per_item, textures, 2,
+                                           push, push_bytes));
+  }
+  vk_compute::Device device;
+  std::vector<uint32_t> spirv;
+  std::vector<vk_compute::TableImage> textures;
+};
+
 // Runs `mode` once per query: the input is `record` (kRecordFloats floats, pack_record's) followed
-// by the queries' floats (query_floats each); the output holds out_floats floats per query. The
-// tables are bound from binding 2 (after the two buffers), as the kernels expect.
-inline std::vector<float> run_queries(vk_compute::Device& device, const std::vector<uint32_t>& spirv,
-                                      const std::vector<vk_compute::TableImage>& textures, const float* record,
-                                      const std::vector<float>& queries, std::size_t query_floats, uint32_t mode,
-                                      std::size_t out_floats) {
+// by the queries' floats (query_floats each); the output holds out_floats floats per query.
+inline std::vector<float> run_queries(DeviceKernel& kernel, const float* record, const std::vector<float>& queries,
+                                      std::size_t query_floats, uint32_t mode, std::size_t out_floats) {
   std::vector<float> input(record, record + kRecordFloats);
   input.insert(input.end(), queries.begin(), queries.end());
   const std::size_t count = queries.size() / query_floats;
   const uint32_t push[2] = {uint32_t(count), mode};
-  return device.run(vk_compute::item_job(spirv, input.data(), input.size() * sizeof(float), count, out_floats, textures, 2,
-                                         push, sizeof push));
+  return kernel.run(input, count, out_floats, push, sizeof push);
 }
 
 // A sample from the 9 floats modes 3 and 5 write: valid, l, weight, pdf, flags.
