@@ -16,11 +16,9 @@
 // The test draws its own random numbers: a first round records them (the C++ compile standing in),
 // the device samples them all in one dispatch, and the second round is the verdict.
 // Exit 0: every case passes; 1: a failure; 2: bad arguments or a Vulkan error; 77: no Vulkan device.
-#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <exception>
 #include <mutex>
 #include <string>
@@ -33,17 +31,9 @@
 
 namespace {
 
-using Key = std::array<uint64_t, 3>;
-struct KeyHash {
-  std::size_t operator()(const Key& k) const {
-    return std::hash<uint64_t>()(k[0] * 0x9E3779B97F4A7C15ull ^ (k[1] + 0x632BE59BD9B4E019ull) * 31 ^ k[2]);
-  }
-};
-Key key_of(const dspbr::Vec3& w) {
-  Key k;
-  std::memcpy(&k[0], &w.x, 8), std::memcpy(&k[1], &w.y, 8), std::memcpy(&k[2], &w.z, 8);
-  return k;
-}
+using shader_test::exact_key;
+using Key = shader_test::ExactKey<3>;
+using KeyHash = shader_test::ExactKeyHash;
 
 // The device's samples by their random numbers u, with the C++ compile standing in for those not
 // drawn yet (recorded for the dispatch); pdf and f are the C++ compile's. The first round only
@@ -60,9 +50,9 @@ class DeviceBsdf : public dspbr::Bsdf {
   dspbr::BsdfSample sample(const dspbr::Vec3& v, const dspbr::Vec3& u) const override {
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      const auto it = samples_.find(key_of(u));
+      const auto it = samples_.find(exact_key(u));
       if (it != samples_.end()) return it->second;
-      if (pending_keys_.insert(key_of(u)).second) pending_.push_back(u);
+      if (pending_keys_.insert(exact_key(u)).second) pending_.push_back(u);
     }
     return recording_ ? dspbr::BsdfSample{} : cpp_.sample(v, u);
   }
@@ -73,7 +63,7 @@ class DeviceBsdf : public dspbr::Bsdf {
     pending_keys_.clear();
     return std::move(pending_);
   }
-  void answer(const dspbr::Vec3& u, const dspbr::BsdfSample& s) { samples_[key_of(u)] = s; }
+  void answer(const dspbr::Vec3& u, const dspbr::BsdfSample& s) { samples_[exact_key(u)] = s; }
 
  private:
   const shader_test::ShaderBsdf& cpp_;

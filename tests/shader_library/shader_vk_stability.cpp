@@ -13,11 +13,9 @@
 // answers them all in two dispatches per material, and the second is the verdict.
 // Exit 0: no failure; 1: a failure (each material's counts printed); 2: bad arguments or a Vulkan
 // error; 77: no Vulkan device.
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <limits>
 #include <stdexcept>
@@ -37,20 +35,9 @@
 namespace {
 
 using dspbr::Vec3;
-using Key = std::array<uint64_t, 6>;
-struct KeyHash {
-  std::size_t operator()(const Key& k) const {
-    std::size_t h = 0;
-    for (uint64_t x : k) h = h * 0x9E3779B97F4A7C15ull ^ (x + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2));
-    return h;
-  }
-};
-Key key_of(const Vec3& a, const Vec3& b) {
-  Key k;
-  const double d[6] = {a.x, a.y, a.z, b.x, b.y, b.z};
-  std::memcpy(k.data(), d, sizeof d);
-  return k;
-}
+using shader_test::exact_key;
+using Key = shader_test::ExactKey<6>;
+using KeyHash = shader_test::ExactKeyHash;
 
 struct Query {
   Vec3 v, w;
@@ -64,18 +51,18 @@ class DeviceBsdf : public dspbr::Bsdf {
   dspbr::Rgb eval(const Vec3& v, const Vec3& l) const override { return value(v, l).f; }
   double pdf(const Vec3& v, const Vec3& l) const override { return value(v, l).pdf; }
   dspbr::BsdfSample sample(const Vec3& v, const Vec3& u) const override {
-    const auto it = samples_.find(key_of(v, u));
+    const auto it = samples_.find(exact_key(v, u));
     if (it != samples_.end()) return it->second;
     if (!recording_) ++unanswered_;
-    else if (pending_sample_keys_.insert(key_of(v, u)).second) pending_samples_.push_back({v, u});
+    else if (pending_sample_keys_.insert(exact_key(v, u)).second) pending_samples_.push_back({v, u});
     return dspbr::BsdfSample{};
   }
   uint32_t flags() const override { return 0; }
 
   std::vector<Query> take_evals() { return std::move(pending_evals_); }
   std::vector<Query> take_samples() { return std::move(pending_samples_); }
-  void answer_eval(const Query& q, const dspbr::Rgb& f, double pdf) { evals_[key_of(q.v, q.w)] = {f, pdf}; }
-  void answer_sample(const Query& q, const dspbr::BsdfSample& s) { samples_[key_of(q.v, q.w)] = s; }
+  void answer_eval(const Query& q, const dspbr::Rgb& f, double pdf) { evals_[exact_key(q.v, q.w)] = {f, pdf}; }
+  void answer_sample(const Query& q, const dspbr::BsdfSample& s) { samples_[exact_key(q.v, q.w)] = s; }
   // After the answers: a query not answered is an error of this harness, not of the library.
   void stop_recording() { recording_ = false; }
   std::size_t unanswered() const { return unanswered_; }
@@ -86,10 +73,10 @@ class DeviceBsdf : public dspbr::Bsdf {
     double pdf = 0;
   };
   Value value(const Vec3& v, const Vec3& l) const {
-    const auto it = evals_.find(key_of(v, l));
+    const auto it = evals_.find(exact_key(v, l));
     if (it != evals_.end()) return it->second;
     if (recording_) {
-      if (pending_eval_keys_.insert(key_of(v, l)).second) pending_evals_.push_back({v, l});
+      if (pending_eval_keys_.insert(exact_key(v, l)).second) pending_evals_.push_back({v, l});
     } else {
       ++unanswered_;
     }

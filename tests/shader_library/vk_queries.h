@@ -3,9 +3,11 @@
 // kernel_common.glsl) and the tables, a dispatch of it over queries that follow a material's record,
 // and a sample as modes 3 and 5 write it.
 #pragma once
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 #include "dspbr/bsdf/bsdf.h"
@@ -50,6 +52,31 @@ inline std::vector<float> run_queries(DeviceKernel& kernel, const float* record,
   const std::size_t count = queries.size() / query_floats;
   const uint32_t push[2] = {uint32_t(count), mode};
   return kernel.run(input, count, out_floats, push, sizeof push);
+}
+
+// The exact bits of a query's vectors (a direction, random numbers): the key under which a device
+// test keeps the device's answer, found again when the scan asks the same query.
+template <std::size_t N>
+using ExactKey = std::array<uint64_t, N>;
+struct ExactKeyHash {
+  template <std::size_t N>
+  std::size_t operator()(const ExactKey<N>& k) const {
+    std::size_t h = 0;
+    for (uint64_t x : k) h = h * 0x9E3779B97F4A7C15ull ^ (x + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2));
+    return h;
+  }
+};
+inline ExactKey<3> exact_key(const dspbr::Vec3& a) {
+  ExactKey<3> k;
+  const double d[3] = {a.x, a.y, a.z};
+  std::memcpy(k.data(), d, sizeof d);
+  return k;
+}
+inline ExactKey<6> exact_key(const dspbr::Vec3& a, const dspbr::Vec3& b) {
+  ExactKey<6> k;
+  const double d[6] = {a.x, a.y, a.z, b.x, b.y, b.z};
+  std::memcpy(k.data(), d, sizeof d);
+  return k;
 }
 
 // A sample from the 9 floats modes 3 and 5 write: valid, l, weight, pdf, flags.
