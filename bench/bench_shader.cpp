@@ -1,6 +1,8 @@
 // The shader library's C++ compile (shaders/dspbr.h, float, renderer-layout tables) per hit, as a
 // path tracer pays it: prepare + eval, prepare alone, eval and sample of a prepared BSDF, for the
-// materials of bench_materials.h, against a bare isotropic GGX reflection eval (D, height-correlated
+// materials of bench_materials.h, each hit at its own shading point (a car paint's flake, and
+// whether one covers the point, depend on it: a single point measured one case of the flake search
+// and one side of the coverage), against a bare isotropic GGX reflection eval (D, height-correlated
 // G2, Schlick F) in float in the same run; dspbr_bench_shader_fits: the same over the LUT-free fits
 // (DSPBR_USE_FITS) instead of the tables; dspbr_bench_shader_null: the same with every table read
 // one load (bench/null_tables/dspbr_fits.hpp), the floor under any lookup.
@@ -29,7 +31,7 @@ constexpr int kMaterials = 8;
 DspbrMaterial material(int index) { return shader_test::to_shader_material(bench::material(kNames[index])); }
 
 struct Inputs {
-  std::vector<vec3> v, l, u;
+  std::vector<vec3> v, l, u, p;
   Inputs() {
     dspbr::Pcg32 rng(11, 0);
     auto dir = [&] {
@@ -41,6 +43,11 @@ struct Inputs {
       v.push_back(dir()), l.push_back(dir());
       u.push_back(vec3(float(rng.next_double()), float(rng.next_double()), float(rng.next_double())));
     }
+    // Shading points in a 1 m cube around the object's origin, from a generator of their own (the
+    // directions stay those of the earlier runs).
+    dspbr::Pcg32 points(12, 0);
+    for (int i = 0; i < 1024; ++i)
+      p.push_back(vec3(float(points.next_double()) - 0.5f, float(points.next_double()) - 0.5f, float(points.next_double()) - 0.5f));
   }
 };
 const Inputs& inputs() {
@@ -78,12 +85,26 @@ enum class What { PrepareEval, Prepare, Eval, Sample };
 void run(benchmark::State& state, int index, What what) {
   const DspbrMaterial m = material(index);
   const DspbrFrame f = dspbr_identity_frame();
-  const DspbrOptions o = dspbr_default_options();
-  const DspbrBsdf prepared = dspbr_prepare(m, f, o);
   const Inputs& in = inputs();
+  // The options of a hit at shading point p (object space, m).
+  auto at = [](vec3 p) {
+    DspbrOptions o = dspbr_default_options();
+    o.position = p;
+    return o;
+  };
+  // BSDFs prepared at 64 shading points, evaluated and sampled in turn (a car paint's flake, and
+  // whether it covers the point, differs from one point to the next).
+  std::vector<DspbrBsdf> prepared;
+  for (int k = 0; k < 64; ++k) prepared.push_back(dspbr_prepare(m, f, at(in.p[std::size_t(k)])));
+  // The fraction of the hits' points a flake covers (0 without flakes).
+  int covered = 0;
+  for (const vec3& p : in.p) covered += dspbr_has_lobe(dspbr_prepare(m, f, at(p)), DSPBR_LOBE_FLAKE) ? 1 : 0;
+  state.counters["flake_covered"] = double(covered) / double(in.p.size());
   std::size_t i = 0;
   for (auto _ : state) {
     const vec3 v = in.v[i & 1023], l = in.l[i & 1023];
+    // Each hit at its own shading point (the flakes' grid cell and search depend on it).
+    const DspbrOptions o = at(in.p[i & 1023]);
     switch (what) {
       case What::PrepareEval: {
         // A textured material: one prepare per hit (the material varies), then one eval.
@@ -92,8 +113,8 @@ void run(benchmark::State& state, int index, What what) {
         break;
       }
       case What::Prepare: benchmark::DoNotOptimize(dspbr_prepare(m, f, o)); break;
-      case What::Eval: benchmark::DoNotOptimize(dspbr_eval(prepared, v, l)); break;
-      case What::Sample: benchmark::DoNotOptimize(dspbr_sample(prepared, v, in.u[i & 1023])); break;
+      case What::Eval: benchmark::DoNotOptimize(dspbr_eval(prepared[i & 63], v, l)); break;
+      case What::Sample: benchmark::DoNotOptimize(dspbr_sample(prepared[i & 63], v, in.u[i & 1023])); break;
     }
     ++i;
   }
