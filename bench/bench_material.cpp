@@ -5,7 +5,10 @@
 // BM_Sample/<material> use the component mask derived from the material (active_components);
 // .../all_components evaluates every layer even at zero weight; BM_Construct/<material> builds
 // the BSDF. BM_(Eval|Sample)/rough_glass_compensated: the glass at roughness 0.5 with the
-// transmission-compensation option (the glass subtype is smooth).
+// transmission-compensation option (the glass subtype is smooth). A material with flakes is built
+// at 64 shading points and evaluated and sampled through them in turn, and constructed at a point
+// per iteration (its flake, and whether one covers the point, depend on the point: a single point
+// measured one case of each); flake_covered is the fraction of those points a flake covers.
 //   dspbr_bench --benchmark_filter='BM_(Eval|Sample|Construct)/'
 // Figures: docs/bsdf.md ("Speed"), docs/params.md ("Cost of inactive components").
 #include <benchmark/benchmark.h>
@@ -14,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "dspbr/bsdf/flakes.h"
 #include "dspbr/bsdf/material_bsdf.h"
 #include "dspbr/fresnel.h"
 #include "dspbr/ggx.h"
@@ -38,9 +42,10 @@ Material material(int index) {
   return bench::material(kNames[index]);
 }
 
-// Fixed sets of directions / random numbers (upper hemisphere for v, both for l).
+// Fixed sets of directions / random numbers (upper hemisphere for v, both for l), and shading points
+// in a 1 m cube around the object's origin (from a generator of their own).
 struct Inputs {
-  std::vector<Vec3> v, l, u;
+  std::vector<Vec3> v, l, u, p;
   Inputs() {
     Pcg32 rng(1, 0);
     for (int i = 0; i < 1024; ++i) {
@@ -53,6 +58,8 @@ struct Inputs {
       l.push_back(dir(i % 4 != 0));  // a quarter in the lower hemisphere (transmission)
       u.push_back(Vec3(rng.next_double(), rng.next_double(), rng.next_double()));
     }
+    Pcg32 points(12, 0);
+    for (int i = 0; i < 1024; ++i) p.push_back(Vec3(points.next_double() - 0.5, points.next_double() - 0.5, points.next_double() - 0.5));
   }
 };
 
@@ -61,30 +68,50 @@ const Inputs& inputs() {
   return in;
 }
 
-MaterialBsdf make(int index, bool masked) {
-  const Material m = material(index);
+BsdfOptions options(int index, const Vec3& position) {
   BsdfOptions opt;
   opt.transmission_compensation = index == kRoughGlassCompensated;
-  return MaterialBsdf(m, LutSet::builtin(), opt, masked ? active_components(m) : kAllComponents);
+  opt.position = position;
+  return opt;
+}
+
+// The BSDFs an eval or sample benchmark goes through: at 64 shading points for a material with
+// flakes, at one otherwise (every point gives the same BSDF; either count a power of two, indexed by
+// a mask); the fraction covered by a flake.
+std::vector<MaterialBsdf> make(benchmark::State& state, int index, bool masked) {
+  const Material m = material(index);
+  const uint32_t mask = masked ? active_components(m) : kAllComponents;
+  const int points = m.flakeCoverage > 0 ? 64 : 1;
+  std::vector<MaterialBsdf> bsdfs;
+  int covered = 0;
+  for (int k = 0; k < points; ++k) {
+    const Vec3& p = inputs().p[std::size_t(k)];
+    bsdfs.emplace_back(m, LutSet::builtin(), options(index, p), mask);
+    covered += flake_at(p, Vec3(0, 0, 1), m).opacity > 0 ? 1 : 0;
+  }
+  state.counters["flake_covered"] = double(covered) / double(points);
+  return bsdfs;
 }
 
 void eval(benchmark::State& state, int index, bool masked) {
-  const MaterialBsdf bsdf = make(index, masked);
+  const std::vector<MaterialBsdf> bsdfs = make(state, index, masked);
+  const std::size_t last = bsdfs.size() - 1;
   const Inputs& in = inputs();
   std::size_t i = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(bsdf.eval(in.v[i & 1023], in.l[i & 1023]));
+    benchmark::DoNotOptimize(bsdfs[i & last].eval(in.v[i & 1023], in.l[i & 1023]));
     ++i;
   }
   state.SetItemsProcessed(state.iterations());
 }
 
 void sample(benchmark::State& state, int index, bool masked) {
-  const MaterialBsdf bsdf = make(index, masked);
+  const std::vector<MaterialBsdf> bsdfs = make(state, index, masked);
+  const std::size_t last = bsdfs.size() - 1;
   const Inputs& in = inputs();
   std::size_t i = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(bsdf.sample(in.v[i & 1023], in.u[i & 1023]));
+    benchmark::DoNotOptimize(bsdfs[i & last].sample(in.v[i & 1023], in.u[i & 1023]));
     ++i;
   }
   state.SetItemsProcessed(state.iterations());
@@ -95,8 +122,10 @@ void sample(benchmark::State& state, int index, bool masked) {
 void construct(benchmark::State& state, int index) {
   const Material m = material(index);
   const uint32_t mask = active_components(m);
+  const Inputs& in = inputs();
+  std::size_t i = 0;
   for (auto _ : state) {
-    MaterialBsdf bsdf(m, LutSet::builtin(), BsdfOptions{}, mask);
+    MaterialBsdf bsdf(m, LutSet::builtin(), options(index, in.p[i++ & 1023]), mask);
     benchmark::DoNotOptimize(bsdf);
   }
   state.SetItemsProcessed(state.iterations());
