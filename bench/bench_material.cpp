@@ -42,8 +42,8 @@ Material material(int index) {
   return bench::material(kNames[index]);
 }
 
-// Fixed sets of directions / random numbers (upper hemisphere for v, both for l), and shading points
-// in a 1 m cube around the object's origin (from a generator of their own).
+// Fixed sets of directions / random numbers (upper hemisphere for v, both for l), and the shading
+// points (bench::shading_point_draws).
 struct Inputs {
   std::vector<Vec3> v, l, u, p;
   Inputs() {
@@ -58,8 +58,7 @@ struct Inputs {
       l.push_back(dir(i % 4 != 0));  // a quarter in the lower hemisphere (transmission)
       u.push_back(Vec3(rng.next_double(), rng.next_double(), rng.next_double()));
     }
-    Pcg32 points(12, 0);
-    for (int i = 0; i < 1024; ++i) p.push_back(Vec3(points.next_double() - 0.5, points.next_double() - 0.5, points.next_double() - 0.5));
+    for (const Vec3& q : bench::shading_point_draws()) p.push_back(Vec3(q.x - 0.5, q.y - 0.5, q.z - 0.5));
   }
 };
 

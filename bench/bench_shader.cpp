@@ -43,11 +43,8 @@ struct Inputs {
       v.push_back(dir()), l.push_back(dir());
       u.push_back(vec3(float(rng.next_double()), float(rng.next_double()), float(rng.next_double())));
     }
-    // Shading points in a 1 m cube around the object's origin, from a generator of their own (the
-    // directions stay those of the earlier runs).
-    dspbr::Pcg32 points(12, 0);
-    for (int i = 0; i < 1024; ++i)
-      p.push_back(vec3(float(points.next_double()) - 0.5f, float(points.next_double()) - 0.5f, float(points.next_double()) - 0.5f));
+    // The shading points (bench::shading_point_draws), in float.
+    for (const dspbr::Vec3& q : bench::shading_point_draws()) p.push_back(vec3(float(q.x) - 0.5f, float(q.y) - 0.5f, float(q.z) - 0.5f));
   }
 };
 const Inputs& inputs() {
