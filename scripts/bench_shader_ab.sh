@@ -16,14 +16,11 @@ cmake --build "$build" --target dspbr_bench >/dev/null
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 git -C "$here" archive "$rev" shaders luts tests/shader_library | tar -x -C "$work"
-flags="$build/CMakeFiles/dspbr_bench.dir/flags.make"
-defines="$(sed -n 's/^CXX_DEFINES = //p' "$flags")"
-cxxflags="$(sed -n 's/^CXX_FLAGS = //p' "$flags")"
-includes="$(sed -n 's/^CXX_INCLUDES = //p' "$flags" | sed "s#-I$here/shaders#-I$work/shaders#; s#-I$here/luts#-I$work/luts#; s#-I$here/tests/shader_library#-I$work/tests/shader_library#")"
-# shellcheck disable=SC2086  # the flags are CMake's word lists
-(cd "$build" && c++ $defines $includes $cxxflags -c "$here/bench/bench_shader.cpp" -o "$work/bench_shader.o")
-link="$(sed "s#CMakeFiles/dspbr_bench.dir/bench/bench_shader.cpp.o#$work/bench_shader.o#; s#-o dspbr_bench #-o $work/dspbr_bench_rev #" "$build/CMakeFiles/dspbr_bench.dir/link.txt")"
-(cd "$build" && bash -c "$link")
+# shellcheck source=scripts/lib/build_like.sh
+. "$here/scripts/lib/build_like.sh"
+compile_like "$build" dspbr_bench "$here/bench/bench_shader.cpp" "$work/bench_shader.o" \
+  "s#-I$here/shaders#-I$work/shaders#; s#-I$here/luts#-I$work/luts#; s#-I$here/tests/shader_library#-I$work/tests/shader_library#"
+link_like "$build" dspbr_bench "$work/dspbr_bench_rev" "s#CMakeFiles/dspbr_bench.dir/bench/bench_shader.cpp.o#$work/bench_shader.o#"
 for bench in "$work/dspbr_bench_rev" "$build/dspbr_bench"; do
   [ "$bench" = "$build/dspbr_bench" ] && echo "## working tree" || echo "## $rev"
   /usr/bin/python3 "$here/scripts/bench_ratios.py" --shader --repetitions "$reps" --bench "$bench"

@@ -6,7 +6,8 @@
 # --scene`), each the eval kernel with every component's parameters read from the buffer, and the
 # C++ cost of prepare + eval of the scene's material (scripts/shaders/scene_bench.cpp, Google
 # Benchmark, median of three repetitions): generic, then with the scene's header, each also as a
-# ratio to a bare GGX eval in the same run.
+# ratio to a bare GGX eval in the same run; then the same two with every table read one load
+# (bench/null_tables/dspbr_fits.hpp: the floor under any lookup).
 #   bash scripts/shaders/spirv_cost.sh [--scenes build/dspbr]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -29,22 +30,14 @@ for variant in "eval, metal/dielectric parameters read from a buffer|" \
   cost "${variant%%|*}" ${variant#*|}
 done
 [ -n "$dspbr" ] || exit 0
-# scene_bench BINARY SCENE: "NS (RATIO)" of prepare + eval, the median of three repetitions.
-scene_bench() {
-  "$1" "$2" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true --benchmark_format=json 2> /dev/null |
-    /usr/bin/python3 -c 'import json, sys
-med = {b["run_name"]: b["cpu_time"] for b in json.load(sys.stdin)["benchmarks"] if b.get("aggregate_name") == "median"}
-print("%.0f ns (%.1f\u00d7)" % (med["prepare_eval"], med["prepare_eval"] / med["bare_ggx"]))'
-}
-build_bench() {  # build_bench OUT [-include HEADER]
-  local out=$1; shift
-  g++ -std=c++17 -O2 "$@" -I"$here/shaders" -I"$here/luts" -I"$here/src" -o "$out" \
-    "$here/scripts/shaders/scene_bench.cpp" "$here/src/dspbr/shader/gltf_factors.cpp" -lbenchmark -lpthread
-}
-build_bench "$tmp/generic"
+# shellcheck source=scripts/lib/build_like.sh
+. "$here/scripts/lib/build_like.sh"
+scene_bench_build "$here" "$tmp/generic"
+null=(-I"$here/bench/null_tables" -DDSPBR_USE_FITS)  # every table read one load
+scene_bench_build "$here" "$tmp/generic_null" "${null[@]}"
 echo
-echo "| scene (first material) | components | texel fetches | SPIR-V bytes | C++ prepare + eval, generic | with the header |"
-echo "|---|---|---|---|---|---|"
+echo "| scene (first material) | components | texel fetches | SPIR-V bytes | C++ prepare + eval, generic | with the header | one load per table read, generic | with the header |"
+echo "|---|---|---|---|---|---|---|---|"
 declare -A seen
 for scene in "$here"/data/dspbr/scenes/sphere/*.gltf; do
   "$dspbr" shader --scene "$scene" --out "$tmp/s" > /dev/null
@@ -54,7 +47,9 @@ for scene in "$here"/data/dspbr/scenes/sphere/*.gltf; do
   row=$(cost x -DFULL -DDSPBR_USE_SPECIALIZATION -I"$tmp/s")
   fetches=$(echo "$row" | cut -d'|' -f3 | tr -d ' ')
   bytes=$(echo "$row" | cut -d'|' -f4 | tr -d ' ')
-  build_bench "$tmp/special" -include "$tmp/s/dspbr_specialization.h"
-  printf '| %s | %s | %s | %s | %s | %s |\n' "$(basename "$scene" .gltf)" "$comps" "$fetches" "$bytes" \
-    "$(scene_bench "$tmp/generic" "$scene")" "$(scene_bench "$tmp/special" "$scene")"
+  scene_bench_build "$here" "$tmp/special" -include "$tmp/s/dspbr_specialization.h"
+  scene_bench_build "$here" "$tmp/special_null" -include "$tmp/s/dspbr_specialization.h" "${null[@]}"
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "$(basename "$scene" .gltf)" "$comps" "$fetches" "$bytes" \
+    "$(scene_bench_run "$tmp/generic" "$scene")" "$(scene_bench_run "$tmp/special" "$scene")" \
+    "$(scene_bench_run "$tmp/generic_null" "$scene")" "$(scene_bench_run "$tmp/special_null" "$scene")"
 done
