@@ -229,10 +229,6 @@ TEST(Conformance, AnImplementationBehindTheBsdfInterfaceIsJudgedOnEveryQuantity)
   EXPECT_GT(check_results(vs, wrong).failed, vs.size() / 2);
 }
 
-// check --tables: with the renderer tables the recomputed expectations are the generated ones to
-// the last bit (f cos, pdf, delta lobes, albedo: the same quadrature); with the published tables
-// they are what the reference reads from them, so results from those tables fail as written and
-// pass against them.
 // The tolerances cover tables that err apart, each within kTableError: the sheen's albedo tables
 // moved one way and the base's GGX tables the other (a set the generator does not build; its
 // together-combinations move them the same way, and the pdf of a sheen over a base, whose lobe
@@ -260,6 +256,10 @@ TEST(Conformance, TolerancesCoverTablesThatErrApart) {
   }
 }
 
+// check --tables: with the renderer tables the recomputed expectations are the generated ones to
+// the last bit (f cos, pdf, delta lobes, albedo: the same quadrature); with the published tables
+// they are what the reference reads from them, so results from those tables fail as written and
+// pass against them.
 TEST(Conformance, ExpectationsWithOtherTables) {
   const auto& vs = small_set();
   std::vector<Vector> same = vs;
