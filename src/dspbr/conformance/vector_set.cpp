@@ -201,10 +201,12 @@ std::vector<DeltaExpectation> delta_lobes(const Bsdf& b, const Vec3& v, double p
 //   albedos, failed for tables nearer the exact albedos than the reference's (docs/design/renderer.md,
 //   "sixth run"); apart alone gives less than together where the tables' errors interact (933 of
 //   the default vectors' f cos; half of it for the metal of anisotropy 1, whose 1 - E_avg is tiny).
-constexpr int kPerturbedTables = 6;
+constexpr int kPerturbedTables = 6;    // GGX_E, GGX_beta, Sheen_E, Sheen_ash_E; GGX_E_avg, GGX_B_avg
+constexpr int kDirectionalTables = 4;  // the first four
 constexpr std::size_t kTogetherSets = 4;
-const std::array<LutSet, kTogetherSets + 2 * kPerturbedTables>& perturbed_tables() {
-  static const std::array<LutSet, kTogetherSets + 2 * kPerturbedTables> sets = [] {
+constexpr std::size_t kPerturbedSets = kTogetherSets + 2 * kPerturbedTables;
+const std::array<LutSet, kPerturbedSets>& perturbed_tables() {
+  static const std::array<LutSet, kPerturbedSets> sets = [] {
     auto shift = [](WarpedTable& t, double s) {
       for (double& x : t.values)
         x = t.encoding == Encoding::LogOneMinus ? std::log(std::max(std::exp(x) - s * kTableError, 0.5 * std::exp(x)))
@@ -213,12 +215,12 @@ const std::array<LutSet, kTogetherSets + 2 * kPerturbedTables>& perturbed_tables
     auto tables = [](RendererLuts& r) {
       return std::array<WarpedTable*, kPerturbedTables>{&r.ggx_E, &r.ggx_beta, &r.sheen_E, &r.sheen_ash_E, &r.ggx_E_avg, &r.ggx_B_avg};
     };
-    std::array<LutSet, kTogetherSets + 2 * kPerturbedTables> out;
+    std::array<LutSet, kPerturbedSets> out;
     for (std::size_t i = 0; i < kTogetherSets; ++i) {
       const double s_dir = (i & 1) ? -1.0 : 1.0, s_avg = (i & 2) ? -1.0 : 1.0;
       LutSet p = LutSet::builtin();
       const auto t = tables(p.renderer);
-      for (int k = 0; k < kPerturbedTables; ++k) shift(*t[std::size_t(k)], k < 4 ? s_dir : s_avg);
+      for (int k = 0; k < kPerturbedTables; ++k) shift(*t[std::size_t(k)], k < kDirectionalTables ? s_dir : s_avg);
       out[i] = std::move(p);
     }
     for (int t = 0; t < kPerturbedTables; ++t)
@@ -325,12 +327,12 @@ std::vector<Vector> case_vectors(const Case& c, std::size_t index, const Generat
     x.f_cos = ref.eval(x.v, x.l) * std::abs(x.l.z);
     x.pdf = ref.pdf(x.v, x.l);
     // The tables' part (perturbed_tables): the larger of the tables moved together and apart.
-    std::vector<double> df_set, dp_set;
-    for (const MaterialBsdf& p : perturbed) {
-      df_set.push_back(max_channel_difference(p.eval(x.v, x.l) * std::abs(x.l.z), x.f_cos));
-      dp_set.push_back(std::abs(p.pdf(x.v, x.l) - x.pdf));
+    std::array<double, kPerturbedSets> df_set{}, dp_set{};
+    for (std::size_t i = 0; i < kPerturbedSets; ++i) {
+      df_set[i] = max_channel_difference(perturbed[i].eval(x.v, x.l) * std::abs(x.l.z), x.f_cos);
+      dp_set[i] = std::abs(perturbed[i].pdf(x.v, x.l) - x.pdf);
     }
-    auto table_part = [](const std::vector<double>& d) {
+    auto table_part = [](const std::array<double, kPerturbedSets>& d) {
       const double together = *std::max_element(d.begin(), d.begin() + kTogetherSets);
       double apart = 0;
       for (std::size_t t = 0; t < kPerturbedTables; ++t)
